@@ -1,0 +1,115 @@
+# Makefile - a thin wrapper around CMake. `make help` lists the targets.
+#
+# Every target first runs scripts/deps.sh, which returns at once when the
+# tools are there and otherwise installs them (Debian/Ubuntu) or says how.
+# Variables you may override:  make test JOBS=8 CMAKE_ARGS=-DFXL_WERROR=OFF
+
+BUILD_DIR  ?= build
+ASAN_DIR   ?= build-asan
+FW_CPUS    ?= cortex-m0plus cortex-m4
+BUILD_TYPE ?= RelWithDebInfo
+JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
+CTEST_JOBS ?= 2
+CMAKE      ?= cmake
+CTEST      ?= ctest
+CMAKE_ARGS ?=
+ARM_PREFIX ?= arm-none-eabi-
+GALLERY    ?= out
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+# The targets configure and build the same directories; never overlap them.
+.NOTPARALLEL:
+.DEFAULT_GOAL := build
+
+# CMake runs its own make; keep ours (jobserver, -j, -n) out of it.
+RUN := env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL
+
+.PHONY: all build configure run test firmware bench stability sanitize cppcheck \
+        clean help deps deps-firmware
+
+all: build
+
+help:
+	@echo "make [build]    configure $(BUILD_DIR)/ ($(BUILD_TYPE), -O2) and build everything"
+	@echo "make run        build, then $(BUILD_DIR)/bin/fixel-sim --gallery $(GALLERY)"
+	@echo "make test       build, then ctest --output-on-failure -j$(CTEST_JOBS)"
+	@echo "make firmware   cross-build the core for $(FW_CPUS) (build-fw-*),"
+	@echo "                print sizes, check the archives use no libc"
+	@echo "make bench      build, then host_sim/scripts/bench.sh"
+	@echo "make stability  build, then host_sim/scripts/stability.sh"
+	@echo "make sanitize   ASan+UBSan Debug build in $(ASAN_DIR)/ and ctest there"
+	@echo "make cppcheck   static analysis of src/ and port/ (informational)"
+	@echo "make clean      remove the build directories and $(GALLERY)/"
+
+deps:
+	@scripts/deps.sh host
+
+deps-firmware:
+	@scripts/deps.sh firmware
+
+configure: deps
+	$(RUN) $(CMAKE) -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_ARGS)
+
+build: configure
+	$(RUN) $(CMAKE) --build $(BUILD_DIR) -j $(JOBS)
+
+run: build
+	@if [ ! -x $(BUILD_DIR)/bin/fixel-sim ]; then \
+	  echo "make run: $(BUILD_DIR)/bin/fixel-sim does not exist yet" \
+	       "(host_sim/tools/sim.c has not been written)"; \
+	  exit 1; \
+	fi
+	$(BUILD_DIR)/bin/fixel-sim --gallery $(GALLERY)
+
+test: build
+	cd $(BUILD_DIR) && $(RUN) $(CTEST) --output-on-failure -j$(CTEST_JOBS)
+
+# One build directory per CPU: build-fw-m0plus, build-fw-m4, ...
+firmware: deps-firmware
+	@for cpu in $(FW_CPUS); do \
+	  dir=build-fw-$${cpu#cortex-}; \
+	  echo "==== firmware: $$cpu in $$dir"; \
+	  $(RUN) $(CMAKE) -S . -B $$dir -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/arm-none-eabi.cmake \
+	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
+	  $(RUN) $(CMAKE) --build $$dir -j $(JOBS); \
+	  archives=""; \
+	  for lib in fixel fixel_port; do \
+	    if [ -f $$dir/lib/lib$$lib.a ]; then archives="$$archives $$dir/lib/lib$$lib.a"; fi; \
+	  done; \
+	  if [ -z "$$archives" ]; then \
+	    echo "make firmware: no archive was built (src/ and port/ have no .c files)"; \
+	    exit 1; \
+	  fi; \
+	  $(ARM_PREFIX)size -t $$archives; \
+	  NM=$(ARM_PREFIX)nm scripts/check_freestanding.sh $$archives; \
+	done
+
+bench: build
+	@if [ ! -f host_sim/scripts/bench.sh ]; then \
+	  echo "make bench: host_sim/scripts/bench.sh is not available yet"; exit 1; \
+	fi
+	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/bench.sh
+
+stability: build
+	@if [ ! -f host_sim/scripts/stability.sh ]; then \
+	  echo "make stability: host_sim/scripts/stability.sh is not available yet"; exit 1; \
+	fi
+	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/stability.sh
+
+sanitize: deps
+	$(RUN) $(CMAKE) -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DFXL_SANITIZE=ON $(CMAKE_ARGS)
+	$(RUN) $(CMAKE) --build $(ASAN_DIR) -j $(JOBS)
+	cd $(ASAN_DIR) && $(RUN) $(CTEST) --output-on-failure -j$(CTEST_JOBS)
+
+# Informational: findings are printed, never fail the target.
+cppcheck:
+	@scripts/deps.sh cppcheck || { echo "make cppcheck: cppcheck unavailable, skipped"; exit 0; }
+	@if command -v cppcheck >/dev/null; then \
+	  cppcheck --std=c99 --language=c --enable=warning,style,performance,portability \
+	    --inline-suppr --quiet --suppress=missingIncludeSystem \
+	    -I include -I src -I port src port || true; \
+	fi
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(foreach cpu,$(FW_CPUS),build-fw-$(patsubst cortex-%,%,$(cpu))) $(GALLERY)
