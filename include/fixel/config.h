@@ -1,0 +1,65 @@
+/* fixel/config.h - compile-time configuration.
+ *
+ * Never edit this file. Put your settings in a header of your own and build
+ * with -DFXL_CONFIG_FILE='"my_fixel_config.h"'; it is included first and
+ * every default below is only used where you did not define the macro.
+ * Options are positive (FXL_HAVE_x = 1 means the feature is compiled in).
+ */
+#ifndef FIXEL_CONFIG_H
+#define FIXEL_CONFIG_H
+
+#ifdef FXL_CONFIG_FILE
+#include FXL_CONFIG_FILE
+#endif
+
+/* Sub-pixel precision of vertex positions (1..6): 4 bits = 1/16 pixel. Vertices are
+ * rounded to this grid before rasterization; coverage is exact on it. */
+#ifndef FXL_SUBPIXEL_BITS
+#define FXL_SUBPIXEL_BITS 4
+#endif
+
+/* Default distance in pixels between exact perspective divisions. */
+#ifndef FXL_PERSP_SPAN
+#define FXL_PERSP_SPAN 16
+#endif
+
+/* 16-bit depth buffer support (scaled 1/w, greater is nearer). */
+#ifndef FXL_HAVE_DEPTH
+#define FXL_HAVE_DEPTH 1
+#endif
+
+/* Bilinear filtering (point sampling is always present). */
+#ifndef FXL_HAVE_BILINEAR
+#define FXL_HAVE_BILINEAR 1
+#endif
+
+/* Mip levels, LOD selection and trilinear filtering. */
+#ifndef FXL_HAVE_MIPMAP
+#define FXL_HAVE_MIPMAP 1
+#endif
+
+/* Texel formats other than RGB565, wrap modes other than repeat, colour key,
+ * Gouraud colour. Without it the core keeps only the RGB565 repeat fast path. */
+#ifndef FXL_HAVE_GENERIC
+#define FXL_HAVE_GENERIC 1
+#endif
+
+/* Largest texture side is 1 << FXL_TEX_MAX_LOG2 texels. */
+#ifndef FXL_TEX_MAX_LOG2
+#define FXL_TEX_MAX_LOG2 12
+#endif
+
+#if FXL_SUBPIXEL_BITS < 1 || FXL_SUBPIXEL_BITS > 6
+#error "FXL_SUBPIXEL_BITS must be in 1..6 (centres on the grid; edge terms fit 32 bits)"
+#endif
+#if FXL_PERSP_SPAN < 1 || FXL_PERSP_SPAN > 256 || (FXL_PERSP_SPAN & (FXL_PERSP_SPAN - 1)) != 0
+#error "FXL_PERSP_SPAN must be a power of two in 1..256"
+#endif
+#if FXL_TEX_MAX_LOG2 < 0 || FXL_TEX_MAX_LOG2 > 14
+#error "FXL_TEX_MAX_LOG2 must be in 0..14 (u, v are stepped as 16.16 texels)"
+#endif
+#if FXL_HAVE_MIPMAP && !FXL_HAVE_GENERIC
+#error "FXL_HAVE_MIPMAP needs FXL_HAVE_GENERIC (mip sampling runs on the generic span loop)"
+#endif
+
+#endif

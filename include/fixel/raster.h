@@ -1,0 +1,140 @@
+/* fixel/raster.h - drawing screen-space triangles into a target.
+ *
+ * Conventions (the reference renderer and the tests use the same ones):
+ * - Positions are frame pixels in q16. Pixel (i, j) has its centre at
+ *   (i + 0.5, j + 0.5). Each position is first snapped to the sub-pixel grid
+ *   (1 / 2^FXL_SUBPIXEL_BITS px) by rounding to nearest, ties toward +inf:
+ *   fxl_snap_subpx() gives the snapped value in grid units.
+ * - Coverage is exactly the top-left rule on the snapped vertices: a pixel is
+ *   drawn when its centre is strictly inside, or on a left or top edge. Either
+ *   winding is accepted. A mesh whose triangles share snapped edges has every
+ *   covered pixel drawn exactly once.
+ * - inv_w is proportional to 1/w (u0.32: any positive uint32, larger is
+ *   nearer). Interpolation only uses ratios of inv_w within a triangle; the
+ *   depth buffer stores inv_w >> 16, so keep one scale per frame (the front
+ *   end uses near/w * (2^32 - 1)). inv_w == 0 is FXL_ERR_RANGE.
+ * - u, v are normalised texture coordinates in q16 (65536 = one texture
+ *   side), any int32 value. They are interpolated perspective-correctly:
+ *   1/w, u/w, v/w are planes in screen space; u = (u/w) / (1/w) is exact at
+ *   every `persp`-th pixel of a span and stepped linearly between.
+ * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
+ *   any u, v. Values outside never cause undefined behaviour: planes are
+ *   evaluated in 64-bit modular arithmetic and clamped to the vertex range.
+ */
+#ifndef FIXEL_RASTER_H
+#define FIXEL_RASTER_H
+
+#include <stdint.h>
+#include "fixel/config.h"
+#include "fixel/status.h"
+#include "fixel/fixed.h"
+#include "fixel/target.h"
+#include "fixel/texture.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct fxl_vertex {
+    fxl_q16_t x, y;    /* frame position, pixels, q16 */
+    uint32_t inv_w;    /* proportional to 1/w, u0.32, > 0 */
+    fxl_q16_t u, v;    /* normalised texture coordinates, q16 */
+    uint16_t color;    /* native RGB565, used by FXL_SHADE_GOURAUD */
+} fxl_vertex_t;
+
+/* persp: distance in pixels between exact divisions. */
+#define FXL_PERSP_AFFINE 0    /* u, v linear in screen space (no correction) */
+#define FXL_PERSP_EXACT 1     /* divide at every pixel */
+#define FXL_PERSP_AUTO (-1)   /* longest power-of-two segment within auto_budget */
+#define FXL_PERSP_MAX 256
+
+typedef enum fxl_filter {
+    FXL_FILTER_POINT = 0,     /* nearest texel */
+    FXL_FILTER_BILINEAR = 1   /* 2x2 texels, 5-bit weights, texel centres at +0.5 */
+} fxl_filter_t;
+
+typedef enum fxl_mipmode {
+    FXL_MIP_NONE = 0,         /* always level 0 */
+    FXL_MIP_NEAREST = 1,      /* nearest level (point or bilinear on it) */
+    FXL_MIP_LINEAR = 2        /* blend two levels by the LOD fraction (trilinear
+                                 with FXL_FILTER_BILINEAR, point-mip-linear with
+                                 FXL_FILTER_POINT) */
+} fxl_mipmode_t;
+
+typedef enum fxl_lodmode {
+    FXL_LOD_SEGMENT = 0,      /* at every correction point, from the derivatives */
+    FXL_LOD_TRIANGLE = 1      /* once per triangle: log4(texel area / pixel area) */
+} fxl_lodmode_t;
+
+typedef enum fxl_texenv {
+    FXL_TEXENV_REPLACE = 0,   /* texel */
+    FXL_TEXENV_MODULATE = 1,  /* texel * colour, per channel: (t * (c + 1)) >> bits */
+    FXL_TEXENV_DECAL = 2      /* colour where the texel is keyed, else texel */
+} fxl_texenv_t;
+
+typedef enum fxl_shade {
+    FXL_SHADE_FLAT = 0,       /* colour = fxl_draw_t.color */
+    FXL_SHADE_GOURAUD = 1     /* colour interpolated (perspective-correct) from vertices */
+} fxl_shade_t;
+
+#define FXL_DEPTH_TEST 0x01u  /* draw only where inv_w >> 16 > stored depth */
+#define FXL_DEPTH_WRITE 0x02u /* store inv_w >> 16 where drawn */
+
+/* Per-draw state. Start from fxl_draw_defaults(); all fields are plain data. */
+typedef struct fxl_draw {
+    const fxl_texture_t *texture; /* NULL: untextured, colour only */
+    int16_t persp;                /* FXL_PERSP_* or a power of two 2..256 */
+    uint8_t filter;               /* fxl_filter_t */
+    uint8_t mip;                  /* fxl_mipmode_t */
+    uint8_t lod;                  /* fxl_lodmode_t */
+    uint8_t texenv;               /* fxl_texenv_t */
+    uint8_t shade;                /* fxl_shade_t */
+    uint8_t depth;                /* FXL_DEPTH_* bits; ignored without a depth buffer */
+    uint16_t color;               /* flat colour, native RGB565 */
+    int16_t lod_bias_q8;          /* added to the LOD, 1/256 level units */
+    fxl_q16_t auto_budget;        /* FXL_PERSP_AUTO: max texel error, q16 (> 0) */
+} fxl_draw_t;
+
+/* Counters a draw adds to (pass NULL when not wanted). */
+typedef struct fxl_stats {
+    uint32_t triangles;           /* submitted */
+    uint32_t drawn;               /* reached the span loops */
+    uint32_t culled_degenerate;   /* zero area after snapping */
+    uint32_t culled_outside;      /* no pixel centre inside the clip rectangle */
+    uint32_t culled_backface;     /* by the front end */
+    uint32_t pixels;              /* pixels written */
+    uint32_t spans;               /* non-empty clipped spans */
+    uint32_t divisions;           /* exact perspective divisions */
+} fxl_stats_t;
+
+/* Subdivided 16 (FXL_PERSP_SPAN), point filter, nearest mip, per-segment LOD,
+ * replace, flat white, depth test + write, budget 1/4 texel. */
+void fxl_draw_defaults(fxl_draw_t *d);
+
+/* Snap a q16 position to the sub-pixel grid; result in grid units
+ * (x * 2^FXL_SUBPIXEL_BITS, rounded to nearest, ties toward +inf). */
+int32_t fxl_snap_subpx(fxl_q16_t x);
+
+/* Draw one triangle. Errors: FXL_ERR_ARG (NULL target/draw/vertices/pixels,
+ * unknown enum), FXL_ERR_RANGE (inv_w == 0, persp not allowed, bad budget),
+ * FXL_ERR_UNSUPPORTED (texture invalid for this build). Nothing is drawn on
+ * error. Degenerate and off-clip triangles return FXL_OK and are counted. */
+fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw,
+                               const fxl_vertex_t v[3], fxl_stats_t *stats);
+
+/* Draw an indexed list: `count` triangles from idx[3*i .. 3*i+2] into verts.
+ * Stops at the first error (which is returned); out-of-range indices are
+ * FXL_ERR_RANGE. */
+fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw,
+                              const fxl_vertex_t *verts, uint32_t vert_count,
+                              const uint16_t *idx, uint32_t count, fxl_stats_t *stats);
+
+/* Texture LOD of a whole triangle as in FXL_LOD_TRIANGLE, q8 levels (LOD =
+ * log4(texel area / pixel area), texel area counted at level 0), clamped to
+ * [0, 255 * 256]. Exposed for tests and tools. */
+int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

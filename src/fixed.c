@@ -1,0 +1,369 @@
+/* fixed.c - 16.16 fixed-point arithmetic (see include/fixel/fixed.h).
+ *
+ * Every rounding step here works on magnitudes held in unsigned types: the
+ * sign is taken apart first, the magnitude is rounded half away from zero, and
+ * the sign is put back only after a range check. That gives the symmetry the
+ * header promises (f(-a, b) == -f(a, b)) for free, and it means no expression
+ * below can overflow a signed type or shift a negative value, whatever the
+ * arguments (INT32_MIN and INT64_MIN included: their magnitude 2^31 / 2^63 is
+ * representable in the unsigned type of the same width).
+ *
+ * Division by a 64-bit value is left to the compiler; on 32-bit cores that
+ * becomes a call to the runtime helper (__aeabi_uldivmod on ARM).
+ */
+#include <stddef.h>
+
+#include "fixel/fixed.h"
+
+/* |v| as an unsigned number; exact for INT32_MIN (2^31) and INT64_MIN (2^63)
+ * because the negation happens in unsigned arithmetic (modulo 2^N). */
+static uint32_t abs_u32(int32_t v)
+{
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+static uint64_t abs_u64(int64_t v)
+{
+    return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+}
+
+/* Rebuild a q16 from its sign and magnitude. Returns 0 (and leaves *out alone)
+ * when the value is outside [-2^31, 2^31 - 1]. */
+static int q16_from_mag(int negative, uint64_t mag, fxl_q16_t *out)
+{
+    if (negative) {
+        if (mag > (uint64_t)0x80000000u) {
+            return 0;
+        }
+        /* mag <= 2^31, so -mag fits int64 and then int32 exactly. */
+        *out = (fxl_q16_t)(-(int64_t)mag);
+    } else {
+        if (mag > (uint64_t)INT32_MAX) {
+            return 0;
+        }
+        *out = (fxl_q16_t)mag;
+    }
+    return 1;
+}
+
+static fxl_q16_t q16_saturate(int negative)
+{
+    return negative ? FXL_Q16_MIN : FXL_Q16_MAX;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Conversions                                                              */
+
+int32_t fxl_q16_round(fxl_q16_t a)
+{
+    /* m <= 2^31, so m + 2^15 cannot wrap a uint32_t; the result is at most
+     * 2^15 = 32768 (round(32767.99998) and round(-32768)). */
+    uint32_t m = abs_u32(a);
+    uint32_t r = (m + 0x8000u) >> 16;
+    return a < 0 ? -(int32_t)r : (int32_t)r;
+}
+
+int32_t fxl_q16_floor(fxl_q16_t a)
+{
+    /* Clearing the 16 fraction bits rounds toward -inf in two's complement;
+     * the result is a multiple of 65536 in [INT32_MIN, INT32_MAX - 65535], so
+     * the subtraction is in range and the division is exact (no dependence
+     * on how >> treats negative numbers). */
+    int32_t whole = a - (int32_t)(a & 0xFFFF);
+    return whole / 65536;
+}
+
+int32_t fxl_q16_ceil(fxl_q16_t a)
+{
+    /* floor <= 32767, so the +1 stays in range (ceil(MAX) = 32768). */
+    return fxl_q16_floor(a) + ((a & 0xFFFF) != 0 ? 1 : 0);
+}
+
+fxl_q16_t fxl_q16_from_int_sat(int32_t i)
+{
+    if (i > 32767) {
+        return FXL_Q16_MAX;
+    }
+    if (i < -32768) {
+        return FXL_Q16_MIN;
+    }
+    /* |i * 65536| <= 2^31 and -32768 * 65536 == INT32_MIN exactly. */
+    return (fxl_q16_t)(i * 65536);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Add, subtract                                                            */
+
+static fxl_q16_t clamp_q16(int64_t v)
+{
+    if (v > INT32_MAX) {
+        return FXL_Q16_MAX;
+    }
+    if (v < INT32_MIN) {
+        return FXL_Q16_MIN;
+    }
+    return (fxl_q16_t)v;
+}
+
+fxl_q16_t fxl_q16_add_sat(fxl_q16_t a, fxl_q16_t b)
+{
+    /* |a + b| <= 2^32: exact in int64. */
+    return clamp_q16((int64_t)a + (int64_t)b);
+}
+
+fxl_q16_t fxl_q16_sub_sat(fxl_q16_t a, fxl_q16_t b)
+{
+    return clamp_q16((int64_t)a - (int64_t)b);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Multiply                                                                 */
+
+/* a * b / 2^16 rounded half away from zero. Returns 0 on overflow. */
+static int q16_mul(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out, int *negative)
+{
+    /* |a| * |b| <= 2^62; + 2^15 cannot wrap a uint64_t. */
+    uint64_t p = (uint64_t)abs_u32(a) * (uint64_t)abs_u32(b);
+    uint64_t r = (p + 0x8000u) >> 16;
+    *negative = (a < 0) != (b < 0);
+    return q16_from_mag(*negative, r, out);
+}
+
+fxl_q16_t fxl_q16_mul_sat(fxl_q16_t a, fxl_q16_t b)
+{
+    fxl_q16_t v;
+    int negative;
+    if (!q16_mul(a, b, &v, &negative)) {
+        return q16_saturate(negative);
+    }
+    return v;
+}
+
+fxl_status_t fxl_q16_mul_chk(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out)
+{
+    fxl_q16_t v;
+    int negative;
+    if (out == NULL) { /* not in the header's contract: a NULL out is an ARG error */
+        return FXL_ERR_ARG;
+    }
+    if (!q16_mul(a, b, &v, &negative)) {
+        return FXL_ERR_RANGE;
+    }
+    *out = v;
+    return FXL_OK;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Divide                                                                   */
+
+/* (a * 2^16) / b rounded half away from zero. Returns 0 on overflow and for
+ * b == 0; *negative is then the direction to saturate (for b == 0 the sign
+ * of a; the caller turns 0 / 0 into 0). */
+static int q16_div(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out, int *negative)
+{
+    uint64_t n, d, q;
+    *negative = (a < 0) != (b < 0);
+    if (b == 0) {
+        *negative = a < 0;
+        return 0;
+    }
+    /* n <= 2^47, d <= 2^31: n + d / 2 cannot wrap. Rounding: with
+     * n = q*d + r, floor((n + floor(d/2)) / d) is q + 1 exactly when
+     * r >= d - floor(d/2), i.e. r >= d/2 for even d and r > d/2 for odd d
+     * (an odd divisor can never produce an exact .5). */
+    n = (uint64_t)abs_u32(a) << 16;
+    d = (uint64_t)abs_u32(b);
+    q = (n + d / 2u) / d;
+    return q16_from_mag(*negative, q, out);
+}
+
+fxl_q16_t fxl_q16_div_sat(fxl_q16_t a, fxl_q16_t b)
+{
+    fxl_q16_t v;
+    int negative;
+    if (!q16_div(a, b, &v, &negative)) {
+        if (a == 0) {
+            return 0; /* 0 / 0 */
+        }
+        return q16_saturate(negative);
+    }
+    return v;
+}
+
+fxl_status_t fxl_q16_div_chk(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out)
+{
+    fxl_q16_t v;
+    int negative;
+    if (out == NULL) { /* not in the header's contract: a NULL out is an ARG error */
+        return FXL_ERR_ARG;
+    }
+    if (!q16_div(a, b, &v, &negative)) {
+        return FXL_ERR_RANGE;
+    }
+    *out = v;
+    return FXL_OK;
+}
+
+fxl_q16_t fxl_q16_recip_sat(fxl_q16_t a)
+{
+    /* 1 / 0 saturates to MAX; 1 / (+-1 ulp) = +-2^32 ulp overflows to
+     * MAX / MIN; 1 / INT32_MIN = -2 ulp exactly. */
+    return fxl_q16_div_sat(FXL_Q16_ONE, a);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Square root                                                              */
+
+fxl_q16_t fxl_q16_sqrt(fxl_q16_t a)
+{
+    /* sqrt(a / 2^16) * 2^16 = sqrt(a * 2^16). n < 2^47, so the result is
+     * below 2^23.5 and fits easily. Classic digit-by-digit square root: after
+     * the loop root = floor(sqrt(n)) and rem = n - root^2. */
+    uint64_t n, rem, root = 0, bit;
+    if (a <= 0) {
+        return 0;
+    }
+    n = (uint64_t)(uint32_t)a << 16;
+    rem = n;
+    bit = (uint64_t)1 << 46; /* highest power of four <= 2^47 */
+    while (bit > rem) {
+        bit >>= 2;
+    }
+    while (bit != 0) {
+        if (rem >= root + bit) {
+            rem -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    /* Round to nearest: n >= (root + 1/2)^2 = root^2 + root + 1/4 holds for an
+     * integer n exactly when rem = n - root^2 > root; never a tie. */
+    if (rem > root) {
+        root++;
+    }
+    return (fxl_q16_t)root;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Count leading zeros                                                      */
+
+/* __builtin_clz only where it becomes one instruction. Elsewhere GCC would
+ * call the libgcc helper __clzsi2, so plain C is used instead. Building with
+ * -DFXL_USE_BUILTIN_CLZ=0 forces the plain C path on any target: that is how
+ * a PC build runs the Cortex-M0+ code through tests/test_fixed.c. */
+#ifndef FXL_USE_BUILTIN_CLZ
+#if defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__x86_64__) || \
+                          defined(__i386__) || defined(__aarch64__) ||           \
+                          defined(__riscv_zbb))
+#define FXL_USE_BUILTIN_CLZ 1
+#else
+#define FXL_USE_BUILTIN_CLZ 0
+#endif
+#endif
+
+int fxl_clz32(uint32_t x)
+{
+    if (x == 0) {
+        return 32; /* __builtin_clz(0) is undefined */
+    }
+#if FXL_USE_BUILTIN_CLZ
+    /* unsigned int is 32 bits on every target selected above. */
+    return __builtin_clz((unsigned int)x);
+#else
+    {
+        /* Binary search, 5 compares: no libgcc helper (__clzsi2) on cores
+         * without a CLZ instruction such as Cortex-M0+. */
+        int n = 0;
+        if (x <= 0x0000FFFFu) { n += 16; x <<= 16; }
+        if (x <= 0x00FFFFFFu) { n += 8;  x <<= 8; }
+        if (x <= 0x0FFFFFFFu) { n += 4;  x <<= 4; }
+        if (x <= 0x3FFFFFFFu) { n += 2;  x <<= 2; }
+        if (x <= 0x7FFFFFFFu) { n += 1; }
+        return n;
+    }
+#endif
+}
+
+int fxl_clz64(uint64_t x)
+{
+    uint32_t hi = (uint32_t)(x >> 32);
+    if (hi != 0) {
+        return fxl_clz32(hi);
+    }
+    return 32 + fxl_clz32((uint32_t)x);
+}
+
+/* ------------------------------------------------------------------------ */
+/* 64-bit rounded and floored division                                      */
+
+/* Both work on magnitudes: n = |num| <= 2^63, d = |den| <= 2^63, q = n / d,
+ * r = n % d. A negative quotient has magnitude <= 2^63 and maps to INT64_MIN
+ * at most; a positive one exceeds INT64_MAX only for INT64_MIN / -1.
+ * den == 0 is outside the contract; it saturates like fxl_q16_div_sat
+ * (toward the sign of num, 0 for 0 / 0) rather than trapping. */
+static int64_t div64_from_mag(int negative, uint64_t q)
+{
+    if (negative) {
+        if (q >= ((uint64_t)1 << 63)) {
+            return INT64_MIN;
+        }
+        return -(int64_t)q;
+    }
+    if (q > (uint64_t)INT64_MAX) {
+        return INT64_MAX;
+    }
+    return (int64_t)q;
+}
+
+static int64_t div64_by_zero(int64_t num)
+{
+    if (num > 0) {
+        return INT64_MAX;
+    }
+    if (num < 0) {
+        return INT64_MIN;
+    }
+    return 0;
+}
+
+int64_t fxl_div64_round(int64_t num, int64_t den)
+{
+    uint64_t n, d, q, r;
+    if (den == 0) {
+        return div64_by_zero(num);
+    }
+    n = abs_u64(num);
+    d = abs_u64(den);
+    q = n / d;
+    r = n - q * d; /* n % d without a second runtime division call */
+    /* Round half away from zero: up when r >= d / 2, i.e. 2r >= d, written
+     * as r >= d - r because 2r could wrap for d near 2^63 (r == 0 never passes:
+     * d >= 1). If q is bumped then r != 0, so d >= 2 and q <= 2^62: q + 1
+     * cannot wrap. */
+    if (r >= d - r) {
+        q++;
+    }
+    return div64_from_mag((num < 0) != (den < 0), q);
+}
+
+int64_t fxl_div64_floor(int64_t num, int64_t den)
+{
+    uint64_t n, d, q, r;
+    int negative;
+    if (den == 0) {
+        return div64_by_zero(num);
+    }
+    n = abs_u64(num);
+    d = abs_u64(den);
+    q = n / d;
+    r = n - q * d; /* n % d without a second runtime division call */
+    negative = (num < 0) != (den < 0);
+    /* A negative inexact quotient floors one further away from zero. The
+     * contract is den > 0; negative den gets the mathematical floor too. */
+    if (negative && r != 0) {
+        q++;
+    }
+    return div64_from_mag(negative, q);
+}
