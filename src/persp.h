@@ -1,0 +1,85 @@
+/* persp.h - the exact perspective division at a correction point (inline:
+ * it runs every N pixels and is most of the per-segment cost).
+ *
+ * At a correction point the span loops need a = (attribute plane) / (q plane)
+ * for two to five attributes sharing one q. One reciprocal of q is computed
+ * and multiplied into each attribute:
+ *   qv = qn * 2^(32 - n) + (dropped low bits),  qn in [2^31, 2^32)
+ *   r  = 2^62 / qn  (one 32/32 division + one Newton step, see fxl__recip)
+ *   a  = (av >> (PF - 1)) * r * 2^(n + PF - 95 + shift)
+ * Error budget (relative): qn truncation < 2^-31, r < 2^-28, the 32-bit
+ * attribute mantissa < 2^-30 of the largest vertex value of that attribute.
+ * On a Cortex-M4 this is CLZ, UDIV, two UMULL for r and one SMULL per
+ * attribute; on an M0+ the division and multiplies are library calls.
+ */
+#ifndef FIXEL_PERSP_H
+#define FIXEL_PERSP_H
+
+#include "raster_int.h"
+
+static inline int fxl__clz64_inline(uint64_t x)
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__))
+    return x ? __builtin_clzll(x) : 64;
+#else
+    return fxl_clz64(x);
+#endif
+}
+
+/* Floor shift of a signed 64-bit value without relying on the
+ * implementation-defined >> of negative numbers. */
+static inline int64_t fxl__asr64(int64_t x, int k)
+{
+    return x < 0 ? ~(int64_t)((uint64_t)~x >> k) : (int64_t)((uint64_t)x >> k);
+}
+
+static inline void fxl__recip(int64_t qv, fxl__recip_t *out)
+{
+    uint64_t q = qv > 0 ? (uint64_t)qv : 1u;
+    int n = fxl__clz64_inline(q);
+    uint32_t qn = (uint32_t)((q << n) >> 32);        /* [2^31, 2^32) */
+    uint32_t d = (qn >> 16) + 1u;                     /* (2^15, 2^16] */
+    /* y0 = 2^48 / qn in q16, underestimated by < 2^-15 relative. */
+    uint32_t y0 = 0xFFFFFFFFu / d;                    /* <= 2^17 - 1 */
+    /* Newton: y1 = y0 * (2 - x * y0) with x = qn / 2^32. e = x*y0 in q48 is
+     * in [2^48 (1 - 2^-14), 2^48], so 2^49 - e in (2^48, 2^48 (1 + 2^-14)]
+     * and t = (2^49 - e) >> 17 fits 32 bits (q31 of 2 - x*y0). */
+    uint64_t e = (uint64_t)qn * y0;
+    uint32_t t = (uint32_t)(((UINT64_C(1) << 49) - e) >> 17);
+    /* y0 (q16) * t (q31) = q47; >> 17 gives q30: r = 2^62 / qn, <= 2^31. */
+    out->r = (uint32_t)(((uint64_t)y0 * t) >> 17);
+    out->n = n;
+}
+
+static inline int64_t fxl__persp(int64_t av, const fxl__recip_t *rc, int shift)
+{
+    int64_t m = fxl__asr64(av, FXL__PF - 1);
+    int64_t prod;
+    int e;
+
+    /* Setup scales each attribute below 2^30 plane units, i.e. |m| < 2^31;
+     * evaluation error can overshoot by a unit, so saturate. */
+    if (m > INT32_MAX)
+        m = INT32_MAX;
+    else if (m < -INT32_MAX)
+        m = -INT32_MAX;
+    prod = m * (int64_t)rc->r;                        /* |prod| < 2^62 */
+    e = rc->n + FXL__PF - 95 + shift;
+    if (e <= 0) {
+        int k = -e;
+        if (k > 62)
+            return 0;
+        if (k == 0)
+            return prod;
+        return fxl__asr64(prod + ((int64_t)1 << (k - 1)), k);   /* round half up */
+    }
+    if (e > 62)
+        return prod > 0 ? INT64_MAX : (prod < 0 ? INT64_MIN : 0);
+    if (prod > (INT64_MAX >> e))
+        return INT64_MAX;
+    if (prod < -(INT64_MAX >> e))
+        return INT64_MIN;
+    return (int64_t)((uint64_t)prod << e);
+}
+
+#endif

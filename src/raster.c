@@ -1,0 +1,334 @@
+/* raster.c - the public draw calls: validation, snapping, the row walk.
+ *
+ * Order of work per triangle: validate (every build: the target struct is
+ * plain data the caller may have edited, so the clip rectangle is checked
+ * against the buffer again), snap, cull, set up planes (setup.c), walk rows
+ * with exact edges (edge.c), hand each clipped span to span.c.
+ */
+#include "raster_int.h"
+
+void fxl_draw_defaults(fxl_draw_t *d)
+{
+    if (!d)
+        return;
+    d->texture = 0;
+    d->persp = FXL_PERSP_SPAN;
+    d->filter = FXL_FILTER_POINT;
+    d->mip = FXL_MIP_NEAREST;
+    d->lod = FXL_LOD_SEGMENT;
+    d->texenv = FXL_TEXENV_REPLACE;
+    d->shade = FXL_SHADE_FLAT;
+    d->depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+    d->color = 0xFFFFu;
+    d->lod_bias_q8 = 0;
+    d->auto_budget = FXL_Q16_ONE / 4;
+}
+
+int32_t fxl_snap_subpx(fxl_q16_t x)
+{
+    /* floor((x + half grid step) / grid step); int64 so INT32_MAX cannot wrap. */
+    int64_t t = (int64_t)x + ((int64_t)1 << (15 - FXL__S));
+    return (int32_t)(t < 0 ? ~((uint64_t)~t >> (16 - FXL__S)) : ((uint64_t)t >> (16 - FXL__S)));
+}
+
+static int is_pow2_persp(int32_t p)
+{
+    return p >= 2 && p <= FXL_PERSP_MAX && (p & (p - 1)) == 0;
+}
+
+static fxl_status_t check_draw(const fxl_draw_t *d)
+{
+    if (d->filter > FXL_FILTER_BILINEAR || d->mip > FXL_MIP_LINEAR || d->lod > FXL_LOD_TRIANGLE ||
+        d->texenv > FXL_TEXENV_DECAL || d->shade > FXL_SHADE_GOURAUD)
+        return FXL_ERR_ARG;
+    if (d->persp != FXL_PERSP_AFFINE && d->persp != FXL_PERSP_EXACT && d->persp != FXL_PERSP_AUTO &&
+        !is_pow2_persp(d->persp))
+        return FXL_ERR_RANGE;
+    if (d->persp == FXL_PERSP_AUTO && d->auto_budget <= 0)
+        return FXL_ERR_RANGE;
+#if !FXL_HAVE_BILINEAR
+    if (d->filter == FXL_FILTER_BILINEAR)
+        return FXL_ERR_UNSUPPORTED;
+#endif
+#if !FXL_HAVE_GENERIC
+    if (d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT || !d->texture)
+        return FXL_ERR_UNSUPPORTED;
+#endif
+    if (d->texture) {
+        fxl_status_t st = fxl_texture_validate(d->texture);
+        if (st != FXL_OK)
+            return st;
+#if !FXL_HAVE_GENERIC
+        if (d->texture->format != FXL_TEXFMT_RGB565 || d->texture->wrap_u != FXL_WRAP_REPEAT ||
+            d->texture->wrap_v != FXL_WRAP_REPEAT || (d->texture->flags & FXL_TEXF_KEY))
+            return FXL_ERR_UNSUPPORTED;
+#endif
+    }
+    return FXL_OK;
+}
+
+static fxl_status_t check_target(const fxl_target_t *t)
+{
+    const fxl_rect_t *c = &t->clip;
+    if (!t->pixels || t->width < 1 || t->height < 1 || t->width > FXL_TARGET_MAX_DIM ||
+        t->height > FXL_TARGET_MAX_DIM || t->stride < t->width || t->stride > FXL_TARGET_MAX_DIM * 4 ||
+        t->origin_x < -FXL_TARGET_MAX_ORIGIN || t->origin_x > FXL_TARGET_MAX_ORIGIN ||
+        t->origin_y < -FXL_TARGET_MAX_ORIGIN || t->origin_y > FXL_TARGET_MAX_ORIGIN ||
+        (t->format != FXL_PIXFMT_RGB565 && t->format != FXL_PIXFMT_RGB565_SWAP))
+        return FXL_ERR_ARG;
+    /* The clip must lie inside the buffer: this is what makes stray writes
+     * impossible whatever the caller did to the struct. */
+    if (c->x0 < t->origin_x || c->y0 < t->origin_y || c->x1 > t->origin_x + t->width ||
+        c->y1 > t->origin_y + t->height)
+        return FXL_ERR_ARG;
+    return FXL_OK;
+}
+
+/* ceil((Y - HALF) / ONE): the first row whose centre is at or below Y. */
+static int32_t first_row_at(int32_t Y)
+{
+    return (int32_t)fxl_div64_floor((int64_t)Y - FXL__HALF + FXL__ONE - 1, FXL__ONE);
+}
+
+static int32_t seg_log2_for(const fxl_draw_t *d)
+{
+    int32_t p = d->persp, k = 0;
+    /* Affine still re-anchors every FXL_PERSP_MAX pixels: q is constant so a
+     * correction is just the linear value, but it stops the truncated q16
+     * step (< 2^-16 texel per pixel) from accumulating across spans that run
+     * thousands of pixels off-screen before reaching the clip rectangle. */
+    if (p == FXL_PERSP_AFFINE)
+        p = FXL_PERSP_MAX;
+    if (p == FXL_PERSP_AUTO)
+        p = FXL_PERSP_SPAN;
+    while ((1 << k) < p)
+        k++;
+    return k;
+}
+
+int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
+{
+#if FXL_HAVE_MIPMAP
+    int32_t X[3], Y[3], i;
+    int64_t du1, dv1, du2, dv2, uv, det;
+    int32_t l;
+
+    if (!t || !v)
+        return 0;
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(v[i].x);
+        Y[i] = fxl_snap_subpx(v[i].y);
+    }
+    det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
+    /* Halve the q16 differences (< 2^32) so each product stays below 2^62. */
+    du1 = ((int64_t)v[1].u - v[0].u) / 2;
+    dv1 = ((int64_t)v[1].v - v[0].v) / 2;
+    du2 = ((int64_t)v[2].u - v[0].u) / 2;
+    dv2 = ((int64_t)v[2].v - v[0].v) / 2;
+    uv = du1 * dv2 - du2 * dv1;
+    if (uv < 0)
+        uv = -uv;
+    if (det < 0)
+        det = -det;
+    if (uv == 0)
+        return -128 * 256;
+    if (det == 0)
+        return 255 * 256;
+    /* texel area = uv * 4 / 2^32 * 2^(lw + lh); pixel area = det / 2^(2S):
+     * log4(ratio) = (log2 uv + 2 - 32 + lw + lh - log2 det + 2S) / 2. */
+    l = (fxl__log2_q8((uint64_t)uv) - fxl__log2_q8((uint64_t)det) +
+         (2 - 32 + (int32_t)t->log2_w + (int32_t)t->log2_h + 2 * FXL__S) * 256) / 2;
+    if (l < -128 * 256)
+        l = -128 * 256;
+    if (l > 255 * 256)
+        l = 255 * 256;
+    return l;
+#else
+    (void)t;
+    (void)v;
+    return 0;
+#endif
+}
+
+static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
+{
+    const fxl_texture_t *t = tri->tex;
+    const fxl_draw_t *d = tri->draw;
+    uint32_t bpp = fxl_texfmt_bytes((fxl_texfmt_t)t->format), L;
+
+    tri->nlevels = 1;
+#if FXL_HAVE_MIPMAP
+    if (d->mip != FXL_MIP_NONE)
+        tri->nlevels = t->levels;
+#endif
+    for (L = 0; L < tri->nlevels; L++) {
+        fxl__level_t *lv = &tri->level[L];
+        lv->texels = (const uint8_t *)t->texels + (uint32_t)fxl_texture_level_offset(t, L) * bpp;
+        lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
+        lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
+        lv->mask_u = (1u << lv->log2_w) - 1u;
+        lv->mask_v = (1u << lv->log2_h) - 1u;
+    }
+    tri->mip_linear = 0;
+    tri->lod_per_segment = 0;
+    tri->lod_q8_tri = 0;
+    tri->lod_max_q8 = ((int32_t)tri->nlevels - 1) * 256;
+#if FXL_HAVE_MIPMAP
+    if (tri->nlevels > 1) {
+        tri->mip_linear = d->mip == FXL_MIP_LINEAR;
+        tri->lod_per_segment = d->lod == FXL_LOD_SEGMENT;
+        if (!tri->lod_per_segment) {
+            int32_t l = fxl_lod_triangle_q8(t, v) + d->lod_bias_q8;
+            tri->lod_q8_tri = l < 0 ? 0 : (l > tri->lod_max_q8 ? tri->lod_max_q8 : l);
+        }
+    }
+#else
+    (void)v;
+#endif
+}
+
+fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
+                               fxl_stats_t *stats)
+{
+    return fxl__draw_triangle_with(target, draw, v, stats, 0);
+}
+
+fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
+                                     fxl_stats_t *stats, fxl__seg_fn probe)
+{
+    fxl__tri_t tri;
+    fxl__edge_t el, es;
+    fxl__seg_fn fn;
+    fxl_status_t st;
+    int32_t X[3], Y[3], ord[3], i, t;
+    int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
+    int64_t det, cross;
+    int mid_left;
+
+    if (!target || !draw || !v)
+        return FXL_ERR_ARG;
+    st = check_target(target);
+    if (st != FXL_OK)
+        return st;
+    st = check_draw(draw);
+    if (st != FXL_OK)
+        return st;
+    for (i = 0; i < 3; i++)
+        if (v[i].inv_w == 0)
+            return FXL_ERR_RANGE;
+    if (stats)
+        stats->triangles++;
+
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(v[i].x);
+        Y[i] = fxl_snap_subpx(v[i].y);
+    }
+    det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
+    if (det == 0) {
+        if (stats)
+            stats->culled_degenerate++;
+        return FXL_OK;
+    }
+
+    /* Sort by Y: ord[0] top, ord[1] middle, ord[2] bottom. */
+    ord[0] = 0;
+    ord[1] = 1;
+    ord[2] = 2;
+    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; }
+    if (Y[ord[2]] < Y[ord[1]]) { t = ord[1]; ord[1] = ord[2]; ord[2] = t; }
+    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; }
+
+    row_top = first_row_at(Y[ord[0]]);
+    row_mid = first_row_at(Y[ord[1]]);
+    row_bot = first_row_at(Y[ord[2]]);
+    r0 = row_top > target->clip.y0 ? row_top : target->clip.y0;
+    r1 = row_bot < target->clip.y1 ? row_bot : target->clip.y1;
+    minx = X[0] < X[1] ? (X[0] < X[2] ? X[0] : X[2]) : (X[1] < X[2] ? X[1] : X[2]);
+    maxx = X[0] > X[1] ? (X[0] > X[2] ? X[0] : X[2]) : (X[1] > X[2] ? X[1] : X[2]);
+    if (r0 >= r1 || target->clip.x0 >= target->clip.x1 ||
+        first_row_at(maxx) <= target->clip.x0 || first_row_at(minx) >= target->clip.x1) {
+        if (stats)
+            stats->culled_outside++;
+        return FXL_OK;
+    }
+
+    tri.draw = draw;
+    tri.tex = draw->texture;
+    tri.target = target;
+    tri.stats = stats;
+    tri.affine = draw->persp == FXL_PERSP_AFFINE;
+    tri.seg_log2 = seg_log2_for(draw);
+    tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
+    tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
+#if !FXL_HAVE_DEPTH
+    if (target->depth && (tri.depth_test || tri.depth_write))
+        return FXL_ERR_UNSUPPORTED;
+#endif
+    tri.swap = target->format == FXL_PIXFMT_RGB565_SWAP;
+    tri.has_uv = tri.tex != 0;
+    tri.has_color = draw->shade == FXL_SHADE_GOURAUD;
+    tri.signed_u = tri.tex && tri.tex->wrap_u >= FXL_WRAP_CLAMP;
+    tri.signed_v = tri.tex && tri.tex->wrap_v >= FXL_WRAP_CLAMP;
+    tri.nlevels = 0;
+    tri.mip_linear = 0;
+    if (tri.tex)
+        setup_levels(&tri, v);
+    st = fxl__setup(&tri, v, X, Y, det);
+    if (st != FXL_OK)
+        return st;
+    fxl__span_setup(&tri);
+    fn = probe ? probe : fxl__pick_seg_fn(&tri);
+    if (!fn)
+        return FXL_ERR_UNSUPPORTED;
+    if (stats)
+        stats->drawn++;
+
+    /* Which side the middle vertex is on, from the long edge top -> bottom. */
+    cross = ((int64_t)X[ord[1]] - X[ord[0]]) * ((int64_t)Y[ord[2]] - Y[ord[0]]) -
+            ((int64_t)Y[ord[1]] - Y[ord[0]]) * ((int64_t)X[ord[2]] - X[ord[0]]);
+    mid_left = cross < 0;
+
+    fxl__edge_init(&el, X[ord[0]], Y[ord[0]], X[ord[2]], Y[ord[2]], r0);
+    if (r0 < row_mid)
+        fxl__edge_init(&es, X[ord[0]], Y[ord[0]], X[ord[1]], Y[ord[1]], r0);
+    else
+        fxl__edge_init(&es, X[ord[1]], Y[ord[1]], X[ord[2]], Y[ord[2]], r0);
+
+    for (row = r0; row < r1; row++) {
+        int32_t xl, xr, cl, cr;
+        if (row == row_mid && row != r0)
+            fxl__edge_init(&es, X[ord[1]], Y[ord[1]], X[ord[2]], Y[ord[2]], row);
+        xl = mid_left ? es.x : el.x;
+        xr = mid_left ? el.x : es.x;
+        cl = xl > target->clip.x0 ? xl : target->clip.x0;
+        cr = xr < target->clip.x1 ? xr : target->clip.x1;
+        if (cl < cr)
+            fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
+        fxl__edge_step(&el);
+        fxl__edge_step(&es);
+    }
+    return FXL_OK;
+}
+
+fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t *verts,
+                              uint32_t vert_count, const uint16_t *idx, uint32_t count, fxl_stats_t *stats)
+{
+    uint32_t i;
+    if (!target || !draw || !verts || (!idx && count))
+        return FXL_ERR_ARG;
+    for (i = 0; i < count; i++) {
+        fxl_vertex_t tv[3];
+        fxl_status_t st;
+        int k;
+        for (k = 0; k < 3; k++) {
+            uint16_t ix = idx[3 * i + (uint32_t)k];
+            if (ix >= vert_count)
+                return FXL_ERR_RANGE;
+            tv[k] = verts[ix];
+        }
+        st = fxl_draw_triangle(target, draw, tv, stats);
+        if (st != FXL_OK)
+            return st;
+    }
+    return FXL_OK;
+}

@@ -1,0 +1,158 @@
+/* raster_int.h - private state shared by setup.c, edge.c, span.c, raster.c.
+ *
+ * Units used throughout (S = FXL_SUBPIXEL_BITS):
+ * - positions: integer sub-pixel grid units ("subpx"), 1 px = 2^S subpx;
+ *   snapped vertices of an int32 q16 input lie within +-2^(31-16+S) subpx.
+ *   Pixel (i, j) has its centre at subpx (i * 2^S + 2^(S-1), j * 2^S + 2^(S-1)).
+ * - planes: an attribute a(X, Y) = c + gx * (X - X0) + gy * (Y - Y0), where
+ *   c, gx, gy carry FXL__PF fraction bits ("plane units"), X, Y are subpx and
+ *   (X0, Y0) is the reference vertex. Values are evaluated in uint64 modular
+ *   arithmetic: the true value at any point inside the triangle is bounded by
+ *   the vertex values (< 2^32 units), so an intermediate wrap-around cancels
+ *   and no signed overflow can occur.
+ */
+#ifndef FIXEL_RASTER_INT_H
+#define FIXEL_RASTER_INT_H
+
+#include <stdint.h>
+#include "fixel/raster.h"
+
+#define FXL__S FXL_SUBPIXEL_BITS
+#define FXL__ONE (1 << FXL__S)           /* one pixel in subpx */
+#define FXL__HALF (1 << (FXL__S - 1))    /* half a pixel in subpx */
+
+/* Fraction bits of plane constants and gradients. With distances below 2^21
+ * subpx and gradients rounded to 2^-21 units, evaluation error stays below
+ * one plane unit; the attributes are scaled per triangle so a unit is at most
+ * 2^-30 of the largest vertex value. */
+#define FXL__PF 20
+
+/* Perspective-interpolated attributes: u, v and (Gouraud) r, g, b. */
+enum { FXL__AU = 0, FXL__AV = 1, FXL__AR = 2, FXL__AG = 3, FXL__AB = 4, FXL__NATTR = 5 };
+
+typedef struct fxl__plane {
+    int64_t c;   /* value at the reference vertex, FXL__PF fraction bits */
+    int64_t gx;  /* per subpx along x */
+    int64_t gy;  /* per subpx along y */
+} fxl__plane_t;
+
+/* One edge walked row by row with an exact remainder (a DDA on the ceiling of
+ * the intercept): at every row, x is the first pixel whose centre is at or
+ * right of the edge. */
+typedef struct fxl__edge {
+    int32_t x;       /* ceil((X(yc) - HALF) / ONE): first pixel at/after the edge */
+    int32_t err;     /* x * den - num, in [0, den) */
+    int32_t den;     /* ONE * dy, dy > 0 */
+    int32_t step;    /* floor(ONE * dx / den) */
+    int32_t rem;     /* ONE * dx - step * den, in [0, den) */
+} fxl__edge_t;
+
+/* A texture level ready for the span loops. */
+typedef struct fxl__level {
+    const void *texels;
+    uint32_t log2_w, log2_h;
+    uint32_t mask_u, mask_v;     /* size - 1 */
+} fxl__level_t;
+
+/* Plane slots of a correction point: q, z, then the attributes. */
+enum { FXL__PQ = 0, FXL__PZ = 1, FXL__PA = 2, FXL__NPLANES = FXL__PA + FXL__NATTR };
+
+/* Everything the span loops need for one triangle. */
+typedef struct fxl__tri {
+    const fxl_draw_t *draw;
+    const fxl_texture_t *tex;    /* NULL: untextured */
+    fxl_target_t *target;
+
+    int32_t X0, Y0;              /* reference vertex, subpx */
+    fxl__plane_t q;              /* 1/w scaled so the largest vertex value is in [2^30, 2^31) */
+    fxl__plane_t z;              /* inv_w as given (u0.32), for the depth buffer */
+    fxl__plane_t a[FXL__NATTR];  /* attribute * q >> a_shift[i] */
+    int a_shift[FXL__NATTR];     /* per-triangle scale of each attribute plane */
+    uint8_t has_uv;              /* textured: planes u, v in use */
+    uint8_t has_color;           /* Gouraud: planes r, g, b in use */
+    uint8_t signed_u, signed_v;  /* clamp/border axes hold saturated int32 coordinates */
+    int64_t q_min;               /* smallest vertex q in plane units (clamp floor) */
+
+    int seg_log2;                /* log2 of the segment length; -1: whole span */
+    uint8_t affine;              /* q constant: no perspective */
+    uint8_t depth_test, depth_write;
+    uint8_t fast;                /* RGB565 repeat without key: the specialised loops */
+    uint8_t swap;                /* target stores byte-swapped RGB565 */
+
+    /* mip state */
+    int32_t lod_q8_tri;          /* per-triangle LOD incl. bias, clamped, q8 levels */
+    uint8_t lod_per_segment;
+    uint8_t nlevels;
+    fxl__level_t level[FXL_TEX_MAX_LEVELS];
+    uint8_t mip_linear;          /* blend two levels */
+    int32_t lod_max_q8;          /* (levels - 1) * 256 */
+
+    /* derived once per triangle for the span walk (fxl__span_setup) */
+    int np;                             /* planes in use: 2, 4 or 7 */
+    const fxl__plane_t *pl[FXL__NPLANES];
+    int64_t gpx[FXL__NPLANES];          /* per pixel along x, modular */
+    int64_t gpxN[FXL__NPLANES];         /* per full segment */
+
+    fxl_stats_t *stats;
+} fxl__tri_t;
+
+/* A run of pixels between two correction points. */
+typedef struct fxl__seg {
+    uint16_t *dst;          /* first pixel of the run in the target */
+    uint16_t *zb;           /* matching depth entry (NULL when no depth buffer) */
+    int32_t n;              /* pixels in the run, >= 1 */
+    uint32_t u, v;          /* texel coordinates at the first pixel, q16 of `level` */
+    int32_t du, dv;         /* per pixel, q16 */
+    uint32_t z;             /* inv_w at the first pixel, u0.32 */
+    int32_t dz;
+    uint32_t c[3];          /* Gouraud r5, g6, b5 in q16 */
+    int32_t dc[3];
+    const fxl__level_t *lvl; /* nearest (or lower, for LINEAR) level */
+    const fxl__level_t *lvl2;/* the next level for FXL_MIP_LINEAR, else NULL */
+    uint32_t u2, v2;         /* coordinates on lvl2 */
+    int32_t du2, dv2;
+    uint32_t lod_frac_q8;    /* weight of lvl2, 0..255 */
+} fxl__seg_t;
+
+/* Span loops (span.c). Each returns the number of pixels written. */
+typedef uint32_t (*fxl__seg_fn)(const fxl__tri_t *tri, const fxl__seg_t *seg);
+fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri);
+
+/* fxl_draw_triangle with the span loop replaced by `probe` when non-NULL:
+ * the measuring hook of the tests and the benchmark (they read the exact
+ * u, v every pixel receives). Not part of the public API. */
+fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
+                                     fxl_stats_t *stats, fxl__seg_fn probe);
+
+/* Setup (setup.c): planes and per-triangle scaling. Returns FXL_OK or an
+ * error; *culled set when the triangle has zero area. */
+fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
+                        const int32_t Y[3], int64_t det);
+int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y);
+
+/* Exact perspective division at one point: attribute plane value `av` over
+ * q plane value `qv` (> 0), scaled by 2^(shift) where shift = a_shift + the
+ * caller's output scale; returns the 64-bit result (modular when it does not
+ * fit). See span.c for the error bound. */
+typedef struct fxl__recip {
+    uint32_t r;    /* ~ 2^62 / qn */
+    int n;         /* qv ~ qn * 2^(32 - n) */
+} fxl__recip_t;
+/* fxl__recip() and fxl__persp() are inline in persp.h. */
+
+/* Edges (edge.c). */
+void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row);
+void fxl__edge_step(fxl__edge_t *e);
+
+/* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
+void fxl__span_setup(fxl__tri_t *tri);
+
+/* Rows (span.c): draw the span [xl, xr) of frame row `row` clipped to
+ * [cl, cr). */
+void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
+                    int32_t cl, int32_t cr);
+
+/* log2 of x > 0 in q8 (8 fraction bits), error < 2^-8 + table error. */
+int32_t fxl__log2_q8(uint64_t x);
+
+#endif

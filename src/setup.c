@@ -1,0 +1,203 @@
+/* setup.c - triangle setup: per-triangle scaling and attribute planes.
+ *
+ * Every interpolated quantity is a plane over the snapped vertices:
+ *   a(X, Y) = a0 + gx (X - X0) + gy (Y - Y0)
+ *   gx = ((a1 - a0)(Y2 - Y0) - (a2 - a0)(Y1 - Y0)) / det
+ *   gy = ((a2 - a0)(X1 - X0) - (a1 - a0)(X2 - X0)) / det
+ *   det = (X1 - X0)(Y2 - Y0) - (X2 - X0)(Y1 - Y0)
+ * The numerators are exact in int64 (|a| < 2^32, |dX|, |dY| <= 2^22 give
+ * < 2^55); the quotient is rounded to FXL__PF fraction bits by long division.
+ *
+ * Precision management (why the scaling): 1/w spans many octaves across a
+ * receding triangle, so one fixed format cannot hold it. q is 1/w shifted so
+ * the nearest vertex has q in [2^30, 2^31); u/w and v/w are shifted so the
+ * largest vertex value is below 2^30; texture coordinates are first rebased
+ * by whole periods (repeat) or pairs of periods (mirror), which the wrap
+ * makes invisible, so large but narrow UV ranges keep their precision.
+ */
+#include "raster_int.h"
+#include "texel.h"
+
+/* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, by long division
+ * in 16-bit chunks so no intermediate exceeds 2^63. */
+static int64_t div_frac(int64_t r, int64_t den, int bits)
+{
+    uint64_t ur = r < 0 ? (uint64_t)0 - (uint64_t)r : (uint64_t)r;
+    uint64_t d = (uint64_t)den;
+    uint64_t q = 0;
+
+    while (bits > 0) {
+        int c = bits > 16 ? 16 : bits;
+        ur <<= c;
+        q = (q << c) + ur / d;
+        ur %= d;
+        bits -= c;
+    }
+    if (2u * ur >= d)
+        q++;
+    return r < 0 ? -(int64_t)q : (int64_t)q;
+}
+
+/* N / den with FXL__PF fraction bits, den > 0. A quotient beyond 2^42 (a
+ * sliver thinner than 2^-20 px across a 2^32 attribute range) saturates;
+ * evaluation then clamps, see fxl__plane_at callers. */
+static int64_t gradient(int64_t N, int64_t den)
+{
+    const int64_t lim = (int64_t)1 << (62 - FXL__PF);
+    int64_t qi = N / den;
+    int64_t r = N - qi * den;
+
+    if (qi >= lim)
+        return INT64_MAX / 2;
+    if (qi <= -lim)
+        return -(INT64_MAX / 2);
+    return qi * ((int64_t)1 << FXL__PF) + div_frac(r, den, FXL__PF);
+}
+
+static void make_plane(fxl__plane_t *p, const int64_t a[3], const int32_t X[3], const int32_t Y[3],
+                       int64_t det)
+{
+    int64_t dX1 = (int64_t)X[1] - X[0], dY1 = (int64_t)Y[1] - Y[0];
+    int64_t dX2 = (int64_t)X[2] - X[0], dY2 = (int64_t)Y[2] - Y[0];
+    int64_t da1 = a[1] - a[0], da2 = a[2] - a[0];
+    int64_t nx = da1 * dY2 - da2 * dY1;
+    int64_t ny = da2 * dX1 - da1 * dX2;
+
+    if (det < 0) {
+        nx = -nx;
+        ny = -ny;
+        det = -det;
+    }
+    p->c = a[0] * ((int64_t)1 << FXL__PF);
+    p->gx = gradient(nx, det);
+    p->gy = gradient(ny, det);
+}
+
+int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y)
+{
+    /* Modular arithmetic: see raster_int.h. */
+    uint64_t v = (uint64_t)p->c + (uint64_t)p->gx * (uint64_t)((int64_t)X - X0) +
+                 (uint64_t)p->gy * (uint64_t)((int64_t)Y - Y0);
+    return (int64_t)v;
+}
+
+/* Smallest k >= 0 with |a_i| >> k < 2^bits for all three. */
+static int fit_shift(const int64_t a[3], int bits)
+{
+    uint64_t m = 0;
+    int i, k = 0;
+
+    for (i = 0; i < 3; i++) {
+        uint64_t v = a[i] < 0 ? (uint64_t)0 - (uint64_t)a[i] : (uint64_t)a[i];
+        if (v > m)
+            m = v;
+    }
+    while ((m >> k) >= ((uint64_t)1 << bits))
+        k++;
+    return k;
+}
+
+static int64_t shr_floor(int64_t x, int k)
+{
+    return x < 0 ? ~(int64_t)((uint64_t)~x >> k) : (int64_t)((uint64_t)x >> k);
+}
+
+/* Rebase three normalised q16 coordinates by whole periods (repeat) or
+ * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2). */
+static void rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
+{
+    int64_t mn = c[0];
+    int64_t base = 0;
+    int i;
+
+    if (c[1] < mn)
+        mn = c[1];
+    if (c[2] < mn)
+        mn = c[2];
+    if (wrap == FXL_WRAP_REPEAT)
+        base = shr_floor(mn, 16) * 65536;
+    else if (wrap == FXL_WRAP_MIRROR)
+        base = shr_floor(mn, 17) * 131072;
+    for (i = 0; i < 3; i++)
+        out[i] = (int64_t)c[i] - base;
+}
+
+/* Build the plane of attribute a_i * q_i, scaled below 2^30. */
+static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int64_t q[3],
+                        const int32_t X[3], const int32_t Y[3], int64_t det)
+{
+    int64_t s[3];
+    int i, k;
+
+    for (i = 0; i < 3; i++)
+        s[i] = a[i] * q[i];   /* |a| < 2^32, q < 2^31: |s| < 2^63 */
+    k = fit_shift(s, 30);
+    for (i = 0; i < 3; i++)
+        s[i] = shr_floor(s[i], k);
+    tri->a_shift[idx] = k;
+    make_plane(&tri->a[idx], s, X, Y, det);
+}
+
+fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
+                        const int32_t Y[3], int64_t det)
+{
+    int64_t q[3], z[3], a[3];
+    int i;
+
+    tri->X0 = X[0];
+    tri->Y0 = Y[0];
+
+    /* q: 1/w normalised so the largest vertex value is in [2^30, 2^31).
+     * Affine mode uses a constant q, which makes u = s / q linear. */
+    if (tri->affine) {
+        for (i = 0; i < 3; i++)
+            q[i] = (int64_t)1 << 30;
+    } else {
+        uint32_t mx = v[0].inv_w;
+        int sh;
+        if (v[1].inv_w > mx)
+            mx = v[1].inv_w;
+        if (v[2].inv_w > mx)
+            mx = v[2].inv_w;
+        sh = fxl_clz32(mx) - 1;   /* mx >= 1 (validated): sh in [-1, 30] */
+        for (i = 0; i < 3; i++) {
+            q[i] = sh >= 0 ? (int64_t)v[i].inv_w << sh : (int64_t)(v[i].inv_w >> 1);
+            if (q[i] < 1)
+                q[i] = 1;
+        }
+    }
+    make_plane(&tri->q, q, X, Y, det);
+    tri->q_min = q[0];
+    for (i = 1; i < 3; i++)
+        if (q[i] < tri->q_min)
+            tri->q_min = q[i];
+    tri->q_min *= (int64_t)1 << FXL__PF;
+
+    for (i = 0; i < 3; i++)
+        z[i] = (int64_t)v[i].inv_w;
+    make_plane(&tri->z, z, X, Y, det);
+
+    if (tri->has_uv) {
+        int32_t c[3];
+        for (i = 0; i < 3; i++)
+            c[i] = v[i].u;
+        rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a);
+        persp_plane(tri, FXL__AU, a, q, X, Y, det);
+        for (i = 0; i < 3; i++)
+            c[i] = v[i].v;
+        rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
+        persp_plane(tri, FXL__AV, a, q, X, Y, det);
+    }
+    if (tri->has_color) {
+        /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
+        static const int sh[3] = {11, 5, 0};
+        static const uint32_t mask[3] = {31, 63, 31};
+        int ch;
+        for (ch = 0; ch < 3; ch++) {
+            for (i = 0; i < 3; i++)
+                a[i] = (int64_t)((v[i].color >> sh[ch]) & mask[ch]) << 16;
+            persp_plane(tri, FXL__AR + ch, a, q, X, Y, det);
+        }
+    }
+    return FXL_OK;
+}

@@ -1,0 +1,514 @@
+/* span.c - spans: correction points, level selection and the pixel loops.
+ *
+ * A span [xl, xr) of one row is cut into segments of N = 2^seg_log2 pixels
+ * anchored at xl (not at the clip edge, so a pixel's value never depends on
+ * the clip rectangle: bands and full frames agree bit for bit). At each
+ * segment boundary u, v (and Gouraud colour, depth) are computed exactly
+ * from the planes; inside a segment they are stepped linearly. The last
+ * segment ends on the last pixel of the span, which is inside the triangle,
+ * so no correction point is ever extrapolated outside it.
+ */
+#include "raster_int.h"
+#include "texel.h"
+#include "persp.h"
+
+/* ---- RGB565 arithmetic without unpacking ---------------------------------
+ * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
+ * 11..15, b in 0..4) leaving >= 5 zero bits above each channel, so one
+ * 32-bit multiply by a 5-bit weight (<= 32) scales all three at once:
+ * 31 * 32 + 16 < 2^10 and 63 * 32 + 16 < 2^11 never reach the next lane. */
+static inline uint32_t expand565(uint32_t c)
+{
+    return (c | (c << 16)) & 0x07E0F81Fu;
+}
+
+static inline uint32_t compact565(uint32_t x)
+{
+    x &= 0x07E0F81Fu;
+    return (x | (x >> 16)) & 0xFFFFu;
+}
+
+/* a + (b - a) * f / 32 per channel, rounded to nearest (0x02008010 adds
+ * 16 to every lane), f in 0..31. */
+static inline uint32_t lerp565x(uint32_t a, uint32_t b, uint32_t f)
+{
+    return ((a * (32u - f) + b * f + 0x02008010u) >> 5) & 0x07E0F81Fu;
+}
+
+static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t fu,
+                               uint32_t fv)
+{
+    uint32_t top = lerp565x(expand565(c00), expand565(c10), fu);
+    uint32_t bot = lerp565x(expand565(c01), expand565(c11), fu);
+    return compact565(lerp565x(top, bot, fv));
+}
+
+/* ---- specialised loops ----------------------------------------------------- */
+#define FXL_T_NAME seg_point
+#define FXL_T_BILINEAR 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_NAME seg_point_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_NAME seg_point_z
+#define FXL_T_BILINEAR 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_NAME seg_point_z_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#if FXL_HAVE_BILINEAR
+#define FXL_T_NAME seg_bilin
+#define FXL_T_BILINEAR 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_NAME seg_bilin_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_NAME seg_bilin_z
+#define FXL_T_BILINEAR 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_NAME seg_bilin_z_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#endif
+
+#if FXL_HAVE_GENERIC
+/* ---- the generic loop: any format, wrap, key, mip blend, texenv, shade --- */
+
+/* Integer texel coordinate of a q16 value: repeat/mirror axes are modular
+ * uint32, clamp/border axes hold a saturated int32 (floor shift). */
+static int32_t texel_coord(uint32_t u, int is_signed)
+{
+    if (is_signed) {
+        int32_t s = u <= INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1;
+        return s < 0 ? -(int32_t)(((uint32_t)~s) >> 16) - 1 : s >> 16;
+    }
+    return (int32_t)(u >> 16);
+}
+
+static uint32_t fetch(const fxl__tri_t *tri, const fxl__level_t *lv, int32_t x, int32_t y, int *key)
+{
+    const fxl_texture_t *t = tri->tex;
+    int32_t wx = fxl__wrap(x, lv->log2_w, (fxl_wrap_t)t->wrap_u);
+    int32_t wy = fxl__wrap(y, lv->log2_h, (fxl_wrap_t)t->wrap_v);
+
+    if (wx < 0 || wy < 0) {
+        *key = 0;
+        return t->border;
+    }
+    return fxl__texel_rgb565(t, lv->texels, ((uint32_t)wy << lv->log2_w) + (uint32_t)wx, key);
+}
+
+/* Filtered texel of one level; returns 0x10000 for "transparent". */
+static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u, uint32_t v)
+{
+    int key;
+#if FXL_HAVE_BILINEAR
+    if (tri->draw->filter == FXL_FILTER_BILINEAR) {
+        uint32_t uu = u - 0x8000u, vv = v - 0x8000u;
+        int32_t x0 = texel_coord(uu, tri->signed_u), y0 = texel_coord(vv, tri->signed_v);
+        uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
+        uint32_t c[4];
+        int k[4], i, nearest = (fu >= 16u ? 1 : 0) + (fv >= 16u ? 2 : 0);
+
+        /* x0 + 1 cannot overflow: |x0| <= 2^15 after the q16 shift. */
+        c[0] = fetch(tri, lv, x0, y0, &k[0]);
+        c[1] = fetch(tri, lv, x0 + 1, y0, &k[1]);
+        c[2] = fetch(tri, lv, x0, y0 + 1, &k[2]);
+        c[3] = fetch(tri, lv, x0 + 1, y0 + 1, &k[3]);
+        if (k[nearest])
+            return 0x10000u;
+        /* Key texels never bleed: they take the nearest (opaque) colour. */
+        for (i = 0; i < 4; i++)
+            if (k[i])
+                c[i] = c[nearest];
+        return fxl__bilerp565(c[0], c[1], c[2], c[3], fu, fv);
+    }
+#endif
+    {
+        uint32_t c = fetch(tri, lv, texel_coord(u, tri->signed_u), texel_coord(v, tri->signed_v), &key);
+        return key ? 0x10000u : c;
+    }
+}
+
+/* Per-channel t * (c + 1) >> bits: white leaves the texel unchanged. */
+static uint32_t modulate565(uint32_t t, uint32_t c)
+{
+    uint32_t r = (((t >> 11) & 31u) * (((c >> 11) & 31u) + 1u)) >> 5;
+    uint32_t g = (((t >> 5) & 63u) * (((c >> 5) & 63u) + 1u)) >> 6;
+    uint32_t b = ((t & 31u) * ((c & 31u) + 1u)) >> 5;
+    return (r << 11) | (g << 5) | b;
+}
+
+static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    const fxl_draw_t *d = tri->draw;
+    uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;
+    uint32_t c0 = s->c[0], c1 = s->c[1], c2 = s->c[2];
+    uint32_t written = 0;
+    int32_t i;
+    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write;
+
+    for (i = 0; i < s->n; i++) {
+        uint32_t zz = z >> 16, out, col;
+        int draw = 1;
+
+        if (ztest && zz <= s->zb[i])
+            draw = 0;
+        if (draw) {
+            col = tri->has_color ? (((c0 >> 16) << 11) | ((c1 >> 16) << 5) | (c2 >> 16)) : d->color;
+            if (tri->has_uv) {
+                uint32_t t = sample(tri, s->lvl, u, v);
+                if (s->lvl2 && t != 0x10000u && s->lod_frac_q8 != 0u) {
+                    uint32_t t2 = sample(tri, s->lvl2, u2, v2);
+                    if (t2 != 0x10000u)
+                        t = compact565(lerp565x(expand565(t), expand565(t2), s->lod_frac_q8 >> 3));
+                }
+                if (t == 0x10000u)
+                    out = d->texenv == FXL_TEXENV_DECAL ? col : 0x10000u;
+                else if (d->texenv == FXL_TEXENV_MODULATE)
+                    out = modulate565(t, col);
+                else
+                    out = t;
+            } else {
+                out = col;
+            }
+            if (out != 0x10000u) {
+                s->dst[i] = (uint16_t)(tri->swap ? ((out >> 8) | (out << 8)) : out);
+                if (zwrite)
+                    s->zb[i] = (uint16_t)zz;
+                written++;
+            }
+        }
+        u += (uint32_t)s->du;
+        v += (uint32_t)s->dv;
+        u2 += (uint32_t)s->du2;
+        v2 += (uint32_t)s->dv2;
+        z += (uint32_t)s->dz;
+        c0 += (uint32_t)s->dc[0];
+        c1 += (uint32_t)s->dc[1];
+        c2 += (uint32_t)s->dc[2];
+    }
+    return written;
+}
+#endif /* FXL_HAVE_GENERIC */
+
+fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
+{
+    const fxl_draw_t *d = tri->draw;
+    const fxl_texture_t *t = tri->tex;
+    int zmode = tri->target->depth && (tri->depth_test || tri->depth_write);
+    int fast = t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT &&
+               t->wrap_v == FXL_WRAP_REPEAT && !(t->flags & FXL_TEXF_KEY) &&
+               d->texenv == FXL_TEXENV_REPLACE && !tri->mip_linear && t->log2_w + t->log2_h <= 16 &&
+               (!zmode || (tri->depth_test && tri->depth_write));
+
+    if (fast) {
+#if FXL_HAVE_BILINEAR
+        if (d->filter == FXL_FILTER_BILINEAR) {
+#if FXL_HAVE_DEPTH
+            if (zmode)
+                return tri->swap ? seg_bilin_z_swap : seg_bilin_z;
+#endif
+            return tri->swap ? seg_bilin_swap : seg_bilin;
+        }
+#endif
+#if FXL_HAVE_DEPTH
+        if (zmode)
+            return tri->swap ? seg_point_z_swap : seg_point_z;
+#endif
+        return tri->swap ? seg_point_swap : seg_point;
+    }
+#if FXL_HAVE_GENERIC
+    return seg_generic;
+#else
+    return 0;
+#endif
+}
+
+/* ---- correction points ------------------------------------------------------ */
+
+#define PQ FXL__PQ
+#define PZ FXL__PZ
+#define PA FXL__PA
+#define NPLANES FXL__NPLANES
+
+typedef struct point {
+    uint32_t a[FXL__NATTR];  /* u, v: level-0 texel q16; colours: channel q16 */
+    uint32_t z;              /* inv_w, u0.32 */
+} point_t;
+
+static inline uint32_t sat_u32(int64_t x)
+{
+    return x < 0 ? 0u : (x > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)x);
+}
+
+/* The saturated int32 range, stored as its two's-complement bit pattern. */
+static inline uint32_t sat_i32_bits(int64_t x)
+{
+    if (x > INT32_MAX)
+        x = INT32_MAX;
+    if (x < INT32_MIN)
+        x = INT32_MIN;
+    return (uint32_t)(x < 0 ? (uint64_t)x + ((uint64_t)1 << 32) : (uint64_t)x);
+}
+
+static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], point_t *pt)
+{
+    fxl__recip_t rc;
+    int64_t q = pv[PQ];
+    int i;
+
+    pt->z = sat_u32(pv[PZ] >> FXL__PF);    /* pv[PZ] >= 0 inside the triangle */
+    if (tri->np <= PA)
+        return;
+    /* Inside the triangle q >= q_min; the clamp keeps a rounding overshoot
+     * at a sliver's tip from reaching zero. */
+    if (q < tri->q_min)
+        q = tri->q_min;
+    fxl__recip(q, &rc);
+    if (tri->stats)
+        tri->stats->divisions++;
+    if (tri->has_uv) {
+        int64_t u = fxl__persp(pv[PA + FXL__AU], &rc, tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
+        int64_t v = fxl__persp(pv[PA + FXL__AV], &rc, tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
+        /* Repeat/mirror: modulo 2^32 is exact (the period divides it). */
+        pt->a[FXL__AU] = tri->signed_u ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
+        pt->a[FXL__AV] = tri->signed_v ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
+    }
+    if (tri->has_color) {
+        static const int64_t cmax[3] = {31 << 16, 63 << 16, 31 << 16};
+        for (i = 0; i < 3; i++) {
+            int64_t c = fxl__persp(pv[PA + FXL__AR + i], &rc, tri->a_shift[FXL__AR + i]);
+            pt->a[FXL__AR + i] = (uint32_t)(c < 0 ? 0 : (c > cmax[i] ? cmax[i] : c));
+        }
+    }
+}
+
+void fxl__span_setup(fxl__tri_t *tri)
+{
+    int i, k = tri->seg_log2 < 0 ? 0 : tri->seg_log2;
+    tri->pl[PQ] = &tri->q;
+    tri->pl[PZ] = &tri->z;
+    for (i = 0; i < FXL__NATTR; i++)
+        tri->pl[PA + i] = &tri->a[i];
+    tri->np = tri->has_color ? NPLANES : (tri->has_uv ? PA + 2 : PA);
+    for (i = 0; i < NPLANES; i++) {
+        uint64_t g = (uint64_t)tri->pl[i]->gx * FXL__ONE;   /* per pixel, modular */
+        tri->gpx[i] = (int64_t)g;
+        tri->gpxN[i] = (int64_t)(g << k);
+    }
+}
+
+/* b - a of two coordinates as a signed step numerator. */
+static inline int64_t coord_diff(uint32_t b, uint32_t a, int is_signed)
+{
+    if (is_signed) {
+        int64_t sb = b <= INT32_MAX ? (int64_t)b : (int64_t)b - ((int64_t)1 << 32);
+        int64_t sa = a <= INT32_MAX ? (int64_t)a : (int64_t)a - ((int64_t)1 << 32);
+        return sb - sa;
+    }
+    {
+        uint32_t d = b - a;   /* modular: the short way round */
+        return d <= INT32_MAX ? (int64_t)d : (int64_t)d - ((int64_t)1 << 32);
+    }
+}
+
+/* diff / 2^k truncated toward zero (stepping never passes the endpoint). */
+static inline int32_t step_pow2(int64_t diff, int k)
+{
+    int64_t s = diff < 0 ? -(int64_t)((uint64_t)-diff >> k) : (int64_t)((uint64_t)diff >> k);
+    return s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
+}
+
+static inline int32_t step_of(int64_t diff, int32_t div)
+{
+    int64_t s;
+    if (div <= 0)
+        return 0;
+    s = diff / div;   /* truncation: stepping never overshoots the endpoint */
+    return s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
+}
+
+static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
+{
+    if (is_signed) {
+        int32_t s = c <= INT32_MAX ? (int32_t)c : -(int32_t)(~c) - 1;
+        s = s < 0 ? -(int32_t)(((uint32_t)~s) >> level) - 1 : s >> level;
+        return (uint32_t)(s < 0 ? (uint64_t)(int64_t)s + ((uint64_t)1 << 32) : (uint64_t)s);
+    }
+    return c >> level;
+}
+
+static inline int32_t shift_step(int32_t d, int level)
+{
+    return d < 0 ? -(int32_t)(((uint32_t)(-(d + 1))) >> level) - 1 : d >> level;
+}
+
+#if FXL_HAVE_MIPMAP
+/* LOD in q8 from texel-space derivatives (level-0 q16 texels per pixel):
+ * log2 of the longer of (du/dx, dv/dx) and (du/dy, dv/dy). */
+static int32_t lod_from_derivs(int64_t dux, int64_t dvx, int64_t duy, int64_t dvy)
+{
+    /* |d| < 2^32: square in 2^-32 texel^2 units after dropping 2 bits. */
+    uint64_t ax = (uint64_t)(dux < 0 ? -dux : dux) >> 2, bx = (uint64_t)(dvx < 0 ? -dvx : dvx) >> 2;
+    uint64_t ay = (uint64_t)(duy < 0 ? -duy : duy) >> 2, by = (uint64_t)(dvy < 0 ? -dvy : dvy) >> 2;
+    uint64_t lx = ax * ax + bx * bx, ly = ay * ay + by * by;
+    uint64_t l2 = lx > ly ? lx : ly;
+    if (l2 == 0)
+        return INT32_MIN / 4;
+    /* l2 is (length * 2^14)^2: log2(length) = (log2(l2) - 28) / 2. */
+    return (fxl__log2_q8(l2) - 28 * 256) / 2;
+}
+#endif
+
+void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
+                    int32_t cl, int32_t cr)
+{
+    int64_t pv[NPLANES];
+    const int32_t Yc = row * FXL__ONE + FXL__HALF;
+    const fxl_target_t *tg = tri->target;
+    const int np = tri->np;
+    /* Affine spans are cut every FXL_PERSP_MAX pixels too (see raster.c). */
+    const int k = tri->seg_log2;
+    const int32_t N = (int32_t)1 << k;
+    int32_t x, i;
+    point_t p0, p1;
+    fxl__seg_t seg;
+    uint32_t written = 0;
+
+    x = xl + ((cl - xl) >> k << k);      /* first segment that reaches the clip */
+    for (i = 0; i < np; i++)
+        pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
+    correct(tri, pv, &p0);
+
+    seg.lvl = tri->has_uv ? &tri->level[0] : 0;
+    seg.lvl2 = 0;
+    seg.u2 = seg.v2 = 0;
+    seg.du2 = seg.dv2 = 0;
+    seg.lod_frac_q8 = 0;
+    seg.c[0] = seg.c[1] = seg.c[2] = 0;
+    seg.dc[0] = seg.dc[1] = seg.dc[2] = 0;
+    seg.u = seg.v = 0;
+    seg.du = seg.dv = 0;
+
+    while (x < cr) {
+        int32_t n, div, a, b, off;
+        int64_t du0 = 0, dv0 = 0;
+        int level = 0, full = xr - x > N;
+
+        if (full) {
+            n = N;
+            div = N;
+            for (i = 0; i < np; i++)
+                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpxN[i]);
+        } else {
+            n = xr - x;
+            div = n - 1;   /* the last segment ends on the last pixel */
+            for (i = 0; i < np; i++)
+                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div);
+        }
+        correct(tri, pv, &p1);
+#define STEP(d) (full ? step_pow2((d), k) : step_of((d), div))
+
+        a = x > cl ? x : cl;
+        b = x + n < cr ? x + n : cr;
+        off = a - x;
+        if (tri->has_uv) {
+            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], tri->signed_u));
+            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], tri->signed_v));
+#if FXL_HAVE_MIPMAP
+            if (tri->nlevels > 1) {
+                int32_t lod = tri->lod_q8_tri;
+                if (tri->lod_per_segment) {
+                    /* du/dy from an exact division one row down; du/dx is the
+                     * segment's own step (for a one-pixel segment, one pixel on). */
+                    int64_t qv[NPLANES];
+                    point_t py;
+                    int64_t dux = du0, dvx = dv0;
+                    for (i = 0; i < PA + 2; i++)
+                        qv[i] = (int64_t)((uint64_t)pv[i] - (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div +
+                                          (uint64_t)tri->pl[i]->gy * FXL__ONE);
+                    correct(tri, qv, &py);
+                    if (div == 0) {
+                        point_t px;
+                        for (i = 0; i < PA + 2; i++)
+                            qv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i]);
+                        correct(tri, qv, &px);
+                        dux = coord_diff(px.a[FXL__AU], p0.a[FXL__AU], tri->signed_u);
+                        dvx = coord_diff(px.a[FXL__AV], p0.a[FXL__AV], tri->signed_v);
+                    }
+                    lod = lod_from_derivs(dux, dvx,
+                                          coord_diff(py.a[FXL__AU], p0.a[FXL__AU], tri->signed_u),
+                                          coord_diff(py.a[FXL__AV], p0.a[FXL__AV], tri->signed_v)) +
+                          tri->draw->lod_bias_q8;
+                    if (lod < 0)
+                        lod = 0;
+                    if (lod > tri->lod_max_q8)
+                        lod = tri->lod_max_q8;
+                }
+                if (tri->mip_linear) {
+                    level = lod >> 8;
+                    seg.lod_frac_q8 = (uint32_t)lod & 255u;
+                    seg.lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
+                } else {
+                    level = (lod + 128) >> 8;
+                }
+            }
+#endif
+            seg.lvl = &tri->level[level];
+            seg.du = shift_step((int32_t)du0, level);
+            seg.dv = shift_step((int32_t)dv0, level);
+            seg.u = shift_coord(p0.a[FXL__AU], level, tri->signed_u) + (uint32_t)seg.du * (uint32_t)off;
+            seg.v = shift_coord(p0.a[FXL__AV], level, tri->signed_v) + (uint32_t)seg.dv * (uint32_t)off;
+            if (seg.lvl2) {
+                seg.du2 = shift_step((int32_t)du0, level + 1);
+                seg.dv2 = shift_step((int32_t)dv0, level + 1);
+                seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, tri->signed_u) + (uint32_t)seg.du2 * (uint32_t)off;
+                seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, tri->signed_v) + (uint32_t)seg.dv2 * (uint32_t)off;
+            }
+        }
+        if (tri->has_color) {
+            for (i = 0; i < 3; i++) {
+                seg.dc[i] = STEP((int64_t)p1.a[FXL__AR + i] - (int64_t)p0.a[FXL__AR + i]);
+                seg.c[i] = p0.a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
+            }
+        }
+        seg.dz = STEP((int64_t)p1.z - (int64_t)p0.z);
+#undef STEP
+        seg.z = p0.z + (uint32_t)seg.dz * (uint32_t)off;
+
+        if (a < b) {
+            int32_t idx = (row - tg->origin_y) * tg->stride + (a - tg->origin_x);
+            seg.dst = tg->pixels + idx;
+            seg.zb = tg->depth ? tg->depth + idx : 0;
+            seg.n = b - a;
+            written += fn(tri, &seg);
+        }
+        x += n;
+        p0 = p1;
+    }
+    if (tri->stats) {
+        tri->stats->pixels += written;
+        tri->stats->spans++;
+    }
+}

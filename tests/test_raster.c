@@ -1,0 +1,719 @@
+/* test_raster.c - coverage, fill rule, watertightness, clipping, bands,
+ * perspective accuracy and API errors of fxl_draw_triangle. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "unity.h"
+#include "fixel/fixel.h"
+#include "../src/raster_int.h"
+
+#define FXL_TEST_PI 3.14159265358979323846
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* ---- helpers ------------------------------------------------------------ */
+
+static uint32_t lcg_state = 12345u;
+static uint32_t rnd(void)
+{
+    lcg_state = lcg_state * 1664525u + 1013904223u;
+    return lcg_state >> 8;
+}
+static int32_t rnd_range(int32_t lo, int32_t hi) /* inclusive */
+{
+    return lo + (int32_t)(rnd() % (uint32_t)(hi - lo + 1));
+}
+
+#define W 64
+#define H 48
+
+/* Independent exact coverage: edge functions on the snapped grid, pixel
+ * centres at 16 i + 8. With det > 0 (clockwise on a y-down screen) the
+ * interior has E > 0 for every edge; a centre with E == 0 counts for a top
+ * edge (dy == 0, dx > 0: interior below) or a left edge (dy < 0: interior to
+ * the right). */
+static int ref_covered(const fxl_vertex_t v[3], int32_t px, int32_t py)
+{
+    int64_t X[3], Y[3], det;
+    int64_t cx = (int64_t)px * FXL__ONE + FXL__HALF, cy = (int64_t)py * FXL__ONE + FXL__HALF;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(v[i].x);
+        Y[i] = fxl_snap_subpx(v[i].y);
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    if (det == 0)
+        return 0;
+    if (det < 0) {
+        int64_t t = X[1]; X[1] = X[2]; X[2] = t;
+        t = Y[1]; Y[1] = Y[2]; Y[2] = t;
+    }
+    for (i = 0; i < 3; i++) {
+        int j = (i + 1) % 3;
+        int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+        int64_t e = dx * (cy - Y[i]) - dy * (cx - X[i]);
+        if (e < 0)
+            return 0;
+        if (e == 0 && !((dy == 0 && dx > 0) || dy < 0))
+            return 0;
+    }
+    return 1;
+}
+
+/* Probe: counts writes per pixel and records u, v (level-0 q16 texels). */
+static uint16_t *probe_base;
+static int32_t probe_stride;
+static uint8_t probe_count[1024 * 512];
+static double probe_u[1024 * 512], probe_v[1024 * 512];
+static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    int32_t i;
+    (void)tri;
+    for (i = 0; i < s->n; i++) {
+        size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
+        probe_count[k]++;
+        probe_u[k] = (double)(uint32_t)(s->u + (uint32_t)s->du * (uint32_t)i) / 65536.0;
+        probe_v[k] = (double)(uint32_t)(s->v + (uint32_t)s->dv * (uint32_t)i) / 65536.0;
+    }
+    return (uint32_t)s->n;
+}
+
+static fxl_vertex_t vtx(double x, double y, double inv_w, double u, double v)
+{
+    fxl_vertex_t r;
+    r.x = (fxl_q16_t)lround(x * 65536.0);
+    r.y = (fxl_q16_t)lround(y * 65536.0);
+    r.inv_w = (uint32_t)llround(inv_w * 4294967295.0);
+    if (r.inv_w == 0)
+        r.inv_w = 1;
+    r.u = (fxl_q16_t)lround(u * 65536.0);
+    r.v = (fxl_q16_t)lround(v * 65536.0);
+    r.color = 0xFFFF;
+    return r;
+}
+
+static uint16_t pix[W * H];
+
+static void flat_draw(fxl_draw_t *d)
+{
+    fxl_draw_defaults(d);
+    d->depth = 0;
+    d->color = 0xFFFF;
+}
+
+/* Draw v on a cleared W x H target and compare with ref_covered. Returns
+ * the number of mismatches and reports the first. */
+static int coverage_mismatches(const fxl_vertex_t v[3], char *msg, size_t msglen)
+{
+    fxl_target_t t;
+    fxl_draw_t d;
+    int32_t x, y;
+    int bad = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pix, W, H, W, FXL_PIXFMT_RGB565));
+    fxl_target_clear(&t, 0);
+    flat_draw(&d);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            int got = pix[y * W + x] != 0, want = ref_covered(v, x, y);
+            if (got != want) {
+                if (!bad)
+                    snprintf(msg, msglen, "pixel (%d,%d) drawn=%d exact=%d; tri (%d,%d) (%d,%d) (%d,%d) q16",
+                             (int)x, (int)y, got, want, (int)v[0].x, (int)v[0].y, (int)v[1].x, (int)v[1].y,
+                             (int)v[2].x, (int)v[2].y);
+                bad++;
+            }
+        }
+    return bad;
+}
+
+/* ---- fill rule ----------------------------------------------------------- */
+
+void test_fill_rule_matches_exact_reference_on_random_triangles(void)
+{
+    char msg[200] = "";
+    int k, total = 0;
+    lcg_state = 1u;
+    for (k = 0; k < 3000; k++) {
+        fxl_vertex_t v[3];
+        int i;
+        for (i = 0; i < 3; i++) {
+            /* Half the triangles on a coarse 1/2-px lattice, so centres fall
+             * exactly on edges and vertices; the rest anywhere, off-target too. */
+            if (k & 1)
+                v[i] = vtx(rnd_range(-8, 2 * W + 8) * 0.5, rnd_range(-8, 2 * H + 8) * 0.5, 0.5, 0, 0);
+            else
+                v[i] = vtx(rnd_range(-200000, (W + 3) * 65536) / 65536.0,
+                           rnd_range(-200000, (H + 3) * 65536) / 65536.0, 0.5, 0, 0);
+        }
+        total += coverage_mismatches(v, msg, sizeof msg);
+        if (total)
+            break;
+    }
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, total, msg);
+}
+
+void test_fill_rule_long_edges_do_not_drift(void)
+{
+    /* A 16.16 slope accumulated over many rows drifts by up to rows * 2^-16
+     * px; this edge puts centres within 1/16 px * k of the line on purpose.
+     * Tall skinny triangles over the full height with irrational-ish slopes. */
+    char msg[200] = "";
+    int k, total = 0;
+    lcg_state = 99u;
+    for (k = 0; k < 2000 && !total; k++) {
+        fxl_vertex_t v[3];
+        double x0 = rnd_range(0, W * 16) / 16.0, x1 = rnd_range(0, W * 16) / 16.0;
+        v[0] = vtx(x0, -0.5 + rnd_range(0, 15) / 16.0, 0.5, 0, 0);
+        v[1] = vtx(x1, H + 0.5, 0.5, 0, 0);
+        v[2] = vtx(rnd_range(0, W * 16) / 16.0, rnd_range(0, H * 16) / 16.0, 0.5, 0, 0);
+        total += coverage_mismatches(v, msg, sizeof msg);
+    }
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, total, msg);
+}
+
+/* Centres exactly on each of the eight edge directions. Each case: a
+ * triangle and one pixel whose centre lies on the named edge, drawn or not. */
+void test_fill_rule_centres_on_edges_all_eight_orientations(void)
+{
+    struct { double x[3], y[3]; int px, py, drawn; const char *what; } c[] = {
+        /* horizontal top edge (y = 2.5), triangle below: drawn */
+        {{1, 9, 5}, {2.5, 2.5, 8}, 4, 2, 1, "top edge"},
+        /* horizontal bottom edge (y = 6.5), triangle above: not drawn */
+        {{5, 9, 1}, {1, 6.5, 6.5}, 4, 6, 0, "bottom edge"},
+        /* vertical left edge x = 2.5: drawn */
+        {{2.5, 9, 2.5}, {1, 5, 9}, 2, 5, 1, "left vertical"},
+        /* vertical right edge x = 7.5: not drawn */
+        {{7.5, 7.5, 1}, {1, 9, 5}, 7, 5, 0, "right vertical"},
+        /* left edge going down-right: from (1.5,0.5) to (5.5,4.5), centre (3.5,2.5) */
+        {{1.5, 5.5, 9.5}, {0.5, 4.5, 0.5}, 3, 2, 1, "left diagonal \\"},
+        /* left edge going down-left: (5.5,0.5)-(1.5,4.5), centre (3.5,2.5), interior to the right */
+        {{5.5, 1.5, 9.5}, {0.5, 4.5, 4.5}, 3, 2, 1, "left diagonal /"},
+        /* right edge going down-right: (1.5,0.5)-(5.5,4.5), interior to the left */
+        {{1.5, 5.5, 0.5}, {0.5, 4.5, 4.5}, 3, 2, 0, "right diagonal \\"},
+        /* right edge going down-left: (5.5,0.5)-(1.5,4.5), interior to the left */
+        {{5.5, 1.5, 0.5}, {0.5, 4.5, 0.5}, 3, 2, 0, "right diagonal /"},
+    };
+    size_t i;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        fxl_vertex_t v[3];
+        char msg[200];
+        int k, winding;
+        for (winding = 0; winding < 2; winding++) {
+            for (k = 0; k < 3; k++) {
+                int j = winding ? 2 - k : k;
+                v[k] = vtx(c[i].x[j], c[i].y[j], 0.5, 0, 0);
+            }
+            TEST_ASSERT_EQUAL_INT_MESSAGE(c[i].drawn, ref_covered(v, c[i].px, c[i].py), c[i].what);
+            snprintf(msg, sizeof msg, "%s (winding %d)", c[i].what, winding);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(0, coverage_mismatches(v, msg, sizeof msg), msg);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(c[i].drawn, pix[c[i].py * W + c[i].px] != 0, msg);
+        }
+    }
+}
+
+/* ---- watertightness --------------------------------------------------------- */
+
+static void probe_target(fxl_target_t *t, uint16_t *buf, int32_t w, int32_t h)
+{
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(t, buf, w, h, w, FXL_PIXFMT_RGB565));
+    probe_base = buf;
+    probe_stride = w;
+    memset(probe_count, 0, sizeof probe_count);
+}
+
+/* Draw a jittered grid mesh (shared vertices) covering [x0,x1]x[y0,y1] and
+ * check: no pixel twice, and every pixel the exact rule covers, once. */
+static void check_mesh(int nx, int ny, double jitter, uint32_t seed)
+{
+    static uint16_t buf[W * H];
+    static uint8_t ref[W * H];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_vertex_t grid[40][40];
+    int i, j, x, y;
+    lcg_state = seed;
+    for (j = 0; j <= ny; j++)
+        for (i = 0; i <= nx; i++) {
+            double gx = 2.0 + (W - 4.0) * i / nx, gy = 2.0 + (H - 4.0) * j / ny;
+            /* jitter is a fraction of the cell (0.3 keeps every quad convex, so the mesh never folds) */
+            if (i > 0 && i < nx)
+                gx += jitter * (W - 4.0) / nx * ((rnd() % 2001) / 1000.0 - 1.0);
+            if (j > 0 && j < ny)
+                gy += jitter * (H - 4.0) / ny * ((rnd() % 2001) / 1000.0 - 1.0);
+            grid[j][i] = vtx(gx, gy, 0.5, 0, 0);
+        }
+    probe_target(&t, buf, W, H);
+    memset(ref, 0, sizeof ref);
+    flat_draw(&d);
+    for (j = 0; j < ny; j++)
+        for (i = 0; i < nx; i++) {
+            fxl_vertex_t a[3] = {grid[j][i], grid[j][i + 1], grid[j + 1][i]};
+            fxl_vertex_t b[3] = {grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]};
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, a, NULL, probe_seg));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, b, NULL, probe_seg));
+            for (y = 0; y < H; y++)
+                for (x = 0; x < W; x++)
+                    ref[y * W + x] = (uint8_t)(ref[y * W + x] + ref_covered(a, x, y) + ref_covered(b, x, y));
+        }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            char msg[120];
+            int inside = x >= 3 && x < W - 3 && y >= 3 && y < H - 3;  /* strictly inside the mesh */
+            snprintf(msg, sizeof msg, "pixel (%d,%d) drawn %d times, exact %d (mesh %dx%d seed %u)", x, y,
+                     probe_count[y * W + x], ref[y * W + x], nx, ny, (unsigned)seed);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(ref[y * W + x], probe_count[y * W + x], msg);
+            TEST_ASSERT_TRUE_MESSAGE(probe_count[y * W + x] <= 1, msg);
+            if (inside)
+                TEST_ASSERT_EQUAL_INT_MESSAGE(1, probe_count[y * W + x], msg);
+        }
+}
+
+void test_watertight_grid_mesh_each_pixel_once(void)
+{
+    check_mesh(8, 6, 0.0, 1u);
+    check_mesh(30, 22, 0.0, 2u);
+}
+
+void test_watertight_random_jittered_meshes_each_pixel_once(void)
+{
+    uint32_t s;
+    for (s = 0; s < 300; s++)
+        check_mesh(3 + (int)(s % 20), 2 + (int)((s * 7) % 15), 0.3, 1000u + s);
+}
+
+void test_watertight_fan_each_pixel_once(void)
+{
+    static uint16_t buf[W * H];
+    fxl_target_t t;
+    fxl_draw_t d;
+    const int n = 37;
+    int i, x, y, total = 0;
+    double cx = 31.3, cy = 23.7, r = 60.0;
+    probe_target(&t, buf, W, H);
+    flat_draw(&d);
+    for (i = 0; i < n; i++) {
+        double a0 = 2 * FXL_TEST_PI * i / n, a1 = 2 * FXL_TEST_PI * (i + 1) / n;
+        fxl_vertex_t v[3];
+        v[0] = vtx(cx, cy, 0.5, 0, 0);
+        v[1] = vtx(cx + r * cos(a0), cy + r * sin(a0), 0.5, 0, 0);
+        v[2] = vtx(cx + r * cos(a1), cy + r * sin(a1), 0.5, 0, 0);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+    }
+    /* The fan's radius exceeds the target: every pixel exactly once. */
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            if (probe_count[y * W + x] != 1) {
+                char msg[80];
+                snprintf(msg, sizeof msg, "pixel (%d,%d) drawn %d times", x, y, probe_count[y * W + x]);
+                TEST_FAIL_MESSAGE(msg);
+            }
+    TEST_ASSERT_EQUAL_INT(0, total);
+}
+
+/* ---- clipping, bands, canaries ---------------------------------------------- */
+
+static const uint16_t texels64[64 * 64] = {0};
+static uint16_t tex_data[64 * 64];
+
+static void make_texture(fxl_texture_t *tex)
+{
+    int i;
+    for (i = 0; i < 64 * 64; i++)
+        tex_data[i] = (uint16_t)(i * 2654435761u >> 16);
+    (void)texels64;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(tex, tex_data, 64, 64, FXL_TEXFMT_RGB565, 1));
+}
+
+static void random_tri(fxl_vertex_t v[3], double spread)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        v[i] = vtx((rnd() % 20001) / 10000.0 * spread - spread / 2 + W / 2,
+                   (rnd() % 20001) / 10000.0 * spread - spread / 2 + H / 2, 0.02 + (rnd() % 1000) / 1000.0,
+                   ((int)(rnd() % 2001) - 1000) / 100.0, ((int)(rnd() % 2001) - 1000) / 100.0);
+}
+
+void test_no_write_outside_clip_rectangle_canaries(void)
+{
+    /* The target is the middle of a bigger buffer; everything around it
+     * and outside the clip rectangle is canary. */
+    enum { BW = W + 16, BH = H + 16 };
+    static uint16_t big[BW * BH], zb[BW * BH];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    fxl_rect_t clip = {5, 3, W - 7, H - 4};
+    int k, x, y, f;
+    make_texture(&tex);
+    lcg_state = 7u;
+    for (f = 0; f < 2; f++) {
+        for (k = 0; k < BW * BH; k++)
+            big[k] = zb[k] = 0xA5A5;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, big + 8 * BW + 8, W, H, BW, (fxl_pixfmt_t)f));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb + 8 * BW + 8));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_clip(&t, &clip));
+        fxl_target_clear_depth(&t);
+        fxl_draw_defaults(&d);
+        d.texture = &tex;
+        for (k = 0; k < 3000; k++) {
+            fxl_vertex_t v[3];
+            random_tri(v, (k % 3 == 0) ? 60000.0 : 120.0);   /* some near the q16 limit */
+            d.filter = (uint8_t)(k & 1);
+            d.persp = (int16_t)((k % 4 == 0) ? 0 : (k % 4 == 1 ? 1 : 16));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+        }
+        for (y = 0; y < BH; y++)
+            for (x = 0; x < BW; x++) {
+                int fx = x - 8, fy = y - 8;
+                int in = fx >= clip.x0 && fx < clip.x1 && fy >= clip.y0 && fy < clip.y1;
+                if (!in && (big[y * BW + x] != 0xA5A5 || zb[y * BW + x] != 0xA5A5)) {
+                    char msg[100];
+                    snprintf(msg, sizeof msg, "write outside clip at buffer (%d,%d): %04x", x, y, big[y * BW + x]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+    }
+}
+
+/* Render random textured triangles full-frame and as bands of 7 rows and
+ * with an x-clip; every drawn pixel must be bit-identical. */
+void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
+{
+    static uint16_t full[W * H], zfull[W * H], band[W * 7], zband[W * 7], clipped[W * H], zclip[W * H];
+    fxl_vertex_t tris[60][3];
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    int k, y0, x, y, mode;
+    make_texture(&tex);
+    lcg_state = 31u;
+    for (k = 0; k < 60; k++)
+        random_tri(tris[k], 90.0);
+    for (mode = 0; mode < 4; mode++) {
+        fxl_rect_t cr = {13, 0, 41, H};
+        fxl_draw_defaults(&d);
+        d.texture = &tex;
+        d.filter = (uint8_t)(mode & 1);
+        d.persp = (int16_t)(mode < 2 ? 16 : 0);
+        fxl_target_init(&t, full, W, H, W, FXL_PIXFMT_RGB565);
+        fxl_target_set_depth(&t, zfull);
+        fxl_target_clear(&t, 0x1234);
+        fxl_target_clear_depth(&t);
+        for (k = 0; k < 60; k++)
+            fxl_draw_triangle(&t, &d, tris[k], NULL);
+        fxl_target_init(&t, clipped, W, H, W, FXL_PIXFMT_RGB565);
+        fxl_target_set_depth(&t, zclip);
+        fxl_target_clear(&t, 0x1234);
+        fxl_target_clear_depth(&t);
+        fxl_target_set_clip(&t, &cr);
+        for (k = 0; k < 60; k++)
+            fxl_draw_triangle(&t, &d, tris[k], NULL);
+        for (y = 0; y < H; y++)
+            for (x = cr.x0; x < cr.x1; x++)
+                TEST_ASSERT_EQUAL_HEX16(full[y * W + x], clipped[y * W + x]);
+        for (y0 = 0; y0 < H; y0 += 7) {
+            int bh = H - y0 < 7 ? H - y0 : 7;
+            fxl_target_init(&t, band, W, bh, W, FXL_PIXFMT_RGB565);
+            fxl_target_set_origin(&t, 0, y0);
+            fxl_target_set_depth(&t, zband);
+            fxl_target_clear(&t, 0x1234);
+            fxl_target_clear_depth(&t);
+            for (k = 0; k < 60; k++)
+                fxl_draw_triangle(&t, &d, tris[k], NULL);
+            for (y = 0; y < bh; y++)
+                for (x = 0; x < W; x++)
+                    if (band[y * W + x] != full[(y0 + y) * W + x]) {
+                        char msg[100];
+                        snprintf(msg, sizeof msg, "band pixel (%d,%d) %04x != full %04x (mode %d)", x, y0 + y,
+                                 band[y * W + x], full[(y0 + y) * W + x], mode);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+        }
+    }
+}
+
+/* ---- perspective accuracy ------------------------------------------------ */
+
+/* Exact u, v (level-0 texels) at a pixel centre from the snapped vertices. */
+static void exact_uv(const fxl_vertex_t v[3], int tw, int th, int affine, int32_t px, int32_t py, double *u,
+                     double *vv)
+{
+    double X[3], Y[3], det, b[3], q[3], sq = 0, su = 0, sv = 0;
+    double cx = px + 0.5, cy = py + 0.5;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(v[i].x) / (double)FXL__ONE;
+        Y[i] = fxl_snap_subpx(v[i].y) / (double)FXL__ONE;
+        q[i] = affine ? 1.0 : (double)v[i].inv_w;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    b[1] = ((cx - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (cy - Y[0])) / det;
+    b[2] = ((X[1] - X[0]) * (cy - Y[0]) - (cx - X[0]) * (Y[1] - Y[0])) / det;
+    b[0] = 1 - b[1] - b[2];
+    for (i = 0; i < 3; i++) {
+        sq += b[i] * q[i];
+        su += b[i] * q[i] * v[i].u / 65536.0;
+        sv += b[i] * q[i] * v[i].v / 65536.0;
+    }
+    *u = su / sq * tw;
+    *vv = sv / sq * th;
+}
+
+static double wrap_err(double got, double want, double period)
+{
+    double e = fmod(got - want, period);
+    if (e < 0)
+        e += period;
+    return e > period / 2 ? period - e : e;
+}
+
+/* View-space point -> vertex, 60 degree vertical fov, 320x240, near 1. */
+static fxl_vertex_t project(double x, double y, double z, double u, double v)
+{
+    double f = 1.0 / tan(FXL_TEST_PI / 6.0), w = -z;
+    double sx = (f * 0.75 * x / w * 0.5 + 0.5) * 320.0, sy = (0.5 - f * y / w * 0.5) * 240.0;
+    return vtx(sx, sy, 1.0 / w, u, v);
+}
+
+typedef struct { fxl_vertex_t v[3]; } tri_t;
+
+static int floor_scene(tri_t *out)
+{
+    /* The core issue's floor: x = +-40, y = -0.577, z -1 .. -50; u = x / 2,
+     * v = z / 2 periods of the texture. */
+    fxl_vertex_t a = project(-40, -0.577, -1, -20, -0.5), b = project(40, -0.577, -1, 20, -0.5);
+    fxl_vertex_t c = project(40, -0.577, -50, 20, -25), d = project(-40, -0.577, -50, -20, -25);
+    out[0].v[0] = a; out[0].v[1] = b; out[0].v[2] = c;
+    out[1].v[0] = a; out[1].v[1] = c; out[1].v[2] = d;
+    return 2;
+}
+
+static int cube_scene(tri_t *out)
+{
+    static const int faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    double P[8][3], ca = cos(FXL_TEST_PI / 6), sa = sin(FXL_TEST_PI / 6);
+    int i, f, n = 0;
+    for (i = 0; i < 8; i++) {
+        double x = (i & 1) ? 1 : -1, y = (i & 2) ? 1 : -1, z = (i & 4) ? 1 : -1, t;
+        t = y * ca - z * sa; z = y * sa + z * ca; y = t;     /* about x */
+        t = x * ca + z * sa; z = -x * sa + z * ca; x = t;    /* about y */
+        P[i][0] = x; P[i][1] = y; P[i][2] = z - 4.5;
+    }
+    for (f = 0; f < 6; f++) {
+        fxl_vertex_t q[4];
+        static const double uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (i = 0; i < 4; i++)
+            q[i] = project(P[faces[f][i]][0], P[faces[f][i]][1], P[faces[f][i]][2], uv[i][0], uv[i][1]);
+        out[n].v[0] = q[0]; out[n].v[1] = q[1]; out[n].v[2] = q[2]; n++;
+        out[n].v[0] = q[0]; out[n].v[1] = q[2]; out[n].v[2] = q[3]; n++;
+    }
+    return n;
+}
+
+/* Max |(u,v) - exact| in level-0 texels over every drawn pixel. */
+static double scene_max_error_ref(const tri_t *tris, int n, int persp, int tw, int affine_ref)
+{
+    static uint16_t buf[320 * 240];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    static uint16_t texels[1024 * 1024];
+    double maxe = 0;
+    int k, x, y;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, (uint32_t)tw, (uint32_t)tw, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.persp = (int16_t)persp;
+    for (k = 0; k < n; k++) {
+        probe_target(&t, buf, 320, 240);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg));
+        for (y = 0; y < 240; y++)
+            for (x = 0; x < 320; x++)
+                if (probe_count[y * 320 + x]) {
+                    double eu, ev, e;
+                    exact_uv(tris[k].v, tw, tw, affine_ref, x, y, &eu, &ev);
+                    e = hypot(wrap_err(probe_u[y * 320 + x], eu, tw), wrap_err(probe_v[y * 320 + x], ev, tw));
+                    if (e > maxe)
+                        maxe = e;
+                }
+    }
+    return maxe;
+}
+
+/* Against the perspective-correct reference. */
+static double scene_max_error(const tri_t *tris, int n, int persp, int tw)
+{
+    return scene_max_error_ref(tris, n, persp, tw, 0);
+}
+
+void test_exact_mode_within_one_64th_texel_on_floor_and_cube(void)
+{
+    tri_t tris[12];
+    int n, tw;
+    char msg[120];
+    for (tw = 64; tw <= 1024; tw *= 16) {
+        double e;
+        n = floor_scene(tris);
+        e = scene_max_error(tris, n, FXL_PERSP_EXACT, tw);
+        snprintf(msg, sizeof msg, "floor, %d-texel texture: max error %.6f texels", tw, e);
+        TEST_MESSAGE(msg);
+        TEST_ASSERT_TRUE_MESSAGE(e <= 1.0 / 64, msg);
+        n = cube_scene(tris);
+        e = scene_max_error(tris, n, FXL_PERSP_EXACT, tw);
+        snprintf(msg, sizeof msg, "cube, %d-texel texture: max error %.6f texels", tw, e);
+        TEST_MESSAGE(msg);
+        TEST_ASSERT_TRUE_MESSAGE(e <= 1.0 / 64, msg);
+    }
+}
+
+/* Subdivision error bound. Along a span u(x) = s(x) / q(x) with s, q linear,
+ * u'' = -2 u' q' / q, so linear interpolation over L pixels errs by at most
+ * L^2/8 max|u''| = L^2 max|u' q'| / (4 q). u' = (s' q - s q') / q^2 where
+ * the numerator is linear over the triangle, so bounding |numerator| by its
+ * vertex maximum and q by its vertex minimum gives a per-triangle bound;
+ * plus the exact-mode tolerance and one q16 step per pixel of truncation. */
+static double subdiv_bound(const tri_t *tr, int L, int tw)
+{
+    double X[3], Y[3], q[3], u[3], v[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(tr->v[i].x) / (double)FXL__ONE;
+        Y[i] = fxl_snap_subpx(tr->v[i].y) / (double)FXL__ONE;
+        q[i] = tr->v[i].inv_w;
+        u[i] = tr->v[i].u / 65536.0 * tw * q[i];
+        v[i] = tr->v[i].v / 65536.0 * tw * q[i];
+        if (q[i] < qmin)
+            qmin = q[i];
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+#define GX(a) (((a[1] - a[0]) * (Y[2] - Y[0]) - (a[2] - a[0]) * (Y[1] - Y[0])) / det)
+    qx = GX(q);
+    sux = GX(u);
+    svx = GX(v);
+#undef GX
+    for (i = 0; i < 3; i++) {
+        double a = fabs(sux * q[i] - u[i] * qx), b = fabs(svx * q[i] - v[i] * qx);
+        if (a > nu) nu = a;
+        if (b > nv) nv = b;
+    }
+    return (double)L * L / 4.0 * fabs(qx) * hypot(nu, nv) / (qmin * qmin * qmin) + 1.0 / 64 + L / 65536.0;
+}
+
+void test_subdivided_modes_within_derived_bound_and_affine_is_worse(void)
+{
+    tri_t tris[12];
+    int n, k, L;
+    char msg[160];
+    double exact_e, affine_e;
+    n = floor_scene(tris);
+    exact_e = scene_max_error(tris, n, FXL_PERSP_EXACT, 64);
+    for (L = 4; L <= 64; L *= 2) {
+        for (k = 0; k < n; k++) {
+            double e = scene_max_error(&tris[k], 1, L, 64), b = subdiv_bound(&tris[k], L, 64);
+            snprintf(msg, sizeof msg, "floor tri %d subdiv%d: max error %.4f texels, bound %.4f", k, L, e, b);
+            TEST_MESSAGE(msg);
+            TEST_ASSERT_TRUE_MESSAGE(e <= b, msg);
+        }
+    }
+    /* Affine is exact to its own (screen-linear) definition ... */
+    affine_e = scene_max_error_ref(tris, n, FXL_PERSP_AFFINE, 64, 1);
+    snprintf(msg, sizeof msg, "floor affine vs screen-linear reference: %.6f texels", affine_e);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(affine_e <= 1.0 / 64, msg);
+    /* ... and far from perspective-correct. */
+    affine_e = scene_max_error(tris, n, FXL_PERSP_AFFINE, 64);
+    snprintf(msg, sizeof msg, "floor affine max error %.3f texels vs exact %.6f", affine_e, exact_e);
+    TEST_MESSAGE(msg);
+    /* The affine floor maps v linearly across a 50:1 depth range: errors of
+     * many texels are expected; 100x the exact error is a loose floor. */
+    TEST_ASSERT_TRUE_MESSAGE(affine_e > 1.0 && affine_e > 100 * exact_e, msg);
+}
+
+/* ---- errors ------------------------------------------------------------------ */
+
+void test_draw_api_errors(void)
+{
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    fxl_vertex_t v[3];
+    fxl_stats_t st;
+    memset(&st, 0, sizeof st);
+    v[0] = vtx(1, 1, 0.5, 0, 0);
+    v[1] = vtx(20, 2, 0.5, 1, 0);
+    v[2] = vtx(3, 20, 0.5, 0, 1);
+    fxl_target_init(&t, pix, W, H, W, FXL_PIXFMT_RGB565);
+    fxl_draw_defaults(&d);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(NULL, &d, v, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, NULL, v, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, NULL, NULL));
+    d.persp = 12;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_triangle(&t, &d, v, NULL));
+    d.persp = 512;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_triangle(&t, &d, v, NULL));
+    d.persp = FXL_PERSP_AUTO;
+    d.auto_budget = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_draw_defaults(&d);
+    d.filter = 7;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_draw_defaults(&d);
+    d.texenv = 9;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_draw_defaults(&d);
+    v[1].inv_w = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_triangle(&t, &d, v, NULL));
+    v[1].inv_w = 5;
+    /* A texture descriptor edited into nonsense is refused, not read. */
+    make_texture(&tex);
+    tex.log2_w = 30;
+    d.texture = &tex;
+    TEST_ASSERT_NOT_EQUAL(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+    d.texture = NULL;
+    /* A clip rectangle edited to exceed the buffer is refused. */
+    t.clip.x1 = W + 5;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_target_init(&t, pix, W, H, W, FXL_PIXFMT_RGB565);
+    t.pixels = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_target_init(&t, pix, W, H, W, FXL_PIXFMT_RGB565);
+    /* Degenerate and off-target triangles are culled and counted. */
+    v[2] = v[1];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
+    TEST_ASSERT_EQUAL_UINT32(1, st.culled_degenerate);
+    v[0] = vtx(-50, -50, 0.5, 0, 0);
+    v[1] = vtx(-10, -50, 0.5, 0, 0);
+    v[2] = vtx(-30, -5, 0.5, 0, 0);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
+    TEST_ASSERT_EQUAL_UINT32(1, st.culled_outside);
+    TEST_ASSERT_EQUAL_UINT32(2, st.triangles);
+    TEST_ASSERT_EQUAL_UINT32(0, st.pixels);
+    /* Indexed draws refuse out-of-range indices. */
+    {
+        static const uint16_t idx[3] = {0, 1, 7};
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&t, &d, v, 3, idx, 1, NULL));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_indexed(&t, &d, v, 3, NULL, 1, NULL));
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_fill_rule_matches_exact_reference_on_random_triangles);
+    RUN_TEST(test_fill_rule_long_edges_do_not_drift);
+    RUN_TEST(test_fill_rule_centres_on_edges_all_eight_orientations);
+    RUN_TEST(test_watertight_grid_mesh_each_pixel_once);
+    RUN_TEST(test_watertight_random_jittered_meshes_each_pixel_once);
+    RUN_TEST(test_watertight_fan_each_pixel_once);
+    RUN_TEST(test_no_write_outside_clip_rectangle_canaries);
+    RUN_TEST(test_band_and_clip_renders_are_bit_identical_to_full_frame);
+    RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
+    RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
+    RUN_TEST(test_draw_api_errors);
+    return UNITY_END();
+}
