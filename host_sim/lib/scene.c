@@ -1,0 +1,660 @@
+/* scene.c - see scene.h. */
+#include "scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define DEG (M_PI / 180.0)
+
+/* A view-space vertex with its texture coordinates. */
+typedef struct vtx_d {
+    double x, y, z, u, v;
+} vtx_d;
+
+typedef struct builder {
+    fxl_vertex_t *verts;
+    uint32_t tri_count, tri_cap;
+    double f, aspect, near, w_px, h_px;
+    double guard;             /* guard band: |ndc_x|, |ndc_y| <= guard */
+    int error;                /* first SCENE_ERR_*, sticky */
+    uint32_t culled, clipped, guard_clipped;
+} builder_t;
+
+static const char *const scene_names[] = {"floor",  "floor_tess", "floor_rolled", "cube",
+                                          "fan",    "tunnel",     "quad_near",    "small_tris"};
+#define SCENE_N (sizeof(scene_names) / sizeof(scene_names[0]))
+
+size_t scene_count(void)
+{
+    return SCENE_N;
+}
+
+const char *scene_name(size_t i)
+{
+    return i < SCENE_N ? scene_names[i] : NULL;
+}
+
+const char *scene_strerror(int code)
+{
+    switch (code) {
+    case SCENE_OK:
+        return "ok";
+    case SCENE_ERR_NAME:
+        return "unknown scene name";
+    case SCENE_ERR_SIZE:
+        return "target size outside 1..4096";
+    case SCENE_ERR_NOMEM:
+        return "out of memory";
+    case SCENE_ERR_RANGE:
+        return "projected coordinate does not fit q16";
+    default:
+        return "unknown error";
+    }
+}
+
+/* ---- projection and emission ---------------------------------------------- */
+
+/* Largest magnitude we store as q16: keeps lround(x * 65536) inside int32. */
+#define Q16_LIMIT 32767.0
+
+static int to_q16(double x, fxl_q16_t *out)
+{
+    if (!(x > -Q16_LIMIT && x < Q16_LIMIT)) { /* also rejects NaN */
+        return -1;
+    }
+    *out = (fxl_q16_t)lround(x * 65536.0);
+    return 0;
+}
+
+static int project(builder_t *b, const vtx_d *p, fxl_vertex_t *o, double *sx, double *sy)
+{
+    double w = -p->z;
+    double ndc_x = p->x * b->f / (b->aspect * w);
+    double ndc_y = p->y * b->f / w;
+    double inv = b->near / w * 4294967295.0;
+    *sx = (ndc_x * 0.5 + 0.5) * b->w_px;
+    *sy = (0.5 - ndc_y * 0.5) * b->h_px;
+    memset(o, 0, sizeof(*o));
+    if (to_q16(*sx, &o->x) || to_q16(*sy, &o->y) || to_q16(p->u, &o->u) || to_q16(p->v, &o->v)) {
+        return -1;
+    }
+    /* w >= near after clipping, so inv <= 2^32 - 1 up to rounding; clamp. */
+    inv = floor(inv + 0.5);
+    if (inv < 1.0) {
+        inv = 1.0;
+    }
+    if (inv > 4294967295.0) {
+        inv = 4294967295.0;
+    }
+    o->inv_w = (uint32_t)inv;
+    o->color = 0xFFFFu;
+    return 0;
+}
+
+static int push_tri(builder_t *b, const fxl_vertex_t *a, const fxl_vertex_t *c,
+                    const fxl_vertex_t *d)
+{
+    if (b->tri_count == b->tri_cap) {
+        uint32_t cap = b->tri_cap ? b->tri_cap * 2u : 64u;
+        fxl_vertex_t *n = (fxl_vertex_t *)realloc(b->verts, (size_t)cap * 3u * sizeof(*n));
+        if (n == NULL) {
+            b->error = SCENE_ERR_NOMEM;
+            return -1;
+        }
+        b->verts = n;
+        b->tri_cap = cap;
+    }
+    b->verts[3u * b->tri_count] = *a;
+    b->verts[3u * b->tri_count + 1u] = *c;
+    b->verts[3u * b->tri_count + 2u] = *d;
+    b->tri_count++;
+    return 0;
+}
+
+/* Clip planes: 0 is the near plane w >= near; 1..4 are the guard band
+ * |ndc_x| <= g, |ndc_y| <= g, chosen in scene_build so that projected
+ * coordinates stay inside q16 (at 320 x 240 no scene reaches it). */
+static double plane_dist(const builder_t *b, int plane, const vtx_d *p)
+{
+    double w = -p->z;
+    switch (plane) {
+    case 0:
+        return w - b->near;
+    case 1:
+        return b->guard * w - p->x * b->f / b->aspect;
+    case 2:
+        return b->guard * w + p->x * b->f / b->aspect;
+    case 3:
+        return b->guard * w - p->y * b->f;
+    default:
+        return b->guard * w + p->y * b->f;
+    }
+}
+
+/* The point where edge (in, out) crosses a plane, interpolated from the
+ * inside end so both polygons sharing the edge compute identical bits. */
+static vtx_d clip_point(const builder_t *b, int plane, const vtx_d *in, const vtx_d *out)
+{
+    double d_in = plane_dist(b, plane, in), d_out = plane_dist(b, plane, out);
+    double t = d_in / (d_in - d_out);
+    vtx_d r;
+    r.x = in->x + t * (out->x - in->x);
+    r.y = in->y + t * (out->y - in->y);
+    r.z = in->z + t * (out->z - in->z);
+    r.u = in->u + t * (out->u - in->u);
+    r.v = in->v + t * (out->v - in->v);
+    if (plane == 0) {
+        r.z = -b->near; /* exactly on the plane: inv_w is exactly 1.0 there */
+    }
+    return r;
+}
+
+#define POLY_MAX 16
+
+/* Sutherland-Hodgman against one plane; returns the new vertex count. */
+static int clip_poly(const builder_t *b, int plane, const vtx_d *in, int n, vtx_d *out, int *cut)
+{
+    int i, m = 0;
+    for (i = 0; i < n; i++) {
+        const vtx_d *cur = &in[i], *nxt = &in[(i + 1) % n];
+        int cur_in = plane_dist(b, plane, cur) >= 0.0, nxt_in = plane_dist(b, plane, nxt) >= 0.0;
+        if (cur_in) {
+            out[m++] = *cur;
+        } else {
+            *cut = 1;
+        }
+        if (cur_in && !nxt_in) {
+            out[m++] = clip_point(b, plane, cur, nxt);
+        } else if (!cur_in && nxt_in) {
+            out[m++] = clip_point(b, plane, nxt, cur);
+        }
+    }
+    return m;
+}
+
+/* Clip a convex polygon to the near plane and the guard band, project,
+ * optionally cull back faces (front = counter-clockwise seen from outside in
+ * a y-up view, which is negative shoelace area in y-down screen space), and
+ * emit it as a triangle fan. */
+static void emit_poly(builder_t *b, const vtx_d *in, int n, int cull)
+{
+    vtx_d poly[POLY_MAX], tmp[POLY_MAX];
+    fxl_vertex_t pv[POLY_MAX];
+    double sx[POLY_MAX], sy[POLY_MAX], area = 0.0;
+    int m, i, plane, cut = 0;
+    if (b->error || n < 3 || n > POLY_MAX - 5) {
+        return;
+    }
+    memcpy(poly, in, (size_t)n * sizeof(vtx_d));
+    m = n;
+    /* Each plane adds at most one vertex to a convex polygon: n + 5 <= POLY_MAX. */
+    for (plane = 0; plane < 5 && m >= 3; plane++) {
+        int cut_here = 0;
+        m = clip_poly(b, plane, poly, m, tmp, &cut_here);
+        memcpy(poly, tmp, (size_t)m * sizeof(vtx_d));
+        if (plane == 0) {
+            cut = cut_here;
+        } else {
+            b->guard_clipped += (uint32_t)cut_here;
+        }
+    }
+    b->clipped += (uint32_t)cut;
+    if (m < 3) {
+        return;
+    }
+    for (i = 0; i < m; i++) {
+        if (project(b, &poly[i], &pv[i], &sx[i], &sy[i]) != 0) {
+            b->error = SCENE_ERR_RANGE;
+            return;
+        }
+    }
+    if (cull) {
+        for (i = 0; i < m; i++) {
+            int j = (i + 1) % m;
+            area += sx[i] * sy[j] - sx[j] * sy[i];
+        }
+        if (area >= 0.0) {
+            b->culled++;
+            return;
+        }
+    }
+    for (i = 1; i + 1 < m; i++) {
+        if (push_tri(b, &pv[0], &pv[i], &pv[i + 1]) != 0) {
+            return;
+        }
+    }
+}
+
+static void emit_tri(builder_t *b, vtx_d a, vtx_d c, vtx_d d)
+{
+    vtx_d t[3];
+    t[0] = a;
+    t[1] = c;
+    t[2] = d;
+    emit_poly(b, t, 3, 0);
+}
+
+static vtx_d vd(double x, double y, double z, double u, double v)
+{
+    vtx_d r;
+    r.x = x;
+    r.y = y;
+    r.z = z;
+    r.u = u;
+    r.v = v;
+    return r;
+}
+
+/* Deterministic xorshift32 so scenes are identical on every build. */
+static double rnd01(uint32_t *s)
+{
+    uint32_t x = *s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    *s = x;
+    return (double)(x >> 8) / 16777216.0;
+}
+
+/* ---- scenes --------------------------------------------------------------- */
+
+static void scene_floor(builder_t *b, double roll_deg, int nx, int nz)
+{
+    const double y = -0.577, x0 = -40.0, x1 = 40.0, z0 = -1.0, z1 = -50.0;
+    double c = cos(roll_deg * DEG), s = sin(roll_deg * DEG);
+    int i, j, k;
+    for (j = 0; j < nz; j++) {
+        for (i = 0; i < nx; i++) {
+            vtx_d q[4];
+            double xa = x0 + (x1 - x0) * i / nx, xb = x0 + (x1 - x0) * (i + 1) / nx;
+            double za = z0 + (z1 - z0) * j / nz, zb = z0 + (z1 - z0) * (j + 1) / nz;
+            q[0] = vd(xa, y, za, xa / 2.0, -za / 2.0);
+            q[1] = vd(xb, y, za, xb / 2.0, -za / 2.0);
+            q[2] = vd(xb, y, zb, xb / 2.0, -zb / 2.0);
+            q[3] = vd(xa, y, zb, xa / 2.0, -zb / 2.0);
+            for (k = 0; k < 4; k++) { /* roll about the view (z) axis */
+                double px = q[k].x, py = q[k].y;
+                q[k].x = px * c - py * s;
+                q[k].y = px * s + py * c;
+            }
+            emit_poly(b, q, 4, 0);
+        }
+    }
+}
+
+static vtx_d rot_xy(vtx_d p, double ax_deg, double ay_deg)
+{
+    double cx = cos(ax_deg * DEG), sx = sin(ax_deg * DEG);
+    double cy = cos(ay_deg * DEG), sy = sin(ay_deg * DEG);
+    double y = p.y * cx - p.z * sx, z = p.y * sx + p.z * cx; /* about x */
+    double x = p.x * cy + z * sy;                            /* then about y */
+    z = -p.x * sy + z * cy;
+    p.x = x;
+    p.y = y;
+    p.z = z;
+    return p;
+}
+
+static void scene_cube(builder_t *b)
+{
+    /* Per face: outward normal n, right r, up t with r x t = n, so the
+     * corners BL, BR, TR, TL run counter-clockwise seen from outside. */
+    static const double f[6][3][3] = {
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};
+    static const double corner[4][4] = {/* s_r, s_t, u, v */
+                                        {-1, -1, 0, 1}, {1, -1, 1, 1}, {1, 1, 1, 0}, {-1, 1, 0, 0}};
+    int i, k, a;
+    for (i = 0; i < 6; i++) {
+        vtx_d q[4];
+        for (k = 0; k < 4; k++) {
+            double p[3];
+            for (a = 0; a < 3; a++) {
+                p[a] = f[i][0][a] + corner[k][0] * f[i][1][a] + corner[k][1] * f[i][2][a];
+            }
+            q[k] = rot_xy(vd(p[0], p[1], p[2], corner[k][2], corner[k][3]), 30.0, 30.0);
+            q[k].z -= 5.0;
+        }
+        emit_poly(b, q, 4, 1);
+    }
+}
+
+/* A point of the fan scene's plane: (a, b) tilted 35 degrees about x. */
+static vtx_d fan_plane(double a, double bb)
+{
+    const double tilt = 35.0 * DEG, dist = 2.6;
+    return vd(a, bb * cos(tilt), bb * sin(tilt) - dist, a * 0.8 + 0.5, 0.5 - bb * 0.8);
+}
+
+static void scene_fan(builder_t *b)
+{
+    enum { FAN = 24, G = 16 };
+    vtx_d centre = fan_plane(-0.85, 0.02), rim[FAN + 1];
+    vtx_d grid[G + 1][G + 1];
+    uint32_t seed = 0x2545F491u;
+    int k, i, j;
+    for (k = 0; k < FAN; k++) {
+        double ang = 2.0 * M_PI * k / FAN + 0.13;
+        double r = 0.62 * (1.0 + 0.12 * sin(3.0 * k + 1.0));
+        rim[k] = fan_plane(-0.85 + r * cos(ang), 0.02 + r * sin(ang));
+    }
+    rim[FAN] = rim[0]; /* closes the fan with the very same vertex */
+    for (k = 0; k < FAN; k++) {
+        emit_tri(b, centre, rim[k], rim[k + 1]);
+    }
+    /* Grid on a [0.05, 1.25] x [-0.85, 0.85] patch; inner vertices jittered by
+     * up to 0.3 cell so the edges take many directions. Each vertex is made
+     * once and reused by every triangle that shares it. */
+    for (j = 0; j <= G; j++) {
+        for (i = 0; i <= G; i++) {
+            double a = 0.05 + 1.2 * i / G, c = -0.85 + 1.7 * j / G;
+            if (i > 0 && i < G && j > 0 && j < G) {
+                a += (rnd01(&seed) - 0.5) * 0.6 * 1.2 / G;
+                c += (rnd01(&seed) - 0.5) * 0.6 * 1.7 / G;
+            }
+            grid[j][i] = fan_plane(a, c);
+        }
+    }
+    for (j = 0; j < G; j++) {
+        for (i = 0; i < G; i++) {
+            vtx_d p00 = grid[j][i], p10 = grid[j][i + 1], p01 = grid[j + 1][i],
+                  p11 = grid[j + 1][i + 1];
+            if ((i + j) & 1) {
+                emit_tri(b, p00, p10, p11);
+                emit_tri(b, p00, p11, p01);
+            } else {
+                emit_tri(b, p00, p10, p01);
+                emit_tri(b, p10, p11, p01);
+            }
+        }
+    }
+}
+
+static void scene_tunnel(builder_t *b)
+{
+    enum { AROUND = 24, ALONG = 40 };
+    const double ex = 0.25, ey = 0.15; /* eye offset from the axis */
+    const double turns = 4.0, vscale = 4.0 / (2.0 * M_PI);
+    int i, j;
+    for (j = 0; j < ALONG; j++) {
+        double za = -(double)j, zb = -(double)(j + 1);
+        for (i = 0; i < AROUND; i++) {
+            double a0 = 2.0 * M_PI * i / AROUND, a1 = 2.0 * M_PI * (i + 1) / AROUND;
+            double u0 = turns * i / AROUND, u1 = turns * (i + 1) / AROUND;
+            vtx_d q[4];
+            q[0] = vd(cos(a0) - ex, sin(a0) - ey, za, u0, -za * vscale);
+            q[1] = vd(cos(a1) - ex, sin(a1) - ey, za, u1, -za * vscale);
+            q[2] = vd(cos(a1) - ex, sin(a1) - ey, zb, u1, -zb * vscale);
+            q[3] = vd(cos(a0) - ex, sin(a0) - ey, zb, u0, -zb * vscale);
+            emit_poly(b, q, 4, 0);
+        }
+    }
+}
+
+static void scene_quad_near(builder_t *b)
+{
+    /* 8 x 8 quad, centre z = -2, turned 20 degrees about y: depth runs from
+     * w = 0.63 to 3.37 and the far side still reaches beyond the frustum
+     * (half-width 3.76 > 3.37 * tan 30 * 4/3 = 2.59; half-height 4 > 1.95). */
+    static const double c[4][2] = {{-4, -4}, {4, -4}, {4, 4}, {-4, 4}};
+    vtx_d q[4];
+    int k;
+    for (k = 0; k < 4; k++) {
+        q[k] = rot_xy(vd(c[k][0], c[k][1], 0.0, (c[k][0] + 4.0) / 2.0, (4.0 - c[k][1]) / 2.0),
+                      0.0, 20.0);
+        q[k].z -= 2.0;
+    }
+    emit_poly(b, q, 4, 0);
+}
+
+static void scene_small_tris(builder_t *b)
+{
+    enum { COLS = 50, ROWS = 40 };
+    /* Equilateral, circumradius r: area = 3 sqrt(3) / 4 r^2 = 20 px^2 at
+     * r = 3.924 px of a 240-row frame. One pixel at depth w spans
+     * 2 w / (f * 240) view units vertically. */
+    const double r_px = sqrt(20.0 * 4.0 / (3.0 * sqrt(3.0)));
+    uint32_t seed = 0x9E3779B9u;
+    int i, j, k;
+    for (j = 0; j < ROWS; j++) {
+        for (i = 0; i < COLS; i++) {
+            double ndc_x = -1.0 + 2.0 * (i + 0.5) / COLS, ndc_y = 1.0 - 2.0 * (j + 0.5) / ROWS;
+            double w = 2.0 + rnd01(&seed);
+            double cx = ndc_x * w * b->aspect / b->f, cy = ndc_y * w / b->f;
+            double r = r_px * 2.0 * w / (b->f * 240.0);
+            double phi = 2.0 * M_PI * rnd01(&seed);
+            double u0 = rnd01(&seed), v0 = rnd01(&seed);
+            vtx_d t[3];
+            for (k = 0; k < 3; k++) {
+                double a = phi + 2.0 * M_PI * k / 3.0;
+                t[k] = vd(cx + r * cos(a), cy + r * sin(a), -w + 0.05 * (rnd01(&seed) - 0.5),
+                          u0 + 0.06 * cos(a), v0 + 0.06 * sin(a));
+            }
+            emit_poly(b, t, 3, 0);
+        }
+    }
+}
+
+int scene_build(const char *name, int32_t width, int32_t height, scene_t *out)
+{
+    builder_t b;
+    size_t i;
+    const char *static_name = NULL;
+    if (out == NULL) {
+        return SCENE_ERR_NAME;
+    }
+    memset(out, 0, sizeof(*out));
+    if (name == NULL) {
+        return SCENE_ERR_NAME;
+    }
+    for (i = 0; i < SCENE_N; i++) {
+        if (strcmp(name, scene_names[i]) == 0) {
+            static_name = scene_names[i];
+        }
+    }
+    if (static_name == NULL) {
+        return SCENE_ERR_NAME;
+    }
+    if (width < 1 || height < 1 || width > FXL_TARGET_MAX_DIM || height > FXL_TARGET_MAX_DIM) {
+        return SCENE_ERR_SIZE;
+    }
+    memset(&b, 0, sizeof(b));
+    b.f = 1.0 / tan(SCENE_FOV_Y_DEG * DEG / 2.0);
+    b.aspect = (double)width / (double)height;
+    b.near = SCENE_NEAR;
+    b.w_px = width;
+    b.h_px = height;
+    /* Largest |ndc| whose screen coordinate stays within +-30000 px (q16
+     * holds +-32768): (g * 0.5 + 0.5) * size <= 30000. */
+    b.guard = 2.0 * 30000.0 / (double)(width > height ? width : height) - 1.0;
+    out->texture = TEXTURE_CHECKER;
+    if (strcmp(name, "floor") == 0) {
+        scene_floor(&b, 0.0, 1, 1);
+    } else if (strcmp(name, "floor_tess") == 0) {
+        scene_floor(&b, 0.0, 16, 32);
+    } else if (strcmp(name, "floor_rolled") == 0) {
+        scene_floor(&b, 40.0, 1, 1);
+    } else if (strcmp(name, "cube") == 0) {
+        scene_cube(&b);
+        out->texture = TEXTURE_CRATE;
+    } else if (strcmp(name, "fan") == 0) {
+        scene_fan(&b);
+        out->texture = TEXTURE_GRID;
+    } else if (strcmp(name, "tunnel") == 0) {
+        scene_tunnel(&b);
+        out->texture = TEXTURE_GRID;
+    } else if (strcmp(name, "quad_near") == 0) {
+        scene_quad_near(&b);
+        out->texture = TEXTURE_CRATE;
+    } else {
+        scene_small_tris(&b);
+        out->texture = TEXTURE_GRID;
+    }
+    if (b.error) {
+        free(b.verts);
+        memset(out, 0, sizeof(*out));
+        return b.error;
+    }
+    out->name = static_name;
+    out->width = width;
+    out->height = height;
+    out->verts = b.verts;
+    out->tri_count = b.tri_count;
+    out->fov_y_deg = SCENE_FOV_Y_DEG;
+    out->near = SCENE_NEAR;
+    out->culled_backface = b.culled;
+    out->clipped = b.clipped;
+    out->guard_clipped = b.guard_clipped;
+    return SCENE_OK;
+}
+
+void scene_free(scene_t *s)
+{
+    if (s != NULL) {
+        free(s->verts);
+        memset(s, 0, sizeof(*s));
+    }
+}
+
+/* ---- drawing -------------------------------------------------------------- */
+
+int frame_alloc(frame_t *f, int32_t width, int32_t height, fxl_pixfmt_t format, int with_depth)
+{
+    size_t n;
+    if (f == NULL) {
+        return -1;
+    }
+    memset(f, 0, sizeof(*f));
+    if (width < 1 || height < 1 || width > FXL_TARGET_MAX_DIM || height > FXL_TARGET_MAX_DIM) {
+        return -1;
+    }
+    n = (size_t)width * (size_t)height;
+    f->pixels = (uint16_t *)calloc(n, sizeof(uint16_t));
+    f->depth = with_depth ? (uint16_t *)calloc(n, sizeof(uint16_t)) : NULL;
+    if (f->pixels == NULL || (with_depth && f->depth == NULL) ||
+        fxl_target_init(&f->target, f->pixels, width, height, width, format) != FXL_OK ||
+        (with_depth && fxl_target_set_depth(&f->target, f->depth) != FXL_OK)) {
+        frame_free(f);
+        return -1;
+    }
+    return 0;
+}
+
+void frame_free(frame_t *f)
+{
+    if (f != NULL) {
+        free(f->pixels);
+        free(f->depth);
+        memset(f, 0, sizeof(*f));
+    }
+}
+
+void scene_clear(fxl_target_t *t, int32_t frame_height)
+{
+    /* Sky: light blue-grey at the top to dark blue-grey at the bottom row. */
+    const int32_t top[3] = {96, 128, 176}, bot[3] = {28, 32, 44};
+    int32_t x, y, den = frame_height > 1 ? frame_height - 1 : 1;
+    if (t == NULL || t->pixels == NULL) {
+        return;
+    }
+    for (y = t->clip.y0; y < t->clip.y1; y++) {
+        int32_t fy = y < 0 ? 0 : (y > den ? den : y);
+        uint16_t c = FXL_RGB565(top[0] + (bot[0] - top[0]) * fy / den,
+                                top[1] + (bot[1] - top[1]) * fy / den,
+                                top[2] + (bot[2] - top[2]) * fy / den);
+        uint16_t *row = t->pixels + (size_t)(y - t->origin_y) * (size_t)t->stride;
+        if (t->format == FXL_PIXFMT_RGB565_SWAP) {
+            c = (uint16_t)((c >> 8) | (c << 8));
+        }
+        for (x = t->clip.x0; x < t->clip.x1; x++) {
+            row[x - t->origin_x] = c;
+        }
+    }
+    if (t->depth != NULL) {
+        (void)fxl_target_clear_depth(t);
+    }
+}
+
+fxl_status_t scene_render(const scene_t *s, const fxl_texture_t *tex, const fxl_draw_t *draw,
+                          fxl_target_t *t, fxl_stats_t *stats)
+{
+    fxl_draw_t d;
+    uint32_t i;
+    if (s == NULL || draw == NULL || t == NULL) {
+        return FXL_ERR_ARG;
+    }
+    d = *draw;
+    d.texture = tex;
+    scene_clear(t, s->height);
+    for (i = 0; i < s->tri_count; i++) {
+        fxl_status_t st = fxl_draw_triangle(t, &d, &s->verts[3u * i], stats);
+        if (st != FXL_OK) {
+            return st;
+        }
+    }
+    return FXL_OK;
+}
+
+/* ---- gallery -------------------------------------------------------------- */
+
+size_t gallery_count(void)
+{
+    return SCENE_N * 4u;
+}
+
+int gallery_entry(size_t i, gallery_entry_t *e)
+{
+    if (e == NULL || i >= gallery_count()) {
+        return -1;
+    }
+    e->scene = scene_names[i / 4u];
+    e->persp_name = (i / 2u) % 2u == 0 ? "subdiv16" : "affine";
+    e->persp = (int16_t)((i / 2u) % 2u == 0 ? 16 : FXL_PERSP_AFFINE);
+    e->filter_name = i % 2u == 0 ? "point" : "bilinear";
+    e->filter = (uint8_t)(i % 2u == 0 ? FXL_FILTER_POINT : FXL_FILTER_BILINEAR);
+    return 0;
+}
+
+void gallery_draw_settings(const gallery_entry_t *e, fxl_draw_t *d)
+{
+    fxl_draw_defaults(d);
+    d->persp = e->persp;
+    d->filter = e->filter;
+    d->mip = FXL_MIP_NONE;
+    d->depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+}
+
+fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)
+{
+    scene_t s;
+    host_texture_t tex;
+    fxl_draw_t d;
+    fxl_status_t st;
+    if (e == NULL || out == NULL) {
+        return FXL_ERR_ARG;
+    }
+    memset(out, 0, sizeof(*out));
+    if (scene_build(e->scene, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, &s) != SCENE_OK) {
+        return FXL_ERR_ARG;
+    }
+    if (texture_make(&tex, s.texture) != 0) {
+        scene_free(&s);
+        return FXL_ERR_NOMEM;
+    }
+    if (frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, FXL_PIXFMT_RGB565, 1) != 0) {
+        texture_free(&tex);
+        scene_free(&s);
+        return FXL_ERR_NOMEM;
+    }
+    gallery_draw_settings(e, &d);
+    st = scene_render(&s, &tex.tex, &d, &out->target, stats);
+    texture_free(&tex);
+    scene_free(&s);
+    return st;
+}
