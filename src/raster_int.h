@@ -112,6 +112,7 @@ typedef struct fxl__seg {
     uint32_t u2, v2;         /* coordinates on lvl2 */
     int32_t du2, dv2;
     uint32_t lod_frac_q8;    /* weight of lvl2, 0..255 */
+    int32_t lod_q8;          /* LOD used for this segment (after bias, clamp), q8 */
 } fxl__seg_t;
 
 /* Span loops (span.c). Each returns the number of pixels written. */

@@ -255,6 +255,7 @@ fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
 typedef struct point {
     uint32_t a[FXL__NATTR];  /* u, v: level-0 texel q16; colours: channel q16 */
     uint32_t z;              /* inv_w, u0.32 */
+    int64_t u64, v64;        /* u, v before wrapping (rebased), for derivatives */
 } point_t;
 
 static inline uint32_t sat_u32(int64_t x)
@@ -294,6 +295,8 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
         /* Repeat/mirror: modulo 2^32 is exact (the period divides it). */
         pt->a[FXL__AU] = tri->signed_u ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
         pt->a[FXL__AV] = tri->signed_v ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
+        pt->u64 = u;
+        pt->v64 = v;
     }
     if (tri->has_color) {
         static const int64_t cmax[3] = {31 << 16, 63 << 16, 31 << 16};
@@ -333,20 +336,24 @@ static inline int64_t coord_diff(uint32_t b, uint32_t a, int is_signed)
     }
 }
 
-/* diff / 2^k truncated toward zero (stepping never passes the endpoint). */
-static inline int32_t step_pow2(int64_t diff, int k)
+static inline int32_t sat_i32(int64_t s)
 {
-    int64_t s = diff < 0 ? -(int64_t)((uint64_t)-diff >> k) : (int64_t)((uint64_t)diff >> k);
     return s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
 }
 
-static inline int32_t step_of(int64_t diff, int32_t div)
+/* diff / 2^k truncated toward zero (stepping never passes the endpoint).
+ * Kept in 64 bits: a level-0 step beyond 2^31 (over 32768 texels per pixel)
+ * is still exact after the shift to a smaller mip level. */
+static inline int64_t step_pow2(int64_t diff, int k)
 {
-    int64_t s;
+    return diff < 0 ? -(int64_t)((uint64_t)-diff >> k) : (int64_t)((uint64_t)diff >> k);
+}
+
+static inline int64_t step_of(int64_t diff, int32_t div)
+{
     if (div <= 0)
         return 0;
-    s = diff / div;   /* truncation: stepping never overshoots the endpoint */
-    return s > INT32_MAX ? INT32_MAX : (s < INT32_MIN ? INT32_MIN : (int32_t)s);
+    return diff / div;   /* truncation: stepping never overshoots the endpoint */
 }
 
 static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
@@ -359,25 +366,87 @@ static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
     return c >> level;
 }
 
-static inline int32_t shift_step(int32_t d, int level)
+/* Floor shift of a 64-bit step to `level`, saturated to int32. */
+static inline int32_t shift_step(int64_t d, int level)
 {
-    return d < 0 ? -(int32_t)(((uint32_t)(-(d + 1))) >> level) - 1 : d >> level;
+    return sat_i32(d < 0 ? ~(int64_t)((uint64_t)~d >> level) : (int64_t)((uint64_t)d >> level));
 }
 
 #if FXL_HAVE_MIPMAP
-/* LOD in q8 from texel-space derivatives (level-0 q16 texels per pixel):
- * log2 of the longer of (du/dx, dv/dx) and (du/dy, dv/dy). */
-static int32_t lod_from_derivs(int64_t dux, int64_t dvx, int64_t duy, int64_t dvy)
+/* ---- level of detail from the plane gradients ----------------------------
+ * u = S / q with S, q planes, so du/dx = (S_x - u q_x) / q (likewise y, v).
+ * The terms span many octaves (a sliver's gradients, a far q), so they are
+ * carried as m * 2^e with |m| < 2^31: a few integer operations, no floats,
+ * ~2^-30 relative precision - far more than the 1/256 level LOD needs. */
+typedef struct sf {
+    int64_t m;
+    int e;
+} sf_t;
+
+static inline sf_t sf_make(int64_t m, int e)
 {
-    /* |d| < 2^32: square in 2^-32 texel^2 units after dropping 2 bits. */
-    uint64_t ax = (uint64_t)(dux < 0 ? -dux : dux) >> 2, bx = (uint64_t)(dvx < 0 ? -dvx : dvx) >> 2;
-    uint64_t ay = (uint64_t)(duy < 0 ? -duy : duy) >> 2, by = (uint64_t)(dvy < 0 ? -dvy : dvy) >> 2;
-    uint64_t lx = ax * ax + bx * bx, ly = ay * ay + by * by;
-    uint64_t l2 = lx > ly ? lx : ly;
-    if (l2 == 0)
+    sf_t r;
+    uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
+    int bits = 64 - fxl__clz64_inline(a), sh = bits > 31 ? bits - 31 : 0;
+    r.m = fxl__asr64(m, sh);
+    r.e = e + sh;
+    return r;
+}
+
+static inline sf_t sf_mul(sf_t a, sf_t b)
+{
+    return sf_make(a.m * b.m, a.e + b.e);   /* |a.m * b.m| < 2^62 */
+}
+
+/* a + sign * b */
+static inline sf_t sf_addsub(sf_t a, sf_t b, int sign)
+{
+    int d = a.e - b.e;
+    if (b.m == 0 || d > 31)
+        return a;
+    if (a.m == 0 || d < -31)
+        return sf_make(sign * b.m, b.e);
+    if (d >= 0)
+        return sf_make(a.m * ((int64_t)1 << d) + sign * b.m, b.e);
+    return sf_make(a.m + sign * b.m * ((int64_t)1 << -d), a.e);
+}
+
+/* (S_g 2^sh - u q_g) / q for one gradient g, in q16 texels per pixel. */
+static inline sf_t deriv(int64_t s_g, int sh, int64_t u, int64_t q_g, const fxl__recip_t *rc)
+{
+    sf_t num = sf_addsub(sf_make(s_g, sh), sf_mul(sf_make(u, 0), sf_make(q_g, 0)), -1);
+    /* 1 / q = r * 2^-62 * 2^-(32 - n) */
+    return sf_mul(num, sf_make((int64_t)rc->r, rc->n - 94));
+}
+
+/* log2 of |(a, b)| in q8 for a, b in q16 texels per pixel. */
+static inline int32_t log2_len_q8(sf_t a, sf_t b)
+{
+    sf_t sq = sf_addsub(sf_mul(a, a), sf_mul(b, b), 1);
+    if (sq.m <= 0)
         return INT32_MIN / 4;
-    /* l2 is (length * 2^14)^2: log2(length) = (log2(l2) - 28) / 2. */
-    return (fxl__log2_q8(l2) - 28 * 256) / 2;
+    /* log2(len) = (log2(len_q16^2) - 32) / 2 */
+    return (fxl__log2_q8((uint64_t)sq.m) + sq.e * 256 - 32 * 256) / 2;
+}
+
+/* LOD (q8) at a correction point: log2 of the longer of the texel-space
+ * derivative vectors along x and y, at level 0. */
+static int32_t lod_at(const fxl__tri_t *tri, const int64_t pv[NPLANES], const point_t *p)
+{
+    fxl__recip_t rc;
+    int64_t q = pv[PQ] < tri->q_min ? tri->q_min : pv[PQ];
+    int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
+    int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
+    int64_t qx = tri->gpx[PQ], qy = (int64_t)((uint64_t)tri->q.gy * FXL__ONE);
+    int64_t sux = tri->gpx[PA + FXL__AU], svx = tri->gpx[PA + FXL__AV];
+    int64_t suy = (int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE);
+    int64_t svy = (int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE);
+    int32_t lx, ly;
+
+    fxl__recip(q, &rc);
+    lx = log2_len_q8(deriv(sux, shu, p->u64, qx, &rc), deriv(svx, shv, p->v64, qx, &rc));
+    ly = log2_len_q8(deriv(suy, shu, p->u64, qy, &rc), deriv(svy, shv, p->v64, qy, &rc));
+    return lx > ly ? lx : ly;
 }
 #endif
 
@@ -406,6 +475,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
     seg.u2 = seg.v2 = 0;
     seg.du2 = seg.dv2 = 0;
     seg.lod_frac_q8 = 0;
+    seg.lod_q8 = 0;
     seg.c[0] = seg.c[1] = seg.c[2] = 0;
     seg.dc[0] = seg.dc[1] = seg.dc[2] = 0;
     seg.u = seg.v = 0;
@@ -416,6 +486,12 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
         int64_t du0 = 0, dv0 = 0;
         int level = 0, full = xr - x > N;
 
+#if FXL_HAVE_MIPMAP
+        int64_t pv0[NPLANES];
+        if (tri->lod_per_segment)
+            for (i = 0; i < np; i++)
+                pv0[i] = pv[i];
+#endif
         if (full) {
             n = N;
             div = N;
@@ -440,32 +516,13 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
                 if (tri->lod_per_segment) {
-                    /* du/dy from an exact division one row down; du/dx is the
-                     * segment's own step (for a one-pixel segment, one pixel on). */
-                    int64_t qv[NPLANES];
-                    point_t py;
-                    int64_t dux = du0, dvx = dv0;
-                    for (i = 0; i < PA + 2; i++)
-                        qv[i] = (int64_t)((uint64_t)pv[i] - (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div +
-                                          (uint64_t)tri->pl[i]->gy * FXL__ONE);
-                    correct(tri, qv, &py);
-                    if (div == 0) {
-                        point_t px;
-                        for (i = 0; i < PA + 2; i++)
-                            qv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i]);
-                        correct(tri, qv, &px);
-                        dux = coord_diff(px.a[FXL__AU], p0.a[FXL__AU], tri->signed_u);
-                        dvx = coord_diff(px.a[FXL__AV], p0.a[FXL__AV], tri->signed_v);
-                    }
-                    lod = lod_from_derivs(dux, dvx,
-                                          coord_diff(py.a[FXL__AU], p0.a[FXL__AU], tri->signed_u),
-                                          coord_diff(py.a[FXL__AV], p0.a[FXL__AV], tri->signed_v)) +
-                          tri->draw->lod_bias_q8;
+                    lod = lod_at(tri, pv0, &p0) + tri->draw->lod_bias_q8;
                     if (lod < 0)
                         lod = 0;
                     if (lod > tri->lod_max_q8)
                         lod = tri->lod_max_q8;
                 }
+                seg.lod_q8 = lod;
                 if (tri->mip_linear) {
                     level = lod >> 8;
                     seg.lod_frac_q8 = (uint32_t)lod & 255u;
@@ -476,24 +533,24 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
             }
 #endif
             seg.lvl = &tri->level[level];
-            seg.du = shift_step((int32_t)du0, level);
-            seg.dv = shift_step((int32_t)dv0, level);
+            seg.du = shift_step(du0, level);
+            seg.dv = shift_step(dv0, level);
             seg.u = shift_coord(p0.a[FXL__AU], level, tri->signed_u) + (uint32_t)seg.du * (uint32_t)off;
             seg.v = shift_coord(p0.a[FXL__AV], level, tri->signed_v) + (uint32_t)seg.dv * (uint32_t)off;
             if (seg.lvl2) {
-                seg.du2 = shift_step((int32_t)du0, level + 1);
-                seg.dv2 = shift_step((int32_t)dv0, level + 1);
+                seg.du2 = shift_step(du0, level + 1);
+                seg.dv2 = shift_step(dv0, level + 1);
                 seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, tri->signed_u) + (uint32_t)seg.du2 * (uint32_t)off;
                 seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, tri->signed_v) + (uint32_t)seg.dv2 * (uint32_t)off;
             }
         }
         if (tri->has_color) {
             for (i = 0; i < 3; i++) {
-                seg.dc[i] = STEP((int64_t)p1.a[FXL__AR + i] - (int64_t)p0.a[FXL__AR + i]);
+                seg.dc[i] = sat_i32(STEP((int64_t)p1.a[FXL__AR + i] - (int64_t)p0.a[FXL__AR + i]));
                 seg.c[i] = p0.a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
             }
         }
-        seg.dz = STEP((int64_t)p1.z - (int64_t)p0.z);
+        seg.dz = sat_i32(STEP((int64_t)p1.z - (int64_t)p0.z));
 #undef STEP
         seg.z = p0.z + (uint32_t)seg.dz * (uint32_t)off;
 
