@@ -1,0 +1,544 @@
+/* test_port_band.c - band rendering with DMA double buffering and binning:
+ * the image on the emulated panel is bit-identical to a full-frame render of
+ * the same triangles, for every band height, preset, rotation, DMA latency
+ * and bin budget (fallback included); buffers are never reused before their
+ * transfer completed (the emulator's DMA mock checks every transfer). */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "unity.h"
+#include "fixel/fixel.h"
+#include "fixel/port.h"
+#include "panel_emu.h"
+#include "crc32.h"
+
+#define MAX_TRIS 32
+#define CLEAR_COLOR 0x2104u
+
+static char msg[256];
+static uint16_t texels[16 * 16];
+static fxl_texture_t tex;
+static fxl_draw_t d_tex, d_flat_red, d_flat_green, d_flat_blue, d_bad;
+
+typedef struct scene {
+    fxl_vertex_t v[MAX_TRIS][3];
+    const fxl_draw_t *draw[MAX_TRIS];
+    int count;
+} scene_t;
+
+typedef struct run_cfg {
+    const char *panel;
+    int rotation;
+    int band_rows;
+    int dma_delay;
+    int bins;          /* 0: room for everything, 1: a few entries (fallback), 2: no bin memory */
+    int no_wait_hook;
+} run_cfg_t;
+
+typedef struct run_out {
+    uint16_t *image;   /* w x h native RGB565 as the viewer sees it */
+    int w, h;
+    fxl_stats_t stats;
+    fxl_status_t status;
+    int overflowed;
+    int protocol_errors;
+    unsigned long transfers, waits;
+    uint32_t bin_used;
+    char first_error[160];
+} run_out_t;
+
+void setUp(void)
+{
+    int x, y;
+    for (y = 0; y < 16; y++)
+        for (x = 0; x < 16; x++)
+            texels[y * 16 + x] = ((x ^ y) & 2) ? FXL_RGB565(250, 200, 40) : FXL_RGB565(30, 60, 200);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 16, 16, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d_tex);
+    d_tex.texture = &tex;
+    d_tex.filter = FXL_FILTER_BILINEAR;
+    fxl_draw_defaults(&d_flat_red);
+    d_flat_red.color = FXL_RGB565(255, 0, 0);
+    fxl_draw_defaults(&d_flat_green);
+    d_flat_green.color = FXL_RGB565(0, 255, 0);
+    fxl_draw_defaults(&d_flat_blue);
+    d_flat_blue.color = FXL_RGB565(0, 0, 255);
+    d_flat_blue.depth = 0; /* no depth test: pure painter's order */
+    fxl_draw_defaults(&d_bad);
+    d_bad.persp = 3; /* not a power of two: the core refuses it */
+}
+
+void tearDown(void)
+{
+}
+
+/* Fraction of the frame size in q16, so one scene fits every panel. */
+static fxl_q16_t fx(int w, int num, int den)
+{
+    return (fxl_q16_t)(((int64_t)w * num * 65536) / den);
+}
+
+static void tri(scene_t *s, const fxl_draw_t *d, fxl_q16_t x0, fxl_q16_t y0, uint32_t w0,
+                fxl_q16_t x1, fxl_q16_t y1, uint32_t w1, fxl_q16_t x2, fxl_q16_t y2, uint32_t w2)
+{
+    fxl_vertex_t *v = s->v[s->count];
+    TEST_ASSERT_TRUE(s->count < MAX_TRIS);
+    memset(v, 0, sizeof(fxl_vertex_t) * 3);
+    v[0].x = x0; v[0].y = y0; v[0].inv_w = w0; v[0].u = 0;          v[0].v = 0;
+    v[1].x = x1; v[1].y = y1; v[1].inv_w = w1; v[1].u = 3 * 65536;  v[1].v = 0;
+    v[2].x = x2; v[2].y = y2; v[2].inv_w = w2; v[2].u = 0;          v[2].v = 3 * 65536;
+    v[0].color = v[1].color = v[2].color = 0xFFFF;
+    s->draw[s->count] = d;
+    s->count++;
+}
+
+/* A few overlapping triangles crossing band boundaries: a perspective
+ * textured quad, depth-tested flat triangles in front of and behind it, an
+ * exact depth tie (two identical triangles, the first must win), painter's
+ * order without depth, triangles sticking out of the frame on every side,
+ * one entirely above the frame and a thin sliver. */
+static void build_scene(scene_t *s, int w, int h)
+{
+    const uint32_t far = 0x20000000u, mid = 0x40000000u, near = 0x80000000u;
+    memset(s, 0, sizeof(*s));
+    /* Receding textured quad: near at the bottom, far at the top. */
+    tri(s, &d_tex, fx(w, 1, 10), fx(h, 9, 10), near, fx(w, 9, 10), fx(h, 9, 10), near,
+        fx(w, 3, 10), fx(h, 2, 10), far);
+    tri(s, &d_tex, fx(w, 9, 10), fx(h, 9, 10), near, fx(w, 7, 10), fx(h, 2, 10), far,
+        fx(w, 3, 10), fx(h, 2, 10), far);
+    /* Red in front of part of the quad, green behind it. */
+    tri(s, &d_flat_red, fx(w, 1, 20), fx(h, 1, 3), near + 0x1000000u, fx(w, 1, 2), fx(h, 1, 2),
+        near + 0x1000000u, fx(w, 1, 5), fx(h, 7, 8), near + 0x1000000u);
+    tri(s, &d_flat_green, fx(w, 1, 2), fx(h, 1, 10), far / 2, fx(w, 19, 20), fx(h, 3, 10), far / 2,
+        fx(w, 3, 5), fx(h, 19, 20), far / 2);
+    /* Depth tie: identical vertices and depth, red first then green; the
+     * depth test is strict (greater), so red must stay. */
+    tri(s, &d_flat_red, fx(w, 3, 4), fx(h, 1, 20), mid, fx(w, 19, 20), fx(h, 1, 20), mid,
+        fx(w, 17, 20), fx(h, 2, 5), mid);
+    tri(s, &d_flat_green, fx(w, 3, 4), fx(h, 1, 20), mid, fx(w, 19, 20), fx(h, 1, 20), mid,
+        fx(w, 17, 20), fx(h, 2, 5), mid);
+    /* Painter's order without depth test, over everything. */
+    tri(s, &d_flat_blue, fx(w, 2, 5), fx(h, 2, 5), far, fx(w, 3, 5), fx(h, 9, 20), far,
+        fx(w, 9, 20), fx(h, 3, 5), far);
+    /* Out of the frame: above/left, below/right, entirely above, off right. */
+    tri(s, &d_flat_green, -fx(w, 1, 5), -fx(h, 1, 5), near, fx(w, 1, 4), -fx(h, 1, 10), near,
+        fx(w, 1, 10), fx(h, 1, 6), near);
+    tri(s, &d_tex, fx(w, 4, 5), fx(h, 4, 5), mid, fx(w, 6, 5), fx(h, 9, 10), mid, fx(w, 9, 10),
+        fx(h, 6, 5), mid);
+    tri(s, &d_flat_red, 0, -fx(h, 1, 2), near, fx(w, 1, 2), -fx(h, 1, 2), near, 0, -fx(h, 1, 4), near);
+    tri(s, &d_flat_red, fx(w, 6, 5), 0, near, fx(w, 7, 5), 0, near, fx(w, 6, 5), fx(h, 1, 1), near);
+    /* A sliver from top to bottom, 1/4 pixel wide at the base. */
+    tri(s, &d_flat_red, fx(w, 1, 3), 0, near, fx(w, 1, 3) + 16384, fx(h, 1, 1), near, fx(w, 1, 3),
+        fx(h, 1, 1), near);
+}
+
+static void render_full(const scene_t *s, int w, int h, uint16_t *out, fxl_stats_t *stats)
+{
+    uint16_t *depth = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    fxl_target_t t;
+    int i;
+    TEST_ASSERT_NOT_NULL(depth);
+    memset(stats, 0, sizeof(*stats));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, out, w, h, w, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, depth));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, CLEAR_COLOR));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+    for (i = 0; i < s->count; i++) TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, s->draw[i], s->v[i], stats));
+    free(depth);
+}
+
+/* Render through init -> band renderer -> emulated panel. Only asserts on
+ * setup; the caller checks status and the image. */
+static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
+{
+    panel_emu_t emu;
+    fxl_port_hal_t hal;
+    fxl_panel_t panel;
+    fxl_band_t band;
+    fxl_band_tri_t store[MAX_TRIS];
+    fxl_band_bin_t *bins = NULL;
+    uint32_t bin_cap = 0;
+    uint16_t *buf0, *buf1, *depth;
+    int i, bands;
+
+    memset(o, 0, sizeof(*o));
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&emu, panel_emu_module_find(cfg->panel), 0));
+    emu.panel = &panel;
+    emu.dma_delay = cfg->dma_delay;
+    panel_emu_hal(&emu, &hal);
+    if (cfg->no_wait_hook) hal.wait = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, panel_emu_preset_find(cfg->panel),
+                                                 (unsigned)cfg->rotation));
+    o->w = panel.width;
+    o->h = panel.height;
+    bands = (o->h + cfg->band_rows - 1) / cfg->band_rows;
+    if (cfg->bins == 0) bin_cap = (uint32_t)bands * (1u + MAX_TRIS);
+    if (cfg->bins == 1) bin_cap = (uint32_t)bands + 5u;
+    if (bin_cap > 0) {
+        bins = (fxl_band_bin_t *)malloc(bin_cap * sizeof(*bins));
+        TEST_ASSERT_NOT_NULL(bins);
+    }
+    buf0 = (uint16_t *)malloc((size_t)o->w * (size_t)cfg->band_rows * 2u);
+    buf1 = (uint16_t *)malloc((size_t)o->w * (size_t)cfg->band_rows * 2u);
+    depth = (uint16_t *)malloc((size_t)o->w * (size_t)cfg->band_rows * 2u);
+    o->image = (uint16_t *)malloc((size_t)o->w * (size_t)o->h * 2u);
+    TEST_ASSERT_TRUE(buf0 && buf1 && depth && o->image);
+
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&band, &panel, buf0, buf1, depth, cfg->band_rows,
+                                                store, MAX_TRIS, bins, bin_cap));
+    for (i = 0; i < s->count; i++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&band, s->v[i], s->draw[i]));
+    o->status = fxl_band_render(&band, CLEAR_COLOR, &o->stats);
+    o->overflowed = fxl_band_overflowed(&band);
+    o->bin_used = band.bin_used;
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_view(&emu, cfg->rotation, o->image, NULL, NULL));
+    o->protocol_errors = emu.errors;
+    memcpy(o->first_error, emu.first_error, sizeof(o->first_error));
+    o->transfers = emu.transfers;
+    o->waits = emu.waits;
+    panel_emu_free(&emu);
+    free(bins);
+    free(buf0);
+    free(buf1);
+    free(depth);
+}
+
+/* Banded == full frame, pixel by pixel and by CRC; returns the banded run. */
+static void check_identical(const run_cfg_t *cfg, run_out_t *o)
+{
+    scene_t s;
+    fxl_stats_t full_stats;
+    uint16_t *full;
+    int w, h, x, y;
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_frame_size(cfg->panel, cfg->rotation, &w, &h));
+    build_scene(&s, w, h);
+    full = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    TEST_ASSERT_NOT_NULL(full);
+    render_full(&s, w, h, full, &full_stats);
+    render_banded(&s, cfg, o);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, o->status);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, o->protocol_errors, o->first_error);
+    TEST_ASSERT_EQUAL_INT(w, o->w);
+    TEST_ASSERT_EQUAL_INT(h, o->h);
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            uint16_t a = full[(size_t)y * (size_t)w + (size_t)x], b = o->image[(size_t)y * (size_t)w + (size_t)x];
+            if (a != b) {
+                snprintf(msg, sizeof(msg), "%s rot %d rows %d: pixel (%d, %d) banded 0x%04X, full frame 0x%04X",
+                         cfg->panel, cfg->rotation, cfg->band_rows, x, y, b, a);
+                free(full);
+                free(o->image);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    TEST_ASSERT_EQUAL_HEX32(crc32_update(0, full, (size_t)w * (size_t)h * 2u),
+                            crc32_update(0, o->image, (size_t)w * (size_t)h * 2u));
+    /* Every covered pixel is written exactly once per frame either way. */
+    TEST_ASSERT_EQUAL_UINT32(full_stats.pixels, o->stats.pixels);
+    free(full);
+    free(o->image);
+    o->image = NULL;
+}
+
+/* ---- identical images ------------------------------------------------------ */
+
+void test_banded_frame_equals_full_frame_render(void)
+{
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 0, 0 };
+    run_out_t o;
+    check_identical(&cfg, &o);
+    /* 320x240 in 24-row bands: 10 transfers, no fallback. */
+    TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)o.transfers);
+    TEST_ASSERT_FALSE(o.overflowed);
+    /* The scene really draws: several thousand pixels (the quad alone
+     * covers about 0.6 * 0.7 / 2 * 2 of 76800 px minus overlaps). */
+    TEST_ASSERT_GREATER_THAN(10000, (int)o.stats.pixels);
+}
+
+void test_banded_frame_equals_full_frame_for_any_band_height(void)
+{
+    /* 1 row (240 bands), 7 (a short last band: 240 = 34 * 7 + 2), 24, 240. */
+    static const int rows[] = { 1, 7, 24, 240 };
+    size_t i;
+    for (i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
+        run_cfg_t cfg = { "st7789", 1, 24, 1, 0, 0 };
+        run_out_t o;
+        cfg.band_rows = rows[i];
+        check_identical(&cfg, &o);
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)((240 + rows[i] - 1) / rows[i]), (uint32_t)o.transfers);
+    }
+}
+
+void test_banded_frame_equals_full_frame_every_preset_and_rotation(void)
+{
+    static const char *const names[] = { "st7789-240x320", "st7789-240x240", "st7789-135x240",
+                                         "ili9341-240x320" };
+    size_t i;
+    int r;
+    for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+        for (r = 0; r < 4; r++) {
+            run_cfg_t cfg = { NULL, 0, 16, 2, 0, 0 };
+            run_out_t o;
+            cfg.panel = names[i];
+            cfg.rotation = r;
+            check_identical(&cfg, &o);
+        }
+    }
+}
+
+void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
+{
+    /* Completions arrive 0 (inside pixels()), 1, 5 and 50 HAL calls late.
+     * The mock compares each buffer at completion with its content when
+     * sent, so drawing into it early would be a protocol error, and the
+     * image would differ. With a delay d, every transfer needs d ticks, all
+     * spent in the wait hook: waits == d * transfers exactly. */
+    static const int delays[] = { 0, 1, 5, 50 };
+    size_t i;
+    for (i = 0; i < sizeof(delays) / sizeof(delays[0]); i++) {
+        run_cfg_t cfg = { "st7789", 1, 24, 0, 0, 0 };
+        run_out_t o;
+        cfg.dma_delay = delays[i];
+        check_identical(&cfg, &o);
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)(delays[i] * 10), (uint32_t)o.waits);
+    }
+}
+
+void test_without_wait_hook_the_driver_spins_on_the_completion_counter(void)
+{
+    run_cfg_t cfg = { "ili9341", 0, 32, 0, 0, 1 };
+    run_out_t o;
+    check_identical(&cfg, &o);
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)o.waits);
+}
+
+void test_bin_budget_exceeded_falls_back_with_identical_image(void)
+{
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 1, 0 };
+    run_out_t o;
+    check_identical(&cfg, &o);
+    TEST_ASSERT_TRUE(o.overflowed);
+}
+
+void test_no_bin_memory_scans_every_triangle_with_identical_image(void)
+{
+    run_cfg_t cfg = { "st7789", 3, 24, 2, 2, 0 };
+    run_out_t o;
+    check_identical(&cfg, &o);
+    TEST_ASSERT_TRUE(o.overflowed);
+}
+
+/* ---- binning --------------------------------------------------------------- */
+
+typedef struct band_fixture {
+    panel_emu_t emu;
+    fxl_port_hal_t hal;
+    fxl_panel_t panel;
+    fxl_band_t band;
+    fxl_band_tri_t store[4];
+    fxl_band_bin_t bins[64];
+    uint16_t buf0[320 * 24], buf1[320 * 24], depth[320 * 24];
+} band_fixture_t;
+
+static band_fixture_t *fixture(void)
+{
+    band_fixture_t *f = (band_fixture_t *)calloc(1, sizeof(band_fixture_t));
+    TEST_ASSERT_NOT_NULL(f);
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&f->emu, panel_emu_module_find("st7789"), 0));
+    f->emu.panel = &f->panel;
+    panel_emu_hal(&f->emu, &f->hal);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&f->panel, &f->hal, &fxl_st7789_240x320, 1));
+    return f;
+}
+
+static void fixture_free(band_fixture_t *f)
+{
+    panel_emu_free(&f->emu);
+    free(f);
+}
+
+static void flat_tri(fxl_vertex_t v[3], int y0, int y1)
+{
+    memset(v, 0, sizeof(fxl_vertex_t) * 3);
+    v[0].x = FXL_Q16_INT(10); v[0].y = FXL_Q16_INT(y0);
+    v[1].x = FXL_Q16_INT(50); v[1].y = FXL_Q16_INT(y0);
+    v[2].x = FXL_Q16_INT(30); v[2].y = FXL_Q16_INT(y1);
+    v[0].inv_w = v[1].inv_w = v[2].inv_w = 0x40000000u;
+}
+
+void test_triangle_is_listed_once_in_each_band_it_touches(void)
+{
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    fxl_draw_defaults(&d);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24,
+                                                f->store, 4, f->bins, 64));
+    /* 10 bands of 24 rows use 10 list headers. */
+    TEST_ASSERT_EQUAL_UINT32(10, f->band.bin_used);
+    /* y 10..50: rows 9..50 with the half-step margin -> bands 0..2. */
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(13, f->band.bin_used);
+    TEST_ASSERT_EQUAL_UINT32(0, f->store[0].band0);
+    TEST_ASSERT_EQUAL_UINT32(2, f->store[0].band1);
+    /* y 100..119.5 stays inside band 4 (rows 96..119). */
+    flat_tri(v, 100, 119);
+    v[2].y += FXL_Q16_HALF;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(14, f->band.bin_used);
+    TEST_ASSERT_EQUAL_UINT32(4, f->store[1].band0);
+    TEST_ASSERT_EQUAL_UINT32(4, f->store[1].band1);
+    /* Entirely above or below the frame: dropped, nothing stored. */
+    flat_tri(v, -40, -2);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    flat_tri(v, 241, 300);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(2, f->band.tri_count);
+    TEST_ASSERT_FALSE(fxl_band_overflowed(&f->band));
+    /* A new frame forgets the scene. */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_begin(&f->band));
+    TEST_ASSERT_EQUAL_UINT32(0, f->band.tri_count);
+    TEST_ASSERT_EQUAL_UINT32(10, f->band.bin_used);
+    fixture_free(f);
+}
+
+void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
+{
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    fxl_draw_defaults(&d);
+    /* 10 headers + 4 entries: a 3-band triangle fits, the next 3-band one
+     * does not, and a later 1-band one must not be binned either (order). */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24,
+                                                f->store, 4, f->bins, 14));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_FALSE(fxl_band_overflowed(&f->band));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_TRUE(fxl_band_overflowed(&f->band));
+    flat_tri(v, 100, 110);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(13, f->band.bin_used);
+    TEST_ASSERT_EQUAL_UINT32(1, f->band.first_unbinned);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_render(&f->band, 0, NULL));
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
+/* ---- error paths ----------------------------------------------------------- */
+
+void test_band_api_errors(void)
+{
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    fxl_draw_defaults(&d);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(NULL, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, NULL, f->buf0, f->buf1, NULL, 24, f->store, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, NULL, f->buf1, NULL, 24, f->store, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf0, NULL, 24, f->store, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 0, f->store, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, NULL, 4, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 0, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, NULL, 5));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 241, f->store, 4, NULL, 0));
+    /* Fewer entries than the 10 band headers. */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, f->bins, 9));
+
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24, f->store, 2, f->bins, 64));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_add(&f->band, NULL, &d));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_add(&f->band, v, NULL));
+    v[1].inv_w = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_add(&f->band, v, &d));
+    v[1].inv_w = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_band_add(&f->band, v, &d)); /* store of 2 is full */
+    TEST_ASSERT_EQUAL_UINT32(2, f->band.tri_count);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_render(NULL, 0, NULL));
+    /* Rotating the panel after init changes the frame: re-init needed. */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&f->panel, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_render(&f->band, 0, NULL));
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
+void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
+{
+    /* A triangle the core refuses (persp 3) must not leave the panel
+     * mid-RAMWR: every band is still sent, then the error is returned. */
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    fxl_draw_defaults(&d);
+    f->emu.dma_delay = 2;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24,
+                                                f->store, 4, f->bins, 64));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d_bad));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_render(&f->band, 0, NULL));
+    TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)f->emu.transfers);
+    TEST_ASSERT_EQUAL_UINT32(f->panel.started, f->panel.done);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
+void test_render_scene_helper_matches_full_frame(void)
+{
+    /* The one-call helper fixel-sim uses: same image as a full-frame render. */
+    scene_t s;
+    fxl_band_tri_t tris[MAX_TRIS];
+    panel_emu_result_t res;
+    fxl_stats_t full_stats;
+    uint16_t *full, *out;
+    int i, w, h;
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_frame_size("st7789-135x240", 1, &w, &h));
+    build_scene(&s, w, h);
+    for (i = 0; i < s.count; i++) {
+        memcpy(tris[i].v, s.v[i], sizeof(tris[i].v));
+        tris[i].draw = s.draw[i];
+    }
+    full = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    out = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    TEST_ASSERT_TRUE(full && out);
+    render_full(&s, w, h, full, &full_stats);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, panel_emu_render_scene("st7789-135x240", 1, 0, tris, (size_t)s.count,
+                                                         CLEAR_COLOR, out, (size_t)w * (size_t)h, &res));
+    TEST_ASSERT_EQUAL_INT(0, res.protocol_errors);
+    TEST_ASSERT_EQUAL_INT(w, res.width);
+    TEST_ASSERT_EQUAL_INT(h, res.height);
+    TEST_ASSERT_EQUAL_HEX32(crc32_update(0, full, (size_t)w * (size_t)h * 2u),
+                            crc32_update(0, out, (size_t)w * (size_t)h * 2u));
+    /* Frame bytes: 11 window bytes + 2 per pixel. */
+    TEST_ASSERT_EQUAL_UINT32(full_stats.pixels, res.stats.pixels);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, panel_emu_render_scene("nope", 0, 0, tris, 1, 0, out,
+                                                              (size_t)w * (size_t)h, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, panel_emu_render_scene("st7789", 0, 0, tris, 1, 0, out, 10, NULL));
+    free(full);
+    free(out);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_banded_frame_equals_full_frame_render);
+    RUN_TEST(test_banded_frame_equals_full_frame_for_any_band_height);
+    RUN_TEST(test_banded_frame_equals_full_frame_every_preset_and_rotation);
+    RUN_TEST(test_late_dma_completion_never_lets_a_buffer_be_reused_early);
+    RUN_TEST(test_without_wait_hook_the_driver_spins_on_the_completion_counter);
+    RUN_TEST(test_bin_budget_exceeded_falls_back_with_identical_image);
+    RUN_TEST(test_no_bin_memory_scans_every_triangle_with_identical_image);
+    RUN_TEST(test_triangle_is_listed_once_in_each_band_it_touches);
+    RUN_TEST(test_triangle_that_does_not_fit_the_bins_starts_the_fallback);
+    RUN_TEST(test_band_api_errors);
+    RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);
+    RUN_TEST(test_render_scene_helper_matches_full_frame);
+    return UNITY_END();
+}

@@ -1,0 +1,527 @@
+/* test_port_dcs.c - the MIPI DCS driver layer: exact bytes on the wire for
+ * init, windows and pixels, every preset and rotation, the HAL contract and
+ * its error paths. The wire is recorded by the panel emulator (panel_emu.h). */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <string.h>
+
+#include "unity.h"
+#include "fixel/port.h"
+#include "panel_emu.h"
+
+static panel_emu_t emu;
+static int emu_live;
+static fxl_port_hal_t hal;
+static fxl_panel_t panel;
+static char msg[256];
+
+#define C(x) PANEL_EMU_EV(PANEL_EMU_EV_CMD, x)
+#define D(x) PANEL_EMU_EV(PANEL_EMU_EV_DATA, x)
+#define W(x) PANEL_EMU_EV(PANEL_EMU_EV_DELAY, x)
+#define R(x) PANEL_EMU_EV(PANEL_EMU_EV_RESET, x)
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+
+static void start_emu(const char *name)
+{
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&emu, panel_emu_module_find(name), 0));
+    emu_live = 1;
+    emu.panel = &panel;
+    panel_emu_hal(&emu, &hal);
+}
+
+void setUp(void)
+{
+    emu_live = 0;
+    memset(&panel, 0, sizeof(panel));
+}
+
+void tearDown(void)
+{
+    if (emu_live) panel_emu_free(&emu);
+    emu_live = 0;
+}
+
+static const char *ev_name(uint32_t ev)
+{
+    switch (ev >> 16) {
+    case PANEL_EMU_EV_CMD: return "cmd";
+    case PANEL_EMU_EV_DATA: return "data";
+    case PANEL_EMU_EV_DELAY: return "delay";
+    case PANEL_EMU_EV_RESET: return "reset";
+    default: return "?";
+    }
+}
+
+/* The recorded events from `from` on must be exactly `exp`. */
+static void assert_wire(size_t from, const uint32_t *exp, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n && from + i < emu.log_len; i++) {
+        uint32_t got = emu.log[from + i];
+        snprintf(msg, sizeof(msg), "wire event %zu: expected %s 0x%02X, got %s 0x%02X", i,
+                 ev_name(exp[i]), (unsigned)(exp[i] & 0xFFFFu), ev_name(got),
+                 (unsigned)(got & 0xFFFFu));
+        TEST_ASSERT_EQUAL_HEX32_MESSAGE(exp[i], got, msg);
+    }
+    snprintf(msg, sizeof(msg), "wire has %zu events, expected %zu", emu.log_len - from, n);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE((uint32_t)n, (uint32_t)(emu.log_len - from), msg);
+}
+
+static void assert_no_protocol_errors(void)
+{
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, emu.errors, emu.first_error);
+}
+
+/* ---- init sequences ------------------------------------------------------ */
+
+void test_st7789_init_with_reset_pin_exact_bytes(void)
+{
+    /* RESX pulse (>= 10 us low; 1 ms granularity), 120 ms before SLPOUT,
+     * 120 ms after it, COLMOD 16 bit, MADCTL 0 for rotation 0, INVON for
+     * the IPS glass, NORON, DISPON. */
+    static const uint32_t exp[] = {
+        R(1), W(1), R(0), W(1), R(1), W(120),
+        C(0x11), W(120),
+        C(0x3A), D(0x55),
+        C(0x36), D(0x00),
+        C(0x21), C(0x13), C(0x29),
+    };
+    start_emu("st7789-240x240");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x240, 0));
+    assert_wire(0, exp, COUNT(exp));
+    assert_no_protocol_errors();
+    TEST_ASSERT_EQUAL_INT(1, emu.display_on);
+    TEST_ASSERT_EQUAL_INT(0, emu.sleeping);
+}
+
+void test_st7789_init_without_reset_pin_uses_swreset(void)
+{
+    static const uint32_t exp[] = {
+        C(0x01), W(120),
+        C(0x11), W(120),
+        C(0x3A), D(0x55),
+        C(0x36), D(0x60), /* rotation 1: MX | MV */
+        C(0x21), C(0x13), C(0x29),
+    };
+    start_emu("st7789-240x320");
+    hal.reset = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 1));
+    assert_wire(0, exp, COUNT(exp));
+    assert_no_protocol_errors();
+    TEST_ASSERT_EQUAL_INT(320, panel.width);
+    TEST_ASSERT_EQUAL_INT(240, panel.height);
+}
+
+void test_ili9341_init_exact_bytes(void)
+{
+    static const uint32_t exp[] = {
+        R(1), W(1), R(0), W(1), R(1), W(120),
+        C(0x11), W(120),
+        C(0xC0), D(0x23),
+        C(0xC1), D(0x10),
+        C(0xC5), D(0x3E), D(0x28),
+        C(0xC7), D(0x86),
+        C(0xB1), D(0x00), D(0x18),
+        C(0xB6), D(0x08), D(0x82), D(0x27),
+        C(0x26), D(0x01),
+        C(0x3A), D(0x55),
+        C(0x36), D(0xE8), /* rotation 3: MY | MX | MV | BGR */
+        C(0x20), C(0x13), C(0x29),
+    };
+    start_emu("ili9341");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_ili9341_240x320, 3));
+    assert_wire(0, exp, COUNT(exp));
+    assert_no_protocol_errors();
+}
+
+void test_madctl_per_rotation_for_every_preset(void)
+{
+    /* ST7789: 0, MX|MV, MX|MY, MY|MV; ILI9341: MX, MV, MY, MX|MY|MV, + BGR. */
+    static const struct { const fxl_panel_preset_t *p; uint8_t m[4]; } cases[] = {
+        { &fxl_st7789_240x320, { 0x00, 0x60, 0xC0, 0xA0 } },
+        { &fxl_st7789_240x240, { 0x00, 0x60, 0xC0, 0xA0 } },
+        { &fxl_st7789_135x240, { 0x00, 0x60, 0xC0, 0xA0 } },
+        { &fxl_ili9341_240x320, { 0x48, 0x28, 0x88, 0xE8 } },
+    };
+    size_t i;
+    unsigned r;
+    for (i = 0; i < COUNT(cases); i++) {
+        start_emu(cases[i].p->name);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, cases[i].p, 0));
+        for (r = 0; r < 4; r++) {
+            static uint32_t exp[2];
+            size_t from = emu.log_len;
+            exp[0] = C(0x36);
+            exp[1] = D(cases[i].m[r]);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&panel, r));
+            assert_wire(from, exp, 2);
+        }
+        assert_no_protocol_errors();
+        tearDown();
+    }
+}
+
+/* ---- windows ------------------------------------------------------------- */
+
+/* RAM offsets per rotation (derivation in port/st7789.c): the glass at
+ * columns c0..c0+w-1 / rows r0..r0+h-1 of the 240x320 memory appears at
+ * 240-c0-w / 320-r0-h when MX / MY mirror that axis. */
+static const struct {
+    const fxl_panel_preset_t *p;
+    int w, h;
+    int off[4][2];
+} window_cases[] = {
+    { &fxl_st7789_240x320, 240, 320, { { 0, 0 }, { 0, 0 }, { 0, 0 }, { 0, 0 } } },
+    { &fxl_st7789_240x240, 240, 240, { { 0, 0 }, { 0, 0 }, { 0, 80 }, { 80, 0 } } },
+    { &fxl_st7789_135x240, 135, 240, { { 52, 40 }, { 40, 53 }, { 53, 40 }, { 40, 52 } } },
+    { &fxl_ili9341_240x320, 240, 320, { { 0, 0 }, { 0, 0 }, { 0, 0 }, { 0, 0 } } },
+};
+
+static void expect_window(size_t from, int x0, int y0, int x1, int y1)
+{
+    uint32_t exp[11];
+    exp[0] = C(0x2A);
+    exp[1] = D((unsigned)x0 >> 8);
+    exp[2] = D((unsigned)x0 & 0xFFu);
+    exp[3] = D((unsigned)x1 >> 8);
+    exp[4] = D((unsigned)x1 & 0xFFu);
+    exp[5] = C(0x2B);
+    exp[6] = D((unsigned)y0 >> 8);
+    exp[7] = D((unsigned)y0 & 0xFFu);
+    exp[8] = D((unsigned)y1 >> 8);
+    exp[9] = D((unsigned)y1 & 0xFFu);
+    exp[10] = C(0x2C);
+    assert_wire(from, exp, 11);
+}
+
+void test_full_window_bytes_every_preset_and_rotation(void)
+{
+    size_t i;
+    int r;
+    for (i = 0; i < COUNT(window_cases); i++) {
+        start_emu(window_cases[i].p->name);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, window_cases[i].p, 0));
+        for (r = 0; r < 4; r++) {
+            const int w = (r & 1) ? window_cases[i].h : window_cases[i].w;
+            const int h = (r & 1) ? window_cases[i].w : window_cases[i].h;
+            const int ox = window_cases[i].off[r][0], oy = window_cases[i].off[r][1];
+            size_t from;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&panel, (unsigned)r));
+            TEST_ASSERT_EQUAL_INT(w, panel.width);
+            TEST_ASSERT_EQUAL_INT(h, panel.height);
+            from = emu.log_len;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, w, h));
+            expect_window(from, ox, oy, ox + w - 1, oy + h - 1);
+        }
+        assert_no_protocol_errors();
+        tearDown();
+    }
+}
+
+void test_partial_window_bytes_every_preset_and_rotation(void)
+{
+    size_t i;
+    int r;
+    for (i = 0; i < COUNT(window_cases); i++) {
+        start_emu(window_cases[i].p->name);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, window_cases[i].p, 0));
+        for (r = 0; r < 4; r++) {
+            const int ox = window_cases[i].off[r][0], oy = window_cases[i].off[r][1];
+            size_t from;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&panel, (unsigned)r));
+            from = emu.log_len;
+            /* Bottom-right corner pixel block 7x2 ending at the last column/row. */
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, panel.width - 7,
+                                                               panel.height - 2, 7, 2));
+            expect_window(from, ox + panel.width - 7, oy + panel.height - 2,
+                          ox + panel.width - 1, oy + panel.height - 1);
+        }
+        assert_no_protocol_errors();
+        tearDown();
+    }
+}
+
+void test_window_addresses_above_255_are_big_endian(void)
+{
+    static const uint32_t exp[] = {
+        C(0x2A), D(0x01), D(0x00), D(0x01), D(0x3F),
+        C(0x2B), D(0x00), D(0x10), D(0x00), D(0xEF),
+        C(0x2C),
+    };
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_dcs_window(&hal, 256, 16, 319, 239));
+    assert_wire(0, exp, COUNT(exp));
+}
+
+void test_window_outside_visible_area_is_range_error(void)
+{
+    start_emu("st7789-135x240");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_135x240, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 0, 0, 136, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 0, 239, 1, 2));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, -1, 0, 1, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 0, 0, 0, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 134, 0, INT32_MAX, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_dcs_window(&hal, 5, 0, 4, 0));
+}
+
+/* ---- pixels -------------------------------------------------------------- */
+
+static uint16_t to_wire(uint16_t rgb565)
+{
+    return fxl_port_wire_format() == FXL_PIXFMT_RGB565_SWAP
+               ? (uint16_t)((rgb565 >> 8) | (rgb565 << 8))
+               : rgb565;
+}
+
+void test_wire_format_matches_cpu_byte_order(void)
+{
+    const uint16_t probe = 0x1234u;
+    unsigned char b[2];
+    memcpy(b, &probe, 2);
+    TEST_ASSERT_EQUAL_INT(b[0] == 0x34 ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565,
+                          fxl_port_wire_format());
+}
+
+void test_pixels_go_out_high_byte_first_without_copy(void)
+{
+    /* Red 0xF800, magenta 0xF81F, green 0x07E0 must appear as F8 00, F8 1F,
+     * 07 E0, and the controller must store exactly those RGB565 words. */
+    static const uint32_t exp[] = { D(0xF8), D(0x00), D(0xF8), D(0x1F), D(0x07), D(0xE0) };
+    uint16_t buf[3];
+    size_t from;
+    int col, row;
+    buf[0] = to_wire(0xF800u);
+    buf[1] = to_wire(0xF81Fu);
+    buf[2] = to_wire(0x07E0u);
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 10, 20, 3, 1));
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+    assert_wire(from, exp, COUNT(exp));
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_map(&emu, 11, 20, &col, &row));
+    TEST_ASSERT_EQUAL_HEX16(0xF81Fu, emu.ram[row * 240 + col]);
+    assert_no_protocol_errors();
+}
+
+void test_late_completion_is_waited_for_through_the_wait_hook(void)
+{
+    /* dma_delay 3: the transfer completes on the third HAL call after
+     * pixels(); only wait() calls follow, so exactly 3 waits. */
+    uint16_t buf[4] = { 1, 2, 3, 4 };
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 4, 1));
+    emu.dma_delay = 3;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_UINT32(1, panel.started);
+    TEST_ASSERT_EQUAL_UINT32(0, panel.done);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+    TEST_ASSERT_EQUAL_UINT32(1, panel.done);
+    TEST_ASSERT_EQUAL_UINT32(3, (uint32_t)emu.waits);
+    assert_no_protocol_errors();
+}
+
+void test_second_write_waits_for_the_first_transfer(void)
+{
+    /* A second write while the first is on the wire would be a protocol
+     * error in the emulator ("pixels() while transfer in flight"). */
+    uint16_t a[2] = { 1, 2 }, b[2] = { 3, 4 };
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 4, 1));
+    emu.dma_delay = 5;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, a, sizeof(a)));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, b, sizeof(b)));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 1, 1, 1));
+    assert_no_protocol_errors();
+    TEST_ASSERT_EQUAL_UINT32(2, panel.done);
+}
+
+void test_sync_hal_counts_its_own_completion(void)
+{
+    uint16_t buf[2] = { 1, 2 };
+    start_emu("st7789");
+    emu.panel = NULL; /* a blocking HAL never reports */
+    hal.flags = FXL_PORT_PIXELS_SYNC;
+    hal.wait = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_UINT32(1, panel.done);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+    assert_no_protocol_errors();
+}
+
+void test_transfer_done_is_a_counter_and_ignores_null(void)
+{
+    fxl_port_transfer_done(NULL);
+    panel.done = 0xFFFFFFFFu;
+    fxl_port_transfer_done(&panel);
+    TEST_ASSERT_EQUAL_UINT32(0, panel.done);
+}
+
+/* ---- HAL contract and error paths ---------------------------------------- */
+
+static fxl_status_t failing_cmd(void *user, uint8_t c, const uint8_t *p, size_t n)
+{
+    (void)user; (void)c; (void)p; (void)n;
+    return FXL_ERR_IO;
+}
+static fxl_status_t failing_pixels(void *user, const void *d, size_t n)
+{
+    (void)user; (void)d; (void)n;
+    return FXL_ERR_BUSY;
+}
+static fxl_status_t failing_wait(void *user)
+{
+    (void)user;
+    return FXL_ERR_BUSY;
+}
+
+void test_null_and_missing_required_callbacks_are_arg_errors(void)
+{
+    fxl_port_hal_t h;
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(NULL, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, NULL, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 4));
+    h = hal;
+    h.cmd = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &h, &fxl_st7789_240x320, 0));
+    h = hal;
+    h.pixels = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &h, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_cmd(NULL, 0x29, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_cmd(&hal, 0x29, NULL, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_window(NULL, 0, 0, 0, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_run(&hal, NULL, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(NULL, "ab", 2));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_wait_idle(NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_set_window(NULL, 0, 0, 1, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_set_rotation(NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_display(NULL, 1));
+    /* Nothing reached the wire. */
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+}
+
+void test_optional_wrappers_report_unsupported_when_null(void)
+{
+    fxl_port_hal_t h;
+    memset(&h, 0, sizeof(h));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_port_reset(&h, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_port_delay_ms(&h, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_port_wait_hook(&h));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_port_reset(NULL, 1));
+}
+
+void test_init_without_delay_refuses_before_sending_anything(void)
+{
+    start_emu("st7789");
+    hal.delay_ms = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+}
+
+void test_missing_reset_and_wait_hooks_still_work(void)
+{
+    /* reset NULL: SWRESET path; wait NULL: the driver spins on the counter,
+     * which the mock raises inside pixels() (dma_delay 0, an ISR firing at
+     * once). */
+    uint16_t buf[8] = { 0 };
+    start_emu("st7789");
+    hal.reset = NULL;
+    hal.wait = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 2));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 8, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+    TEST_ASSERT_EQUAL_UINT32(1, panel.done);
+    assert_no_protocol_errors();
+}
+
+void test_hal_failures_become_io_errors(void)
+{
+    uint16_t buf[2] = { 0, 0 };
+    start_emu("st7789");
+    hal.cmd = failing_cmd;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    tearDown();
+
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    panel.hal.pixels = failing_pixels;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_write(&panel, buf, sizeof(buf)));
+    /* A refused start is not in flight: waiting returns at once. */
+    TEST_ASSERT_EQUAL_UINT32(0, panel.started);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+}
+
+void test_wait_hook_can_abort_a_stuck_transfer(void)
+{
+    uint16_t buf[2] = { 0, 0 };
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    emu.dma_delay = 1000000; /* never completes within this test */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    panel.hal.wait = failing_wait;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_wait_idle(&panel));
+    panel_emu_flush(&emu);
+}
+
+void test_bad_write_sizes_are_arg_errors(void)
+{
+    uint16_t buf[2] = { 0, 0 };
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, buf, 3));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, buf, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, NULL, 2));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_set_rotation(&panel, 4));
+}
+
+void test_display_off_and_on(void)
+{
+    static const uint32_t exp[] = { C(0x28), C(0x29) };
+    size_t from;
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_display(&panel, 0));
+    TEST_ASSERT_EQUAL_INT(0, emu.display_on);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_display(&panel, 1));
+    assert_wire(from, exp, COUNT(exp));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_st7789_init_with_reset_pin_exact_bytes);
+    RUN_TEST(test_st7789_init_without_reset_pin_uses_swreset);
+    RUN_TEST(test_ili9341_init_exact_bytes);
+    RUN_TEST(test_madctl_per_rotation_for_every_preset);
+    RUN_TEST(test_full_window_bytes_every_preset_and_rotation);
+    RUN_TEST(test_partial_window_bytes_every_preset_and_rotation);
+    RUN_TEST(test_window_addresses_above_255_are_big_endian);
+    RUN_TEST(test_window_outside_visible_area_is_range_error);
+    RUN_TEST(test_wire_format_matches_cpu_byte_order);
+    RUN_TEST(test_pixels_go_out_high_byte_first_without_copy);
+    RUN_TEST(test_late_completion_is_waited_for_through_the_wait_hook);
+    RUN_TEST(test_second_write_waits_for_the_first_transfer);
+    RUN_TEST(test_sync_hal_counts_its_own_completion);
+    RUN_TEST(test_transfer_done_is_a_counter_and_ignores_null);
+    RUN_TEST(test_null_and_missing_required_callbacks_are_arg_errors);
+    RUN_TEST(test_optional_wrappers_report_unsupported_when_null);
+    RUN_TEST(test_init_without_delay_refuses_before_sending_anything);
+    RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
+    RUN_TEST(test_hal_failures_become_io_errors);
+    RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
+    RUN_TEST(test_bad_write_sizes_are_arg_errors);
+    RUN_TEST(test_display_off_and_on);
+    return UNITY_END();
+}
