@@ -634,6 +634,83 @@ void test_subdivided_modes_within_derived_bound_and_affine_is_worse(void)
     TEST_ASSERT_TRUE_MESSAGE(affine_e > 1.0 && affine_e > 100 * exact_e, msg);
 }
 
+/* ---- adaptive perspective --------------------------------------------------- */
+
+static int probe_seg_len_max;
+static uint32_t probe_seg_len(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    (void)s;
+    if (tri->seg_log2 > probe_seg_len_max)
+        probe_seg_len_max = tri->seg_log2;
+    return probe_seg(tri, s);
+}
+
+static int rolled_floor_scene(tri_t *out, double roll_deg)
+{
+    double P[4][3] = {{-40, -0.577, -1}, {40, -0.577, -1}, {40, -0.577, -50}, {-40, -0.577, -50}};
+    static const double uv[4][2] = {{-20, -0.5}, {20, -0.5}, {20, -25}, {-20, -25}};
+    double c = cos(roll_deg * FXL_TEST_PI / 180), sn = sin(roll_deg * FXL_TEST_PI / 180);
+    fxl_vertex_t q[4];
+    int i;
+    for (i = 0; i < 4; i++) {
+        double x = P[i][0] * c - P[i][1] * sn, y = P[i][0] * sn + P[i][1] * c;
+        q[i] = project(x, y, P[i][2], uv[i][0], uv[i][1]);
+    }
+    out[0].v[0] = q[0]; out[0].v[1] = q[1]; out[0].v[2] = q[2];
+    out[1].v[0] = q[0]; out[1].v[1] = q[2]; out[1].v[2] = q[3];
+    return 2;
+}
+
+/* FXL_PERSP_AUTO keeps the max texel error under its budget on the floor,
+ * the 40-degree rolled floor (spans cross depth: the hard case) and the cube
+ * for budgets 1/16, 1/4 and 1 texel; the unrolled floor, whose spans have
+ * constant depth, gets whole-span affine (log2 length 8). */
+void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
+{
+    static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
+    tri_t tris[12];
+    int b, sc, k, n;
+    char msg[160];
+    for (sc = 0; sc < 3; sc++) {
+        n = sc == 0 ? floor_scene(tris) : (sc == 1 ? rolled_floor_scene(tris, 40) : cube_scene(tris));
+        for (b = 0; b < 3; b++) {
+            static uint16_t buf[320 * 240];
+            static uint16_t texels[64 * 64];
+            fxl_target_t t;
+            fxl_draw_t d;
+            fxl_texture_t tex;
+            double maxe = 0;
+            int x, y;
+            fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.depth = 0;
+            d.persp = FXL_PERSP_AUTO;
+            d.auto_budget = budgets[b];
+            probe_seg_len_max = -1;
+            for (k = 0; k < n; k++) {
+                probe_target(&t, buf, 320, 240);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg_len));
+                for (y = 0; y < 240; y++)
+                    for (x = 0; x < 320; x++)
+                        if (probe_count[y * 320 + x]) {
+                            double eu, ev, e;
+                            exact_uv(tris[k].v, 64, 64, 0, x, y, &eu, &ev);
+                            e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
+                            if (e > maxe)
+                                maxe = e;
+                        }
+            }
+            snprintf(msg, sizeof msg, "scene %d budget %.4f: max error %.4f texels, longest segment 2^%d", sc,
+                     budgets[b] / 65536.0, maxe, probe_seg_len_max);
+            TEST_MESSAGE(msg);
+            TEST_ASSERT_TRUE_MESSAGE(maxe <= budgets[b] / 65536.0, msg);
+            if (sc == 0)
+                TEST_ASSERT_EQUAL_INT_MESSAGE(8, probe_seg_len_max, msg);
+        }
+    }
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -714,6 +791,7 @@ int main(void)
     RUN_TEST(test_band_and_clip_renders_are_bit_identical_to_full_frame);
     RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
+    RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();
 }
