@@ -1,0 +1,140 @@
+/* src/clip.c - Sutherland-Hodgman clipping of a triangle in homogeneous clip
+ * space (int64 q32), before the perspective divide.
+ *
+ * Planes, in this order, as signed distances d (inside: d >= 0):
+ *   near  w - near          far  far - w (only when far != 0)
+ *   +x    G w - x           -x   G w + x
+ *   +y    G w - y           -y   G w + y
+ * Ranges: |x|, |y|, |w| < 2^52 (FXL_CLIP_LIMIT_Q32) and G <= 256 (q16
+ * <= 2^24), so G w < 2^60, |d| < 2^61 and d_in - d_out < 2^62: no overflow.
+ * Interpolation is linear in clip space, which is the perspective-correct
+ * choice for every attribute. The parameter t = d_in / (d_in - d_out) is
+ * formed in q31 from the two distances reduced to 32 significant bits, so
+ * its relative error is below 2^-31; the new vertex is then put exactly on
+ * the plane (w = near, x = G w, ...) so later stages can rely on it.
+ */
+#include "pipeline_int.h"
+
+#define CLIP_SCRATCH 16 /* > FXL_CLIP_MAX_VERTS, see the capacity check */
+
+enum { PL_NEAR, PL_FAR, PL_XP, PL_XN, PL_YP, PL_YN, PL_COUNT };
+
+static int64_t guard_w(const fxl_xform_t *xf, int64_t w)
+{
+    return fxl__mul_shr(w, (uint32_t)xf->guard_q16, 16, NULL);
+}
+
+static int64_t plane_dist(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *v)
+{
+    switch (plane) {
+    case PL_NEAR: return v->w - xf->near_q32;
+    case PL_FAR: return xf->far_q32 - v->w;
+    case PL_XP: return guard_w(xf, v->w) - v->x;
+    case PL_XN: return guard_w(xf, v->w) + v->x;
+    case PL_YP: return guard_w(xf, v->w) - v->y;
+    default: return guard_w(xf, v->w) + v->y;
+    }
+}
+
+static int64_t lerp64(int64_t a, int64_t b, uint32_t t_q31)
+{
+    return a + fxl__mul_shr(b - a, t_q31, 31, NULL);
+}
+
+static int32_t lerp32(int32_t a, int32_t b, uint32_t t_q31)
+{
+    /* the result lies between a and b, so it fits */
+    return (int32_t)lerp64(a, b, t_q31);
+}
+
+/* The point where the edge from `in` (d_in >= 0) to `out` (d_out < 0)
+ * crosses the plane. */
+static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in, int64_t d_in,
+                      const fxl_clipvert_t *out, int64_t d_out, fxl_clipvert_t *res)
+{
+    uint64_t num = (uint64_t)d_in, den = (uint64_t)d_in + (uint64_t)(-d_out);
+    uint32_t t;
+    int top = 63 - fxl__clz64(den);
+    if (top > 31) { /* keep 32 significant bits; num <= den stays true */
+        num >>= (top - 31);
+        den >>= (top - 31);
+    }
+    t = (uint32_t)(((num << 31) + den / 2u) / den); /* <= 2^31 */
+    res->x = lerp64(in->x, out->x, t);
+    res->y = lerp64(in->y, out->y, t);
+    res->w = lerp64(in->w, out->w, t);
+    res->u = lerp32(in->u, out->u, t);
+    res->v = lerp32(in->v, out->v, t);
+    res->r = lerp32(in->r, out->r, t);
+    res->g = lerp32(in->g, out->g, t);
+    res->b = lerp32(in->b, out->b, t);
+    switch (plane) {
+    case PL_NEAR: res->w = xf->near_q32; break;
+    case PL_FAR: res->w = xf->far_q32; break;
+    case PL_XP: res->x = guard_w(xf, res->w); break;
+    case PL_XN: res->x = -guard_w(xf, res->w); break;
+    case PL_YP: res->y = guard_w(xf, res->w); break;
+    default: res->y = -guard_w(xf, res->w); break;
+    }
+    if (res->w < xf->near_q32) res->w = xf->near_q32; /* rounding never takes it behind near */
+}
+
+static int outcode(const fxl_xform_t *xf, const fxl_clipvert_t *v)
+{
+    int code = 0, pl;
+    for (pl = 0; pl < PL_COUNT; pl++) {
+        if (pl == PL_FAR && xf->far_q32 == 0) continue;
+        if (plane_dist(xf, pl, v) < 0) code |= 1 << pl;
+    }
+    return code;
+}
+
+static int in_range(const fxl_clipvert_t *v)
+{
+    return v->x < FXL_CLIP_LIMIT_Q32 && v->x > -FXL_CLIP_LIMIT_Q32 &&
+           v->y < FXL_CLIP_LIMIT_Q32 && v->y > -FXL_CLIP_LIMIT_Q32 &&
+           v->w < FXL_CLIP_LIMIT_Q32 && v->w > -FXL_CLIP_LIMIT_Q32;
+}
+
+fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
+                               fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n)
+{
+    fxl_clipvert_t buf[2][CLIP_SCRATCH];
+    int c0, c1, c2, cur = 0, pl;
+    uint32_t count = 3, i;
+    if (!xf || !in || !out || !n) return FXL_ERR_ARG;
+    *n = 0;
+    if (!in_range(&in[0]) || !in_range(&in[1]) || !in_range(&in[2])) return FXL_ERR_RANGE;
+    if (xf->guard_q16 <= 0 || xf->guard_q16 > ((int32_t)FXL_GUARD_MAX << 16) || xf->near_q32 <= 0)
+        return FXL_ERR_RANGE;
+    c0 = outcode(xf, &in[0]);
+    c1 = outcode(xf, &in[1]);
+    c2 = outcode(xf, &in[2]);
+    if ((c0 & c1 & c2) != 0) return FXL_OK; /* all outside one plane */
+    for (i = 0; i < 3; i++) buf[0][i] = in[i];
+    if ((c0 | c1 | c2) != 0) {
+        for (pl = 0; pl < PL_COUNT; pl++) {
+            const fxl_clipvert_t *src = buf[cur];
+            fxl_clipvert_t *dst = buf[cur ^ 1];
+            uint32_t m = 0;
+            if (!((c0 | c1 | c2) & (1 << pl))) continue; /* no input vertex was outside */
+            for (i = 0; i < count; i++) {
+                const fxl_clipvert_t *a = &src[i], *b = &src[(i + 1) % count];
+                int64_t da = plane_dist(xf, pl, a), db = plane_dist(xf, pl, b);
+                /* A convex polygon gains at most one vertex per plane; the
+                 * check only guards against rounding making it non-convex. */
+                if (m + 2 > CLIP_SCRATCH) return FXL_ERR_RANGE;
+                if (da >= 0) dst[m++] = *a;
+                if (da >= 0 && db < 0) intersect(xf, pl, a, da, b, db, &dst[m++]);
+                else if (da < 0 && db >= 0) intersect(xf, pl, b, db, a, da, &dst[m++]);
+            }
+            count = m;
+            cur ^= 1;
+            if (count < 3) return FXL_OK; /* nothing with area left */
+        }
+    }
+    if (count > FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
+    for (i = 0; i < count; i++) out[i] = buf[cur][i];
+    *n = count;
+    return FXL_OK;
+}

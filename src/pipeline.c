@@ -1,0 +1,657 @@
+/* src/pipeline.c - 64-bit helpers, vectors and matrices, the pipeline set-up,
+ * the vertex path (object -> clip -> screen) and fxl_pipeline_emit.
+ *
+ * Precision plan (docs/pipeline.md has the figures). Inputs are q16, but
+ * view and clip space are int64 q32: view * model and proj * view * model are
+ * formed in q32 (proj * (view * model), each entry rounded once to 2^-32),
+ * and a position becomes clip coordinates through 96-bit products. That
+ * keeps x/w and near/w accurate to ~2^-30 relative for near planes down to
+ * 2^-16 and depths up to the 2^20-unit clip limit, where q16 clip space
+ * would lose 1/16 px already at near = 0.05.
+ */
+#include "pipeline_int.h"
+
+/* ---- 64-bit helpers ------------------------------------------------------ */
+
+static uint64_t mag64(int64_t x)
+{
+    /* |x| as uint64, also for INT64_MIN. */
+    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+}
+
+static int64_t apply_sign(uint64_t m, int neg, int *ovf)
+{
+    if (m > (uint64_t)INT64_MAX) {
+        if (ovf) *ovf = 1;
+        m = (uint64_t)INT64_MAX;
+    }
+    return neg ? -(int64_t)m : (int64_t)m;
+}
+
+int64_t fxl__shr_round(int64_t x, unsigned sh)
+{
+    uint64_t m = mag64(x);
+    if (sh == 0) return x;
+    m = (m + ((uint64_t)1 << (sh - 1))) >> sh;
+    return apply_sign(m, x < 0, NULL);
+}
+
+int64_t fxl__asr(int64_t x, unsigned sh)
+{
+    if (x >= 0) return x >> sh;
+    /* floor(x / 2^sh) = -ceil(-x / 2^sh) = -(((-x) - 1) >> sh) - 1 */
+    return -(int64_t)(((uint64_t)0 - (uint64_t)x - 1u) >> sh) - 1;
+}
+
+int64_t fxl__mul_shr(int64_t a, uint32_t b, unsigned sh, int *ovf)
+{
+    uint64_t m = mag64(a), hi, lo, r;
+    /* 96-bit magnitude = hi * 2^32 + lo, lo < 2^32. ah <= 2^31 so
+     * ah * b < 2^63 and hi cannot wrap. */
+    uint64_t ph = (m >> 32) * b, pl = (m & 0xFFFFFFFFu) * b;
+    hi = ph + (pl >> 32);
+    lo = pl & 0xFFFFFFFFu;
+    if (sh > 0) { /* add half an output unit: ties away from zero */
+        if (sh <= 32) {
+            lo += (uint64_t)1 << (sh - 1);
+            hi += lo >> 32;
+            lo &= 0xFFFFFFFFu;
+        } else {
+            hi += (uint64_t)1 << (sh - 33);
+        }
+    }
+    if (sh <= 32) {
+        if ((hi >> (31 + sh)) != 0) {
+            r = (uint64_t)INT64_MAX + 1u; /* forces saturation */
+        } else {
+            r = (hi << (32 - sh)) | (lo >> sh);
+        }
+    } else {
+        r = hi >> (sh - 32);
+    }
+    return apply_sign(r, a < 0, ovf);
+}
+
+int64_t fxl__mul_shr_s(int64_t a, int32_t b, unsigned sh, int *ovf)
+{
+    uint32_t mb = b < 0 ? (uint32_t)0 - (uint32_t)b : (uint32_t)b;
+    int64_t r = fxl__mul_shr(a, mb, sh, ovf);
+    return b < 0 ? -r : r; /* r is never INT64_MIN */
+}
+
+int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf)
+{
+    if (b > 0 && a > INT64_MAX - b) {
+        if (ovf) *ovf = 1;
+        return INT64_MAX;
+    }
+    if (b < 0 && a < -INT64_MAX - b) {
+        if (ovf) *ovf = 1;
+        return -INT64_MAX;
+    }
+    return a + b;
+}
+
+int32_t fxl__to_i32(int64_t x, int *ovf)
+{
+    if (x > INT32_MAX) { if (ovf) *ovf = 1; return INT32_MAX; }
+    if (x < -INT32_MAX) { if (ovf) *ovf = 1; return -INT32_MAX; }
+    return (int32_t)x;
+}
+
+int fxl__clz64(uint64_t x)
+{
+    int n = 0;
+    if (x == 0) return 64;
+    if ((x >> 32) == 0) { n += 32; x <<= 32; }
+    if ((x >> 48) == 0) { n += 16; x <<= 16; }
+    if ((x >> 56) == 0) { n += 8; x <<= 8; }
+    if ((x >> 60) == 0) { n += 4; x <<= 4; }
+    if ((x >> 62) == 0) { n += 2; x <<= 2; }
+    if ((x >> 63) == 0) { n += 1; }
+    return n;
+}
+
+uint64_t fxl__isqrt64(uint64_t x)
+{
+    uint64_t r = 0, bit = (uint64_t)1 << 62;
+    while (bit > x) bit >>= 2;
+    while (bit != 0) {
+        if (x >= r + bit) {
+            x -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+        bit >>= 2;
+    }
+    return r;
+}
+
+/* round(num / den), ties away from zero; den != 0, |num| < 2^62. */
+static int64_t div_round(int64_t num, int64_t den)
+{
+    uint64_t n = mag64(num), d = mag64(den);
+    uint64_t q = (n + d / 2u) / d;
+    return apply_sign(q, (num < 0) != (den < 0), NULL);
+}
+
+/* ---- matrices ------------------------------------------------------------ */
+
+void fxl_mat4_identity(fxl_mat4_t *m)
+{
+    int r, c;
+    if (!m) return;
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) m->m[r][c] = (r == c) ? FXL_Q16_ONE : 0;
+}
+
+fxl_status_t fxl_mat4_mul(fxl_mat4_t *out, const fxl_mat4_t *a, const fxl_mat4_t *b)
+{
+    fxl_mat4_t t;
+    int r, c, k, ovf = 0;
+    if (!out || !a || !b) return FXL_ERR_ARG;
+    for (r = 0; r < 4; r++) {
+        for (c = 0; c < 4; c++) {
+            int64_t acc = 0;
+            for (k = 0; k < 4; k++) /* each product |.| <= 2^62 */
+                acc = fxl__add_sat(acc, (int64_t)a->m[r][k] * b->m[k][c], &ovf);
+            t.m[r][c] = fxl__to_i32(fxl__shr_round(acc, 16), &ovf);
+        }
+    }
+    *out = t;
+    return ovf ? FXL_ERR_RANGE : FXL_OK;
+}
+
+fxl_status_t fxl_mat4_transform(const fxl_mat4_t *m, const fxl_vec4_t *v, fxl_vec4_t *out)
+{
+    fxl_q16_t in[4], res[4];
+    int r, k, ovf = 0;
+    if (!m || !v || !out) return FXL_ERR_ARG;
+    in[0] = v->x; in[1] = v->y; in[2] = v->z; in[3] = v->w;
+    for (r = 0; r < 4; r++) {
+        int64_t acc = 0;
+        for (k = 0; k < 4; k++) acc = fxl__add_sat(acc, (int64_t)m->m[r][k] * in[k], &ovf);
+        res[r] = fxl__to_i32(fxl__shr_round(acc, 16), &ovf);
+    }
+    out->x = res[0]; out->y = res[1]; out->z = res[2]; out->w = res[3];
+    return ovf ? FXL_ERR_RANGE : FXL_OK;
+}
+
+static fxl_status_t transform3(const fxl_mat4_t *m, const fxl_vec3_t *p, fxl_q16_t w,
+                               fxl_vec3_t *out)
+{
+    fxl_vec4_t v, o;
+    fxl_status_t st;
+    if (!m || !p || !out) return FXL_ERR_ARG;
+    v.x = p->x; v.y = p->y; v.z = p->z; v.w = w;
+    st = fxl_mat4_transform(m, &v, &o);
+    out->x = o.x; out->y = o.y; out->z = o.z;
+    return st;
+}
+
+fxl_status_t fxl_mat4_transform_point(const fxl_mat4_t *m, const fxl_vec3_t *p, fxl_vec3_t *out)
+{
+    return transform3(m, p, FXL_Q16_ONE, out);
+}
+
+fxl_status_t fxl_mat4_transform_vector(const fxl_mat4_t *m, const fxl_vec3_t *v, fxl_vec3_t *out)
+{
+    return transform3(m, v, 0, out);
+}
+
+/* Rotation in the (i, j) coordinate plane: m[i][i] = c, m[i][j] = -s, ... */
+static void rotate_plane(fxl_mat4_t *m, fxl_angle_t a, int i, int j)
+{
+    fxl_q16_t s, c;
+    if (!m) return;
+    fxl_mat4_identity(m);
+    fxl_sincos_q16(a, &s, &c);
+    m->m[i][i] = c; m->m[i][j] = -s;
+    m->m[j][i] = s; m->m[j][j] = c;
+}
+
+void fxl_mat4_rotate_x(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 1, 2); }
+void fxl_mat4_rotate_y(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 2, 0); }
+void fxl_mat4_rotate_z(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 0, 1); }
+
+fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_angle_t a)
+{
+    int64_t ax[3], len2, omc;
+    int32_t s30, c30;
+    int i, j;
+    if (!m || !axis) return FXL_ERR_ARG;
+    ax[0] = axis->x; ax[1] = axis->y; ax[2] = axis->z;
+    /* A unit axis has |components| <= 1; refusing more than 2 keeps every
+     * product below small: len2 < 3 * 2^34. */
+    for (i = 0; i < 3; i++)
+        if (ax[i] > 0x20000 || ax[i] < -0x20000) return FXL_ERR_RANGE;
+    len2 = ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]; /* q32 */
+    /* | |a|^2 - 1 | <= 2^-7 covers | |a| - 1 | <= 2^-8. */
+    if (len2 - ((int64_t)1 << 32) > ((int64_t)1 << 25) ||
+        ((int64_t)1 << 32) - len2 > ((int64_t)1 << 25))
+        return FXL_ERR_RANGE;
+    fxl__sincos_q30(a, &s30, &c30);
+    omc = ((int64_t)1 << 30) - c30; /* 1 - cos, q30, in [0, 2^31] */
+    fxl_mat4_identity(m);
+    /* R = c I + (1 - c) a a^T + s [a]x, in q30, rounded once to q16. */
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            int64_t aa = fxl__shr_round(ax[i] * ax[j], 2); /* q30, |.| <= 2^34 */
+            int64_t e = fxl__mul_shr(aa, (uint32_t)omc, 30, NULL);
+            if (i == j) {
+                e += c30;
+            } else {
+                int k = 3 - i - j; /* the third axis */
+                /* [a]x has -a_k at (0,1), (1,2), (2,0) and +a_k mirrored. */
+                int64_t sk = fxl__shr_round((int64_t)s30 * ax[k], 16);
+                e += ((i + 1) % 3 == j) ? -sk : sk;
+            }
+            m->m[i][j] = (fxl_q16_t)fxl__shr_round(e, 14);
+        }
+    }
+    return FXL_OK;
+}
+
+void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z)
+{
+    if (!m) return;
+    fxl_mat4_identity(m);
+    m->m[0][3] = x; m->m[1][3] = y; m->m[2][3] = z;
+}
+
+void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z)
+{
+    if (!m) return;
+    fxl_mat4_identity(m);
+    m->m[0][0] = x; m->m[1][1] = y; m->m[2][2] = z;
+}
+
+/* Normalise an int64 vector to q30 (unit length). FXL_ERR_RANGE if zero.
+ * Components are first brought below 2^30 so the squares sum below 2^62. */
+static fxl_status_t normalize_q30(const int64_t in[3], int64_t out[3])
+{
+    uint64_t mx = 0, len;
+    int64_t v[3];
+    int i, top;
+    for (i = 0; i < 3; i++) if (mag64(in[i]) > mx) mx = mag64(in[i]);
+    if (mx == 0) return FXL_ERR_RANGE;
+    top = 63 - fxl__clz64(mx);
+    for (i = 0; i < 3; i++)
+        v[i] = top > 29 ? fxl__shr_round(in[i], (unsigned)(top - 29))
+                        : in[i] * ((int64_t)1 << (29 - top)); /* |.| < 2^30 */
+    len = fxl__isqrt64((uint64_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    if (len == 0) return FXL_ERR_RANGE;
+    for (i = 0; i < 3; i++) out[i] = div_round(v[i] * ((int64_t)1 << 30), (int64_t)len);
+    return FXL_OK;
+}
+
+fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
+                              const fxl_vec3_t *up)
+{
+    int64_t f[3], u0[3], s[3], u[3], e[3], tmp[3];
+    int64_t t[3];
+    int i, ovf = 0;
+    fxl_status_t st;
+    if (!m || !eye || !center || !up) return FXL_ERR_ARG;
+    e[0] = eye->x; e[1] = eye->y; e[2] = eye->z;
+    tmp[0] = (int64_t)center->x - eye->x;
+    tmp[1] = (int64_t)center->y - eye->y;
+    tmp[2] = (int64_t)center->z - eye->z;
+    if ((st = normalize_q30(tmp, f)) != FXL_OK) return st;
+    tmp[0] = up->x; tmp[1] = up->y; tmp[2] = up->z;
+    if ((st = normalize_q30(tmp, u0)) != FXL_OK) return st;
+    /* s = f x up (q60 products -> q30); nearly parallel vectors give a
+     * short s: refuse below sin(angle) = 2^-16. */
+    tmp[0] = fxl__shr_round(f[1] * u0[2] - f[2] * u0[1], 30);
+    tmp[1] = fxl__shr_round(f[2] * u0[0] - f[0] * u0[2], 30);
+    tmp[2] = fxl__shr_round(f[0] * u0[1] - f[1] * u0[0], 30);
+    if (mag64(tmp[0]) + mag64(tmp[1]) + mag64(tmp[2]) < ((uint64_t)1 << 14)) return FXL_ERR_RANGE;
+    if ((st = normalize_q30(tmp, s)) != FXL_OK) return st;
+    u[0] = fxl__shr_round(s[1] * f[2] - s[2] * f[1], 30);
+    u[1] = fxl__shr_round(s[2] * f[0] - s[0] * f[2], 30);
+    u[2] = fxl__shr_round(s[0] * f[1] - s[1] * f[0], 30);
+    /* eye q16 * unit q30: |product| < 2^61, the three-term sum < 2^63. */
+    t[0] = -fxl__shr_round(s[0] * e[0] + s[1] * e[1] + s[2] * e[2], 30);
+    t[1] = -fxl__shr_round(u[0] * e[0] + u[1] * e[1] + u[2] * e[2], 30);
+    t[2] = fxl__shr_round(f[0] * e[0] + f[1] * e[1] + f[2] * e[2], 30);
+    fxl_mat4_identity(m);
+    for (i = 0; i < 3; i++) {
+        m->m[0][i] = (fxl_q16_t)fxl__shr_round(s[i], 14);
+        m->m[1][i] = (fxl_q16_t)fxl__shr_round(u[i], 14);
+        m->m[2][i] = (fxl_q16_t)-fxl__shr_round(f[i], 14);
+        m->m[i][3] = fxl__to_i32(t[i], &ovf);
+    }
+    return ovf ? FXL_ERR_RANGE : FXL_OK;
+}
+
+fxl_status_t fxl_mat4_perspective(fxl_mat4_t *m, fxl_angle_t fovy, fxl_q16_t aspect,
+                                  fxl_q16_t near_q16, fxl_q16_t far_q16)
+{
+    int32_t s30, c30;
+    int64_t f, fx, a, b;
+    if (!m) return FXL_ERR_ARG;
+    if (fovy == 0 || fovy >= 0x8000u || aspect <= 0 || near_q16 <= 0) return FXL_ERR_RANGE;
+    if (far_q16 != 0 && far_q16 <= near_q16) return FXL_ERR_RANGE;
+    fxl__sincos_q30((fxl_angle_t)(fovy / 2u), &s30, &c30);
+    if (s30 <= 0) return FXL_ERR_RANGE;
+    f = div_round((int64_t)c30 * 65536, s30);       /* cot(fovy / 2), q16 */
+    fx = div_round(f * 65536, aspect);               /* f < 2^31: no overflow */
+    if (f > INT32_MAX || fx > INT32_MAX) return FXL_ERR_RANGE;
+    if (far_q16 == 0) {
+        a = -FXL_Q16_ONE;
+        b = -2 * (int64_t)near_q16;
+    } else {
+        int64_t d = (int64_t)near_q16 - far_q16;   /* < 0 */
+        a = div_round(((int64_t)far_q16 + near_q16) * 65536, d);
+        b = 2 * div_round((int64_t)far_q16 * near_q16, d);
+    }
+    if (a < -INT32_MAX || b < -INT32_MAX) return FXL_ERR_RANGE;
+    fxl_mat4_identity(m);
+    m->m[0][0] = (fxl_q16_t)fx;
+    m->m[1][1] = (fxl_q16_t)f;
+    m->m[2][2] = (fxl_q16_t)a;
+    m->m[2][3] = (fxl_q16_t)b;
+    m->m[3][2] = -FXL_Q16_ONE;
+    m->m[3][3] = 0;
+    return FXL_OK;
+}
+
+/* ---- pipeline set-up -------------------------------------------------------- */
+
+fxl_status_t fxl_pipeline_set_viewport(fxl_pipeline_t *p, int32_t x, int32_t y, int32_t w, int32_t h)
+{
+    if (!p) return FXL_ERR_ARG;
+    if (w < 1 || h < 1 || w > FXL_TARGET_MAX_DIM || h > FXL_TARGET_MAX_DIM) return FXL_ERR_RANGE;
+    if (x > FXL_TARGET_MAX_ORIGIN || x < -FXL_TARGET_MAX_ORIGIN ||
+        y > FXL_TARGET_MAX_ORIGIN || y < -FXL_TARGET_MAX_ORIGIN)
+        return FXL_ERR_RANGE;
+    p->vp_x = x; p->vp_y = y; p->vp_w = w; p->vp_h = h;
+    return FXL_OK;
+}
+
+fxl_status_t fxl_pipeline_set_perspective(fxl_pipeline_t *p, fxl_angle_t fovy, fxl_q16_t aspect,
+                                          fxl_q16_t near_q16, fxl_q16_t far_q16)
+{
+    fxl_status_t st;
+    if (!p) return FXL_ERR_ARG;
+    st = fxl_mat4_perspective(&p->proj, fovy, aspect, near_q16, far_q16);
+    if (st != FXL_OK) return st;
+    p->near_q16 = near_q16;
+    p->far_q16 = far_q16;
+    return FXL_OK;
+}
+
+fxl_status_t fxl_pipeline_init(fxl_pipeline_t *p, int32_t width, int32_t height)
+{
+    fxl_status_t st;
+    if (!p) return FXL_ERR_ARG;
+    if ((st = fxl_pipeline_set_viewport(p, 0, 0, width, height)) != FXL_OK) return st;
+    fxl_mat4_identity(&p->model);
+    fxl_mat4_identity(&p->view);
+    st = fxl_pipeline_set_perspective(p, FXL_ANGLE_DEG(60),
+                                      (fxl_q16_t)div_round((int64_t)width * 65536, height),
+                                      FXL_Q16_ONE, 0);
+    if (st != FXL_OK) return st;
+    p->cull = FXL_CULL_CW;
+    p->lighting = 0;
+    p->material = 0xFFFFu;
+    p->light.dir.x = 0; p->light.dir.y = 0; p->light.dir.z = FXL_Q16_ONE;
+    p->light.ambient[0] = p->light.ambient[1] = p->light.ambient[2] = 64;
+    p->light.diffuse[0] = p->light.diffuse[1] = p->light.diffuse[2] = 191;
+    fxl_texgen_defaults(&p->texgen);
+    return FXL_OK;
+}
+
+fxl_status_t fxl_pipeline_prepare(const fxl_pipeline_t *p, fxl_xform_t *xf)
+{
+    int r, c, k, ovf = 0;
+    int32_t maxdim;
+    int64_t g;
+    if (!p || !xf) return FXL_ERR_ARG;
+    if (p->near_q16 <= 0 || (p->far_q16 != 0 && p->far_q16 <= p->near_q16)) return FXL_ERR_RANGE;
+    if (p->vp_w < 1 || p->vp_h < 1 || p->vp_w > FXL_TARGET_MAX_DIM || p->vp_h > FXL_TARGET_MAX_DIM ||
+        p->vp_x > FXL_TARGET_MAX_ORIGIN || p->vp_x < -FXL_TARGET_MAX_ORIGIN ||
+        p->vp_y > FXL_TARGET_MAX_ORIGIN || p->vp_y < -FXL_TARGET_MAX_ORIGIN)
+        return FXL_ERR_RANGE;
+    /* view * model exactly in q32 (q16 * q16 products, each |.| <= 2^62). */
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) {
+            int64_t acc = 0;
+            for (k = 0; k < 4; k++)
+                acc = fxl__add_sat(acc, (int64_t)p->view.m[r][k] * p->model.m[k][c], &ovf);
+            xf->mv[r][c] = acc;
+        }
+    /* proj * mv: q16 * q32 through 96 bits, rounded to q32. */
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) {
+            int64_t acc = 0;
+            for (k = 0; k < 4; k++)
+                acc = fxl__add_sat(acc, fxl__mul_shr_s(xf->mv[k][c], p->proj.m[r][k], 16, &ovf), &ovf);
+            xf->mvp[r][c] = acc;
+        }
+    if (ovf) return FXL_ERR_RANGE;
+    xf->near_q32 = (int64_t)p->near_q16 * 65536;
+    xf->far_q32 = (int64_t)p->far_q16 * 65536;
+    /* G = FXL_GUARD_PX / max half size, rounded down so that G * half size
+     * never exceeds FXL_GUARD_PX. */
+    maxdim = p->vp_w > p->vp_h ? p->vp_w : p->vp_h;
+    g = ((int64_t)FXL_GUARD_PX << 17) / maxdim;
+    if (g > ((int64_t)FXL_GUARD_MAX << 16)) g = (int64_t)FXL_GUARD_MAX << 16;
+    xf->guard_q16 = (fxl_q16_t)g;
+    xf->cx_q16 = ((int64_t)2 * p->vp_x + p->vp_w) * 32768;
+    xf->cy_q16 = ((int64_t)2 * p->vp_y + p->vp_h) * 32768;
+    xf->hw_q16 = (int64_t)p->vp_w * 32768;
+    xf->hh_q16 = (int64_t)p->vp_h * 32768;
+    return FXL_OK;
+}
+
+/* Row r of a q32 matrix applied to (pos, 1): q32 result. */
+static int64_t row_apply(const int64_t row[4], const fxl_vec3_t *pos, int *ovf)
+{
+    int64_t acc = row[3];
+    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[0], pos->x, 16, ovf), ovf);
+    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[1], pos->y, 16, ovf), ovf);
+    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[2], pos->z, 16, ovf), ovf);
+    return acc;
+}
+
+static int beyond_limit(int64_t v)
+{
+    return v >= FXL_CLIP_LIMIT_Q32 || v <= -FXL_CLIP_LIMIT_Q32;
+}
+
+fxl_status_t fxl_xform_clip(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_clipvert_t *out)
+{
+    int ovf = 0;
+    if (!xf || !pos || !out) return FXL_ERR_ARG;
+    out->x = row_apply(xf->mvp[0], pos, &ovf);
+    out->y = row_apply(xf->mvp[1], pos, &ovf);
+    out->w = row_apply(xf->mvp[3], pos, &ovf);
+    out->u = out->v = 0;
+    out->r = out->g = out->b = 0;
+    if (ovf || beyond_limit(out->x) || beyond_limit(out->y) || beyond_limit(out->w))
+        return FXL_ERR_RANGE;
+    return FXL_OK;
+}
+
+fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec3_t *out)
+{
+    int ovf = 0;
+    if (!xf || !pos || !out) return FXL_ERR_ARG;
+    out->x = fxl__to_i32(fxl__shr_round(row_apply(xf->mv[0], pos, &ovf), 16), &ovf);
+    out->y = fxl__to_i32(fxl__shr_round(row_apply(xf->mv[1], pos, &ovf), 16), &ovf);
+    out->z = fxl__to_i32(fxl__shr_round(row_apply(xf->mv[2], pos, &ovf), 16), &ovf);
+    return ovf ? FXL_ERR_RANGE : FXL_OK;
+}
+
+static uint16_t pack_q8(int32_t r, int32_t g, int32_t b)
+{
+    /* channel (0..255 in q8) -> 5 or 6 bits: round(c * 31 / 65280). */
+    uint32_t r5 = (uint32_t)(((int64_t)r * 31 + 32640) / 65280);
+    uint32_t g6 = (uint32_t)(((int64_t)g * 63 + 32640) / 65280);
+    uint32_t b5 = (uint32_t)(((int64_t)b * 31 + 32640) / 65280);
+    if (r5 > 31) r5 = 31;
+    if (g6 > 63) g6 = 63;
+    if (b5 > 31) b5 = 31;
+    return (uint16_t)((r5 << 11) | (g6 << 5) | b5);
+}
+
+/* ndc (q30) -> frame pixel q16, clamping to the guard band. */
+static fxl_status_t to_screen(int64_t ndc_q30, int64_t g_q30, int64_t centre, int64_t half,
+                              int flip, fxl_q16_t *out)
+{
+    int64_t px;
+    /* The clipper leaves |ndc| <= G up to its interpolation rounding (far
+     * below 2^-10 G); anything beyond that was not clipped: refuse. */
+    if (ndc_q30 > g_q30 + (g_q30 >> 10) || ndc_q30 < -g_q30 - (g_q30 >> 10)) return FXL_ERR_RANGE;
+    if (ndc_q30 > g_q30) ndc_q30 = g_q30;
+    if (ndc_q30 < -g_q30) ndc_q30 = -g_q30;
+    /* |ndc| * half <= G * half <= FXL_GUARD_PX px: fits easily. */
+    px = fxl__mul_shr(ndc_q30, (uint32_t)half, 30, NULL);
+    px = flip ? centre - px : centre + px;
+    *out = (fxl_q16_t)px; /* |centre| + 8192 px < 32768 px */
+    return FXL_OK;
+}
+
+fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
+{
+    int s;
+    uint64_t wn, rec;
+    int64_t ndc_x, ndc_y, inv_w, g_q30;
+    fxl_status_t st;
+    if (!xf || !c || !out) return FXL_ERR_ARG;
+    if (c->w < xf->near_q32 || c->w <= 0 || beyond_limit(c->w)) return FXL_ERR_RANGE;
+    /* One reciprocal per vertex: w = wn * 2^(s - 31) with wn in [2^31, 2^32),
+     * rec = 2^62 / wn in (2^30, 2^31] (31 significant bits), so
+     * 1/w = rec * 2^(-31 - s). */
+    s = 63 - fxl__clz64((uint64_t)c->w);
+    wn = s >= 31 ? (uint64_t)c->w >> (s - 31) : (uint64_t)c->w << (31 - s);
+    rec = (((uint64_t)1 << 62) + wn / 2u) / wn;
+    /* x / w in q30 = x * rec * 2^(-1 - s); s >= 16 since w >= near >= 2^-16. */
+    ndc_x = fxl__mul_shr(c->x, (uint32_t)rec, (unsigned)(s + 1), NULL);
+    ndc_y = fxl__mul_shr(c->y, (uint32_t)rec, (unsigned)(s + 1), NULL);
+    g_q30 = (int64_t)xf->guard_q16 << 14;
+    if ((st = to_screen(ndc_x, g_q30, xf->cx_q16, xf->hw_q16, 0, &out->x)) != FXL_OK) return st;
+    if ((st = to_screen(ndc_y, g_q30, xf->cy_q16, xf->hh_q16, 1, &out->y)) != FXL_OK) return st;
+    /* near / w * 2^32 = near_q32 * rec * 2^(1 - s). */
+    inv_w = fxl__mul_shr(xf->near_q32, (uint32_t)rec, (unsigned)(s - 1), NULL);
+    if (inv_w > (int64_t)0xFFFFFFFFu) inv_w = 0xFFFFFFFF;
+    if (inv_w < 1) inv_w = 1;
+    out->inv_w = (uint32_t)inv_w;
+    out->u = c->u;
+    out->v = c->v;
+    out->color = pack_q8(c->r, c->g, c->b);
+    return FXL_OK;
+}
+
+/* ---- the mesh path ------------------------------------------------------------ */
+
+/* RGB565 -> channels 0..255 in q8: round(c * 65280 / 31) (or / 63). */
+static void unpack_q8(uint16_t c, fxl_clipvert_t *v)
+{
+    v->r = (int32_t)((((uint32_t)c >> 11) * 65280u + 15u) / 31u);
+    v->g = (int32_t)(((((uint32_t)c >> 5) & 63u) * 65280u + 31u) / 63u);
+    v->b = (int32_t)((((uint32_t)c & 31u) * 65280u + 15u) / 31u);
+}
+
+/* Object-space normal -> unit eye-space normal (view * model's 3x3, then
+ * renormalised: right for rotations and uniform scales). */
+static void eye_normal(const fxl_xform_t *xf, const fxl_vec3_t *n, fxl_vec3_t *out)
+{
+    int64_t e[3], u[3];
+    int r;
+    for (r = 0; r < 3; r++) {
+        int64_t acc = fxl__mul_shr_s(xf->mv[r][0], n->x, 16, NULL);
+        acc = fxl__add_sat(acc, fxl__mul_shr_s(xf->mv[r][1], n->y, 16, NULL), NULL);
+        e[r] = fxl__add_sat(acc, fxl__mul_shr_s(xf->mv[r][2], n->z, 16, NULL), NULL);
+    }
+    if (normalize_q30(e, u) != FXL_OK) {
+        out->x = out->y = out->z = 0; /* no normal: ambient only */
+        return;
+    }
+    out->x = (fxl_q16_t)fxl__shr_round(u[0], 14);
+    out->y = (fxl_q16_t)fxl__shr_round(u[1], 14);
+    out->z = (fxl_q16_t)fxl__shr_round(u[2], 14);
+}
+
+static int32_t snap(fxl_q16_t x)
+{
+    /* raster.h: round to the sub-pixel grid, ties toward +inf */
+    return (int32_t)fxl__asr((int64_t)x + ((int64_t)1 << (15 - FXL_SUBPIXEL_BITS)),
+                             16 - FXL_SUBPIXEL_BITS);
+}
+
+/* Winding of the snapped triangle as seen on the display: > 0 clockwise
+ * (x right, y down), < 0 counter-clockwise. */
+static int64_t snapped_area2(const fxl_vertex_t *a, const fxl_vertex_t *b, const fxl_vertex_t *c)
+{
+    int64_t ax = snap(a->x), ay = snap(a->y);
+    int64_t bx = snap(b->x) - ax, by = snap(b->y) - ay, cx = snap(c->x) - ax, cy = snap(c->y) - ay;
+    return bx * cy - cx * by; /* |coords| < 2^20 grid units: products < 2^42 */
+}
+
+fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl_emit_fn fn,
+                               void *user, fxl_stats_t *stats)
+{
+    fxl_xform_t xf;
+    fxl_status_t st;
+    uint32_t t;
+    if (!p || !m || !fn || !m->pos || (!m->idx && m->tri_count)) return FXL_ERR_ARG;
+    if (p->cull > FXL_CULL_CCW || p->texgen.mode > FXL_TEXGEN_CUBE) return FXL_ERR_ARG;
+    if ((st = fxl_pipeline_prepare(p, &xf)) != FXL_OK) return st;
+    for (t = 0; t < m->tri_count; t++) {
+        fxl_clipvert_t cv[3], poly[FXL_CLIP_MAX_VERTS];
+        fxl_vertex_t scr[FXL_CLIP_MAX_VERTS];
+        uint32_t n, k, idx[3];
+        for (k = 0; k < 3; k++) {
+            uint16_t colour;
+            idx[k] = m->idx[3 * t + k];
+            if (idx[k] >= m->vert_count) return FXL_ERR_RANGE;
+            if ((st = fxl_xform_clip(&xf, &m->pos[idx[k]], &cv[k])) != FXL_OK) return st;
+            colour = m->color ? m->color[idx[k]] : p->material;
+            if (p->lighting && m->normal) {
+                fxl_vec3_t ne;
+                eye_normal(&xf, &m->normal[idx[k]], &ne);
+                colour = fxl_light_shade(&p->light, &ne, colour);
+            }
+            unpack_q8(colour, &cv[k]);
+            if (m->uv && p->texgen.mode == FXL_TEXGEN_NONE) {
+                cv[k].u = m->uv[idx[k]].u;
+                cv[k].v = m->uv[idx[k]].v;
+            }
+        }
+        if (p->texgen.mode != FXL_TEXGEN_NONE) {
+            fxl_vec3_t tp[3];
+            fxl_texcoord_t tc[3];
+            for (k = 0; k < 3; k++) {
+                if (p->texgen.space == FXL_TEXGEN_EYE) {
+                    if ((st = fxl_xform_eye(&xf, &m->pos[idx[k]], &tp[k])) != FXL_OK) return st;
+                } else {
+                    tp[k] = m->pos[idx[k]];
+                }
+            }
+            if ((st = fxl_texgen_triangle(&p->texgen, tp, tc)) != FXL_OK) return st;
+            for (k = 0; k < 3; k++) { cv[k].u = tc[k].u; cv[k].v = tc[k].v; }
+        }
+        if ((st = fxl_clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
+        if (n < 3) {
+            if (stats) { stats->triangles++; stats->culled_outside++; }
+            continue;
+        }
+        for (k = 0; k < n; k++)
+            if ((st = fxl_xform_project(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
+        for (k = 1; k + 1 < n; k++) {
+            fxl_vertex_t tri[3];
+            int64_t area;
+            tri[0] = scr[0]; tri[1] = scr[k]; tri[2] = scr[k + 1];
+            area = snapped_area2(&tri[0], &tri[1], &tri[2]);
+            if ((p->cull == FXL_CULL_CW && area > 0) || (p->cull == FXL_CULL_CCW && area < 0)) {
+                if (stats) { stats->triangles++; stats->culled_backface++; }
+                continue;
+            }
+            if ((st = fn(user, tri)) < 0) return st;
+        }
+    }
+    return FXL_OK;
+}

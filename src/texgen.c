@@ -1,0 +1,150 @@
+/* src/texgen.c - texture coordinates from positions: planar, cylindrical,
+ * spherical, cube map (the "texture map shapes"). Conventions are in
+ * pipeline.h and docs/pipeline.md.
+ *
+ * Work is per triangle, not per vertex, because two things need the other
+ * vertices: the seam (u jumps from ~1 to ~0 where theta wraps: shifting u by
+ * whole periods keeps the triangle from stretching the whole texture across
+ * itself) and the poles (theta is undefined on the axis). The cube map also
+ * picks one face per triangle so a triangle never spans two atlas tiles.
+ */
+#include "pipeline_int.h"
+
+void fxl_texgen_defaults(fxl_texgen_t *tg)
+{
+    if (!tg) return;
+    tg->mode = FXL_TEXGEN_NONE;
+    tg->space = FXL_TEXGEN_OBJECT;
+    tg->plane = FXL_PLANE_XY;
+    tg->axis = FXL_AXIS_Y;
+    tg->scale_u = tg->scale_v = FXL_Q16_ONE;
+    tg->offset_u = tg->offset_v = 0;
+}
+
+/* (a, b, h) for an axis: X -> (y, z, x), Y -> (z, x, y), Z -> (x, y, z). */
+static void axis_frame(int axis, const fxl_vec3_t *p, int64_t *a, int64_t *b, int64_t *h)
+{
+    if (axis == FXL_AXIS_X) { *a = p->y; *b = p->z; *h = p->x; }
+    else if (axis == FXL_AXIS_Y) { *a = p->z; *b = p->x; *h = p->y; }
+    else { *a = p->x; *b = p->y; *h = p->z; }
+}
+
+static int64_t mag(int64_t x) { return x < 0 ? -x : x; }
+
+/* Cylindrical / spherical raw (u, v) in q16 plus the pole flag. */
+static void polar(const fxl_texgen_t *tg, const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3],
+                  int pole[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        int64_t a, b, h, r;
+        axis_frame(tg->axis, &pos[i], &a, &b, &h);
+        /* |a|, |b| < 2^31: a^2 + b^2 < 2^63 fits in uint64. */
+        r = (int64_t)fxl__isqrt64((uint64_t)(a * a) + (uint64_t)(b * b)); /* q16 */
+        /* On (or within 2^-10 of the distance from) the axis, theta is
+         * meaningless: a pole. */
+        pole[i] = r * 1024 <= mag(h);
+        u[i] = (int64_t)((fxl__atan2_q32(b, a) + 0x8000u) >> 16); /* [0, 65536] */
+        if (tg->mode == FXL_TEXGEN_SPHERICAL) {
+            /* phi in [0, 2^31] q32 turns; v = phi / half turn, q16. */
+            v[i] = (int64_t)((fxl__atan2_q32(r, h) + 0x4000u) >> 15);
+        } else {
+            v[i] = h;
+        }
+    }
+}
+
+static void fix_seam_and_poles(int64_t u[3], const int pole[3])
+{
+    int i, ref = -1, count = 0;
+    int64_t sum = 0;
+    for (i = 0; i < 3; i++) {
+        if (pole[i]) continue;
+        if (ref < 0) { ref = i; continue; }
+        /* Shift by whole periods to within half a period of the reference. */
+        while (u[i] - u[ref] > 32768) u[i] -= 65536;
+        while (u[ref] - u[i] > 32768) u[i] += 65536;
+    }
+    for (i = 0; i < 3; i++)
+        if (!pole[i]) { sum += u[i]; count++; }
+    if (count == 0) { /* the whole triangle on the axis: any u will do */
+        u[0] = u[1] = u[2] = 0;
+        return;
+    }
+    for (i = 0; i < 3; i++) /* pole: the mean theta of the others */
+        if (pole[i]) u[i] = sum >= 0 ? (sum + count / 2) / count : -((-sum + count / 2) / count);
+}
+
+/* Cube map: face from the summed positions, (s, t) on that face. */
+static void cube(const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3])
+{
+    int64_t sx = 0, sy = 0, sz = 0;
+    int face, i;
+    for (i = 0; i < 3; i++) { sx += pos[i].x; sy += pos[i].y; sz += pos[i].z; }
+    if (mag(sx) >= mag(sy) && mag(sx) >= mag(sz)) face = sx >= 0 ? FXL_CUBE_POS_X : FXL_CUBE_NEG_X;
+    else if (mag(sy) >= mag(sz)) face = sy >= 0 ? FXL_CUBE_POS_Y : FXL_CUBE_NEG_Y;
+    else face = sz >= 0 ? FXL_CUBE_POS_Z : FXL_CUBE_NEG_Z;
+    for (i = 0; i < 3; i++) {
+        int64_t x = pos[i].x, y = pos[i].y, z = pos[i].z, ma, sc, tc, s, t;
+        switch (face) {
+        case FXL_CUBE_POS_X: ma = x;  sc = -z; tc = -y; break;
+        case FXL_CUBE_NEG_X: ma = -x; sc = z;  tc = -y; break;
+        case FXL_CUBE_POS_Y: ma = y;  sc = x;  tc = z;  break;
+        case FXL_CUBE_NEG_Y: ma = -y; sc = x;  tc = -z; break;
+        case FXL_CUBE_POS_Z: ma = z;  sc = x;  tc = -y; break;
+        default:             ma = -z; sc = -x; tc = -y; break;
+        }
+        if (ma < 1) ma = 1; /* a vertex behind the face plane: clamped below */
+        /* s = (sc / ma + 1) / 2 in q16; |sc| < 2^31 so sc * 2^15 < 2^46. */
+        s = (sc * 32768 + (sc >= 0 ? ma / 2 : -(ma / 2))) / ma + 32768;
+        t = (tc * 32768 + (tc >= 0 ? ma / 2 : -(ma / 2))) / ma + 32768;
+        if (s < 0) s = 0;
+        if (s > 65536) s = 65536;
+        if (t < 0) t = 0;
+        if (t > 65536) t = 65536;
+        u[i] = ((int64_t)(face % 3) * 65536 + s + 1) / 3;
+        v[i] = ((int64_t)(face / 3) * 65536 + t + 1) / 2;
+    }
+}
+
+static fxl_q16_t scale_offset(int64_t raw, fxl_q16_t scale, fxl_q16_t offset)
+{
+    int64_t r = fxl__mul_shr_s(raw, scale, 16, NULL) + offset;
+    return fxl__to_i32(r, NULL);
+}
+
+fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3],
+                                 fxl_texcoord_t out[3])
+{
+    int64_t u[3], v[3];
+    int pole[3], i;
+    if (!tg || !pos || !out) return FXL_ERR_ARG;
+    if (tg->axis > FXL_AXIS_Z || tg->plane > FXL_PLANE_XZ || tg->space > FXL_TEXGEN_EYE)
+        return FXL_ERR_ARG;
+    switch (tg->mode) {
+    case FXL_TEXGEN_NONE:
+        for (i = 0; i < 3; i++) u[i] = v[i] = 0;
+        break;
+    case FXL_TEXGEN_PLANAR:
+        for (i = 0; i < 3; i++) {
+            u[i] = tg->plane == FXL_PLANE_YZ ? pos[i].y : pos[i].x;
+            v[i] = tg->plane == FXL_PLANE_XY ? pos[i].y : pos[i].z;
+        }
+        break;
+    case FXL_TEXGEN_CYLINDRICAL:
+    case FXL_TEXGEN_SPHERICAL:
+        polar(tg, pos, u, v, pole);
+        fix_seam_and_poles(u, pole);
+        break;
+    case FXL_TEXGEN_CUBE:
+        cube(pos, u, v);
+        break;
+    default:
+        return FXL_ERR_ARG;
+    }
+    for (i = 0; i < 3; i++) {
+        out[i].u = scale_offset(u[i], tg->scale_u, tg->offset_u);
+        out[i].v = scale_offset(v[i], tg->scale_v, tg->offset_v);
+    }
+    return FXL_OK;
+}

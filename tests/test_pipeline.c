@@ -1,0 +1,795 @@
+/* tests/test_pipeline.c - trigonometry, matrices, projection accuracy and the
+ * mesh vertex path of the fixed-point front end, against double precision.
+ *
+ * The double reference takes the *same inputs* as the fixed-point code: the
+ * q16 matrices and q16 positions converted exactly to double. So every
+ * difference measured here is the front end's own arithmetic.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "unity.h"
+#include "fixel/pipeline.h"
+#include "meshes.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static const double TWO_PI = 6.283185307179586476925286766559;
+static char msg[256];
+
+/* Deterministic generator (xorshift64*), seed fixed per test. */
+static uint64_t rng_state;
+static void rng_seed(uint64_t s) { rng_state = s ? s : 1; }
+static uint64_t rng_next(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717ULL;
+}
+static double rng_unit(void) { return (double)(rng_next() >> 11) / 9007199254740992.0; }
+static double rng_range(double a, double b) { return a + (b - a) * rng_unit(); }
+
+static double q16d(fxl_q16_t v) { return v / 65536.0; }
+static fxl_q16_t dq16(double v) { return (fxl_q16_t)lround(v * 65536.0); }
+
+static void mat_to_d(const fxl_mat4_t *m, double d[4][4])
+{
+    int r, c;
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) d[r][c] = q16d(m->m[r][c]);
+}
+
+static void matd_mul(double o[4][4], double a[4][4], double b[4][4])
+{
+    double t[4][4];
+    int r, c, k;
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++) {
+            t[r][c] = 0;
+            for (k = 0; k < 4; k++) t[r][c] += a[r][k] * b[k][c];
+        }
+    memcpy(o, t, sizeof t);
+}
+
+/* ---- trigonometry -------------------------------------------------------- */
+
+static void test_sin_cos_max_error_over_all_angles(void)
+{
+    double max_err = 0;
+    int32_t a, worst = 0;
+    for (a = 0; a < 65536; a++) {
+        fxl_q16_t s, c;
+        double x = TWO_PI * a / 65536.0, es, ec;
+        fxl_sincos_q16((fxl_angle_t)a, &s, &c);
+        es = fabs(q16d(s) - sin(x));
+        ec = fabs(q16d(c) - cos(x));
+        if (es > max_err) { max_err = es; worst = a; }
+        if (ec > max_err) { max_err = ec; worst = a; }
+        TEST_ASSERT_EQUAL_INT32(s, fxl_sin_q16((fxl_angle_t)a));
+        TEST_ASSERT_EQUAL_INT32(c, fxl_cos_q16((fxl_angle_t)a));
+    }
+    printf("sin/cos max error %.3g = 2^%.2f (angle %d)\n", max_err, log2(max_err), (int)worst);
+    /* Bound: final rounding 2^-17 + Taylor truncation 2^-21.6 + q30 Horner
+     * rounding (~6 * 2^-31) < 2^-17 + 2^-21 (trig.c). */
+    snprintf(msg, sizeof msg, "max |sin/cos error| %.3g at angle %d", max_err, (int)worst);
+    TEST_ASSERT_TRUE_MESSAGE(max_err <= ldexp(1, -17) + ldexp(1, -21), msg);
+    /* the brief's requirement, for the record */
+    TEST_ASSERT_TRUE(max_err <= ldexp(1, -15));
+}
+
+static void test_sin_cos_exact_at_quadrant_points(void)
+{
+    TEST_ASSERT_EQUAL_INT32(0, fxl_sin_q16(0));
+    TEST_ASSERT_EQUAL_INT32(65536, fxl_cos_q16(0));
+    TEST_ASSERT_EQUAL_INT32(65536, fxl_sin_q16(16384));
+    TEST_ASSERT_EQUAL_INT32(0, fxl_cos_q16(16384));
+    TEST_ASSERT_EQUAL_INT32(-65536, fxl_cos_q16(32768));
+    TEST_ASSERT_EQUAL_INT32(-65536, fxl_sin_q16(49152));
+    TEST_ASSERT_EQUAL_INT32(46341, fxl_sin_q16(8192)); /* round(2^16 / sqrt 2) */
+}
+
+/* Angle difference in 1/65536 turns, wrapped to (-32768, 32768]. */
+static double angle_diff(double got, double want)
+{
+    double d = fmod(got - want, 65536.0);
+    if (d > 32768) d -= 65536;
+    if (d < -32768) d += 65536;
+    return d;
+}
+
+static void test_atan2_error_within_half_lsb_plus_cordic(void)
+{
+    double max_err = 0;
+    int i;
+    rng_seed(7);
+    for (i = 0; i < 200000; i++) {
+        /* radius from 2^-16 to 2^15 (log-uniform) and any direction */
+        double r = ldexp(1, -16 + (int)(rng_next() % 31)) * rng_range(1, 2);
+        double th = rng_range(0, TWO_PI);
+        fxl_q16_t x = dq16(r * cos(th)), y = dq16(r * sin(th));
+        double want, e;
+        if (x == 0 && y == 0) continue;
+        want = atan2((double)y, (double)x) / TWO_PI * 65536.0;
+        if (want < 0) want += 65536.0;
+        e = fabs(angle_diff(fxl_atan2_angle(y, x), want));
+        if (e > max_err) max_err = e;
+        /* Bound: rounding 0.5 LSB + CORDIC 2^-27 turns = 2^-11 LSB. */
+        if (e > 0.5 + ldexp(1, -10)) {
+            snprintf(msg, sizeof msg, "atan2(%d, %d) = %u, want %.4f (err %.4f LSB)", (int)y, (int)x,
+                     (unsigned)fxl_atan2_angle(y, x), want, e);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+    printf("atan2 max error %.6f LSB (1 LSB = 1/65536 turn)\n", max_err);
+    TEST_ASSERT_EQUAL_UINT16(0, fxl_atan2_angle(0, 0));
+    TEST_ASSERT_EQUAL_UINT16(16384, fxl_atan2_angle(5, 0));
+    TEST_ASSERT_EQUAL_UINT16(32768, fxl_atan2_angle(0, -5));
+    TEST_ASSERT_EQUAL_UINT16(49152, fxl_atan2_angle(-5, 0));
+    TEST_ASSERT_EQUAL_UINT16(57344, fxl_atan2_angle(INT32_MIN + 1, INT32_MAX));
+}
+
+static void test_acos_asin_error_over_all_inputs(void)
+{
+    double max_c = 0, max_s = 0;
+    int32_t v;
+    for (v = -65536; v <= 65536; v++) {
+        double wc = acos(v / 65536.0) / TWO_PI * 65536.0;
+        double ws = asin(v / 65536.0) / TWO_PI * 65536.0;
+        double ec = fabs(fxl_acos_angle(v) - wc), es = fabs(fxl_asin_angle(v) - ws);
+        if (ec > max_c) max_c = ec;
+        if (es > max_s) max_s = es;
+        /* Bound: rounding 0.5 LSB; sqrt(1 - c^2) is floored in q30 (error
+         * 2^-30 rad) and CORDIC adds 2^-11 LSB. */
+        if (ec > 0.5 + ldexp(1, -10) || es > 0.5 + ldexp(1, -10)) {
+            snprintf(msg, sizeof msg, "input %d: acos err %.4f, asin err %.4f LSB", (int)v, ec, es);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+    printf("acos max error %.6f LSB, asin %.6f LSB\n", max_c, max_s);
+    TEST_ASSERT_EQUAL_INT32(32768, fxl_acos_angle(-2 * 65536)); /* clamped */
+    TEST_ASSERT_EQUAL_INT32(-16384, fxl_asin_angle(-65536));
+}
+
+/* ---- matrices -------------------------------------------------------------- */
+
+static void test_rotations_match_double(void)
+{
+    int i, r, c;
+    double max_err = 0;
+    for (i = 0; i < 65536; i += 97) {
+        fxl_mat4_t m[3];
+        double x = TWO_PI * i / 65536.0, cs = cos(x), sn = sin(x);
+        double want[3][3][3] = {
+            {{1, 0, 0}, {0, cs, -sn}, {0, sn, cs}},
+            {{cs, 0, sn}, {0, 1, 0}, {-sn, 0, cs}},
+            {{cs, -sn, 0}, {sn, cs, 0}, {0, 0, 1}}};
+        int k;
+        fxl_mat4_rotate_x(&m[0], (fxl_angle_t)i);
+        fxl_mat4_rotate_y(&m[1], (fxl_angle_t)i);
+        fxl_mat4_rotate_z(&m[2], (fxl_angle_t)i);
+        for (k = 0; k < 3; k++)
+            for (r = 0; r < 3; r++)
+                for (c = 0; c < 3; c++) {
+                    double e = fabs(q16d(m[k].m[r][c]) - want[k][r][c]);
+                    if (e > max_err) max_err = e;
+                }
+    }
+    /* entries are the sin/cos values: same bound as above */
+    TEST_ASSERT_TRUE(max_err <= ldexp(1, -17) + ldexp(1, -21));
+}
+
+static void test_rotate_axis_matches_rodrigues(void)
+{
+    double max_err = 0;
+    int i;
+    rng_seed(11);
+    for (i = 0; i < 2000; i++) {
+        double ax[3], len, x, cs, sn, a[3];
+        fxl_vec3_t axis;
+        fxl_mat4_t m;
+        fxl_angle_t ang = (fxl_angle_t)(rng_next() & 0xFFFF);
+        int r, c;
+        ax[0] = rng_range(-1, 1); ax[1] = rng_range(-1, 1); ax[2] = rng_range(-1, 1);
+        len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+        if (len < 0.1) continue;
+        axis.x = dq16(ax[0] / len); axis.y = dq16(ax[1] / len); axis.z = dq16(ax[2] / len);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_rotate_axis(&m, &axis, ang));
+        a[0] = q16d(axis.x); a[1] = q16d(axis.y); a[2] = q16d(axis.z);
+        x = TWO_PI * ang / 65536.0; cs = cos(x); sn = sin(x);
+        for (r = 0; r < 3; r++)
+            for (c = 0; c < 3; c++) {
+                double k = 0, want, e;
+                if (r != c) {
+                    int o = 3 - r - c;
+                    k = ((r + 1) % 3 == c) ? -a[o] : a[o];
+                }
+                want = (r == c ? cs : 0) + (1 - cs) * a[r] * a[c] + sn * k;
+                e = fabs(q16d(m.m[r][c]) - want);
+                if (e > max_err) max_err = e;
+            }
+    }
+    printf("rotate_axis max entry error %.3g (2^%.2f)\n", max_err, log2(max_err));
+    /* Bound: rounding 2^-17 + sin/cos q30 error (2^-21) times at most 2 +
+     * the q30 products' rounding (3 * 2^-31): under 2^-16. */
+    TEST_ASSERT_TRUE(max_err < ldexp(1, -16));
+}
+
+static void test_rotate_axis_rejects_non_unit_axis(void)
+{
+    fxl_mat4_t m;
+    fxl_vec3_t bad = {FXL_Q16_ONE * 2, 0, 0}, huge = {INT32_MAX, INT32_MAX, 0};
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &bad, 100));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &huge, 100));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mat4_rotate_axis(NULL, &bad, 100));
+}
+
+static void test_mat4_mul_and_transform_match_double(void)
+{
+    fxl_mat4_t a, b, o, t;
+    double da[4][4], db[4][4], dp[4][4];
+    int r, c, i;
+    double max_err = 0;
+    rng_seed(3);
+    for (i = 0; i < 1000; i++) {
+        fxl_vec4_t v, out;
+        double dv[4], dout;
+        for (r = 0; r < 4; r++)
+            for (c = 0; c < 4; c++) {
+                a.m[r][c] = dq16(rng_range(-8, 8));
+                b.m[r][c] = dq16(rng_range(-8, 8));
+            }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_mul(&o, &a, &b));
+        mat_to_d(&a, da); mat_to_d(&b, db);
+        matd_mul(dp, da, db);
+        for (r = 0; r < 4; r++)
+            for (c = 0; c < 4; c++) {
+                /* exact q32 sum, rounded once: error <= 2^-17 */
+                double e = fabs(q16d(o.m[r][c]) - dp[r][c]);
+                if (e > max_err) max_err = e;
+            }
+        t = a; /* aliasing: out == a */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_mul(&t, &t, &b));
+        TEST_ASSERT_EQUAL_MEMORY(&o, &t, sizeof o);
+        v.x = dq16(rng_range(-100, 100)); v.y = dq16(rng_range(-100, 100));
+        v.z = dq16(rng_range(-100, 100)); v.w = FXL_Q16_ONE;
+        dv[0] = q16d(v.x); dv[1] = q16d(v.y); dv[2] = q16d(v.z); dv[3] = 1;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_transform(&a, &v, &out));
+        dout = da[0][0] * dv[0] + da[0][1] * dv[1] + da[0][2] * dv[2] + da[0][3];
+        TEST_ASSERT_TRUE(fabs(q16d(out.x) - dout) <= ldexp(1, -17));
+    }
+    TEST_ASSERT_TRUE(max_err <= ldexp(1, -17));
+}
+
+static void test_mat4_mul_overflow_saturates_with_status(void)
+{
+    fxl_mat4_t a, o;
+    fxl_vec4_t v = {FXL_Q16_INT(30000), 0, 0, FXL_Q16_ONE}, out;
+    fxl_mat4_scale(&a, FXL_Q16_INT(300), FXL_Q16_ONE, FXL_Q16_ONE);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_mul(&o, &a, &a));
+    TEST_ASSERT_EQUAL_INT32(INT32_MAX, o.m[0][0]);
+    TEST_ASSERT_EQUAL_INT32(FXL_Q16_ONE, o.m[1][1]);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_transform(&a, &v, &out));
+    TEST_ASSERT_EQUAL_INT32(INT32_MAX, out.x);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mat4_mul(NULL, &a, &a));
+}
+
+static void test_perspective_matches_glu_formula(void)
+{
+    int deg;
+    for (deg = 30; deg <= 120; deg += 5) {
+        fxl_mat4_t m;
+        fxl_angle_t fovy = FXL_ANGLE_DEG(deg);
+        fxl_q16_t aspect = dq16(4.0 / 3.0), n = dq16(0.25), f = dq16(500);
+        double fv = 1.0 / tan(TWO_PI * (fovy / 2) / 65536.0);
+        double dn = q16d(n), df = q16d(f);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_perspective(&m, fovy, aspect, n, f));
+        /* cot from q30 sin/cos: (2^-21.6 / s)(1 + cot) <= 0.36 LSB at 30 deg,
+         * plus 0.5 LSB rounding; fx adds one more rounding of f / aspect. */
+        snprintf(msg, sizeof msg, "fov %d: f %.6f want %.6f", deg, q16d(m.m[1][1]), fv);
+        TEST_ASSERT_TRUE_MESSAGE(fabs(q16d(m.m[1][1]) - fv) <= 0.86 / 65536, msg);
+        TEST_ASSERT_TRUE(fabs(q16d(m.m[0][0]) - fv / q16d(aspect)) <= 1.9 / 65536);
+        TEST_ASSERT_TRUE(fabs(q16d(m.m[2][2]) - (df + dn) / (dn - df)) <= 0.5 / 65536);
+        TEST_ASSERT_TRUE(fabs(q16d(m.m[2][3]) - 2 * df * dn / (dn - df)) <= 1.0 / 65536);
+        TEST_ASSERT_EQUAL_INT32(-FXL_Q16_ONE, m.m[3][2]);
+        TEST_ASSERT_EQUAL_INT32(0, m.m[3][3]);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_perspective(&m, fovy, aspect, n, 0));
+        TEST_ASSERT_EQUAL_INT32(-FXL_Q16_ONE, m.m[2][2]);
+        TEST_ASSERT_EQUAL_INT32(-2 * n, m.m[2][3]);
+    }
+    {
+        fxl_mat4_t m;
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 0, 65536, 65536, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 32768, 65536, 65536, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 1000, 65536, 0, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 1000, 65536, 65536, 65536));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 1000, 0, 65536, 0));
+    }
+}
+
+static void test_look_at_matches_double(void)
+{
+    int i;
+    double max_rot = 0, max_t = 0;
+    rng_seed(5);
+    for (i = 0; i < 2000; i++) {
+        double e[3], c[3], up[3] = {0, 1, 0}, f[3], s[3], u[3], len, want[3][4];
+        fxl_vec3_t fe, fc, fu = {0, FXL_Q16_ONE, 0};
+        fxl_mat4_t m;
+        int k, r;
+        for (k = 0; k < 3; k++) { e[k] = rng_range(-500, 500); c[k] = rng_range(-500, 500); }
+        fe.x = dq16(e[0]); fe.y = dq16(e[1]); fe.z = dq16(e[2]);
+        fc.x = dq16(c[0]); fc.y = dq16(c[1]); fc.z = dq16(c[2]);
+        e[0] = q16d(fe.x); e[1] = q16d(fe.y); e[2] = q16d(fe.z);
+        c[0] = q16d(fc.x); c[1] = q16d(fc.y); c[2] = q16d(fc.z);
+        for (k = 0; k < 3; k++) f[k] = c[k] - e[k];
+        len = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        for (k = 0; k < 3; k++) f[k] /= len;
+        s[0] = f[1] * up[2] - f[2] * up[1]; s[1] = f[2] * up[0] - f[0] * up[2];
+        s[2] = f[0] * up[1] - f[1] * up[0];
+        len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        if (len < 0.05) continue;
+        for (k = 0; k < 3; k++) s[k] /= len;
+        u[0] = s[1] * f[2] - s[2] * f[1]; u[1] = s[2] * f[0] - s[0] * f[2];
+        u[2] = s[0] * f[1] - s[1] * f[0];
+        for (k = 0; k < 3; k++) { want[0][k] = s[k]; want[1][k] = u[k]; want[2][k] = -f[k]; }
+        want[0][3] = -(s[0] * e[0] + s[1] * e[1] + s[2] * e[2]);
+        want[1][3] = -(u[0] * e[0] + u[1] * e[1] + u[2] * e[2]);
+        want[2][3] = f[0] * e[0] + f[1] * e[1] + f[2] * e[2];
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_look_at(&m, &fe, &fc, &fu));
+        for (r = 0; r < 3; r++) {
+            for (k = 0; k < 3; k++) {
+                double er = fabs(q16d(m.m[r][k]) - want[r][k]);
+                if (er > max_rot) max_rot = er;
+            }
+            if (fabs(q16d(m.m[r][3]) - want[r][3]) > max_t) max_t = fabs(q16d(m.m[r][3]) - want[r][3]);
+        }
+    }
+    printf("look_at max error: rotation %.3g, translation %.3g\n", max_rot, max_t);
+    /* Rotation: q30 unit vectors (a few 2^-30) rounded to q16: <= 2^-17 +
+     * 2^-26. Translation: |eye| <= 870 times the 2^-28 unit-vector error,
+     * three terms, plus 2^-17 rounding: < 2^-17 + 3 * 870 * 2^-28 < 2^-16. */
+    TEST_ASSERT_TRUE(max_rot <= ldexp(1, -17) + ldexp(1, -26));
+    TEST_ASSERT_TRUE(max_t < ldexp(1, -16));
+    {
+        fxl_mat4_t m;
+        fxl_vec3_t a = {0, 0, 0}, up = {0, FXL_Q16_ONE, 0}, above = {0, FXL_Q16_INT(3), 0};
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &a, &a, &up));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &a, &above, &up));
+    }
+}
+
+/* ---- projection accuracy target ------------------------------------------- */
+
+/* Random rigid transform (rotation from three angles, translation t). */
+static void random_rigid(fxl_mat4_t *m, double tmax)
+{
+    fxl_mat4_t rx, ry, rz, tr;
+    fxl_mat4_rotate_x(&rx, (fxl_angle_t)(rng_next() & 0xFFFF));
+    fxl_mat4_rotate_y(&ry, (fxl_angle_t)(rng_next() & 0xFFFF));
+    fxl_mat4_rotate_z(&rz, (fxl_angle_t)(rng_next() & 0xFFFF));
+    fxl_mat4_translate(&tr, dq16(rng_range(-tmax, tmax)), dq16(rng_range(-tmax, tmax)),
+                       dq16(rng_range(-tmax, tmax)));
+    fxl_mat4_mul(m, &rx, &ry);
+    fxl_mat4_mul(m, m, &rz);
+    fxl_mat4_mul(m, &tr, m);
+}
+
+/* Invert an affine double matrix (rotation part inverted in full). */
+static void affine_inverse(double m[4][4], double inv[4][4])
+{
+    double a = m[0][0], b = m[0][1], c = m[0][2], d = m[1][0], e = m[1][1], f = m[1][2];
+    double g = m[2][0], h = m[2][1], k = m[2][2];
+    double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+    int r;
+    inv[0][0] = (e * k - f * h) / det; inv[0][1] = (c * h - b * k) / det; inv[0][2] = (b * f - c * e) / det;
+    inv[1][0] = (f * g - d * k) / det; inv[1][1] = (a * k - c * g) / det; inv[1][2] = (c * d - a * f) / det;
+    inv[2][0] = (d * h - e * g) / det; inv[2][1] = (b * g - a * h) / det; inv[2][2] = (a * e - b * d) / det;
+    for (r = 0; r < 3; r++)
+        inv[r][3] = -(inv[r][0] * m[0][3] + inv[r][1] * m[1][3] + inv[r][2] * m[2][3]);
+    inv[3][0] = inv[3][1] = inv[3][2] = 0;
+    inv[3][3] = 1;
+}
+
+static void test_projection_accuracy_target_random_meshes(void)
+{
+    static const double nears[] = {0.05, 0.1, 0.3, 1, 3, 10};
+    int ni;
+    double worst_px = 0, worst_iw = 0;
+    long checked = 0;
+    rng_seed(20240611);
+    for (ni = 0; ni < 6; ni++) {
+        double n = nears[ni], max_px = 0, max_iw = 0;
+        int mesh;
+        for (mesh = 0; mesh < 20; mesh++) {
+            fxl_pipeline_t p;
+            fxl_xform_t xf;
+            double dm[4][4], dv[4][4], dp[4][4], mv[4][4], mvp[4][4], inv[4][4];
+            int v;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(
+                                              &p, FXL_ANGLE_DEG(60), dq16(4.0 / 3.0), dq16(n),
+                                              (mesh & 1) ? 0 : dq16(n * 2000)));
+            random_rigid(&p.model, 2 * n);
+            random_rigid(&p.view, 50 * n);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+            mat_to_d(&p.model, dm); mat_to_d(&p.view, dv); mat_to_d(&p.proj, dp);
+            matd_mul(mv, dv, dm);
+            matd_mul(mvp, dp, mv);
+            affine_inverse(mv, inv);
+            for (v = 0; v < 200; v++) {
+                /* a view-space point at depth near .. 1000 near (log-uniform)
+                 * inside the frustum, mapped back to object space */
+                double depth = n * pow(1000.0, rng_unit());
+                double ve[3], ob[3], c[4], sx, sy, iw, e;
+                fxl_vec3_t pos;
+                fxl_clipvert_t cv;
+                fxl_vertex_t out;
+                int r;
+                ve[0] = rng_range(-1, 1) * depth * 0.77;
+                ve[1] = rng_range(-1, 1) * depth * 0.58;
+                ve[2] = -depth;
+                for (r = 0; r < 3; r++) ob[r] = inv[r][0] * ve[0] + inv[r][1] * ve[1] + inv[r][2] * ve[2] + inv[r][3];
+                pos.x = dq16(ob[0]); pos.y = dq16(ob[1]); pos.z = dq16(ob[2]);
+                for (r = 0; r < 4; r++)
+                    c[r] = mvp[r][0] * q16d(pos.x) + mvp[r][1] * q16d(pos.y) + mvp[r][2] * q16d(pos.z) + mvp[r][3];
+                if (c[3] < q16d(p.near_q16) * (1 + 1e-9)) continue; /* rounded in front of near */
+                sx = 160.0 + c[0] / c[3] * 160.0;
+                sy = 120.0 - c[1] / c[3] * 120.0;
+                iw = q16d(p.near_q16) / c[3] * 4294967295.0;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_clip(&xf, &pos, &cv));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &cv, &out));
+                e = fmax(fabs(q16d(out.x) - sx), fabs(q16d(out.y) - sy));
+                if (e > max_px) max_px = e;
+                if (fabs(out.inv_w - iw) / iw > max_iw) max_iw = fabs(out.inv_w - iw) / iw;
+                /* The target: 1/16 px and 2^-12 relative. */
+                if (e > 1.0 / 16 || fabs(out.inv_w - iw) / iw > ldexp(1, -12)) {
+                    snprintf(msg, sizeof msg, "near %g depth %g: (%.5f, %.5f) want (%.5f, %.5f), inv_w %u want %.1f",
+                             n, depth, q16d(out.x), q16d(out.y), sx, sy, (unsigned)out.inv_w, iw);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+                checked++;
+            }
+        }
+        printf("near %5.2f: max |xy error| %.3g px (2^%.1f), max inv_w rel error %.3g (2^%.1f)\n", n,
+               max_px, log2(max_px), max_iw, log2(max_iw));
+        if (max_px > worst_px) worst_px = max_px;
+        if (max_iw > worst_iw) worst_iw = max_iw;
+    }
+    printf("projection: %ld vertices, worst %.3g px, inv_w %.3g\n", checked, worst_px, worst_iw);
+    TEST_ASSERT_GREATER_THAN(20000, checked);
+    /* Derived bound, far tighter than the target: clip coordinates carry
+     * ~2^-32 units of rounding per term on |object| <= ~1000 near (2^-33 *
+     * 3 * 1000 / near relative), the divide 2^-30: at 160 px per unit ndc
+     * and the q16 output rounding of 2^-17 px, < 2^-12 px. */
+    TEST_ASSERT_TRUE(worst_px < ldexp(1, -12));
+    /* inv_w: 31-bit reciprocal and the +-1 unit between near/w * 2^32 and
+     * near/w * (2^32 - 1); at w = 1000 near inv_w ~ 2^22: < 2^-20. */
+    TEST_ASSERT_TRUE(worst_iw < ldexp(1, -20));
+}
+
+static void test_project_rejects_w_at_or_behind_near(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t c;
+    fxl_vertex_t out;
+    memset(&c, 0, sizeof c);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    c.w = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+    c.w = -((int64_t)1 << 32);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+    c.w = xf.near_q32 - 1;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+    c.w = xf.near_q32;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, out.inv_w);
+    TEST_ASSERT_EQUAL_INT32(160 * 65536, out.x);
+    TEST_ASSERT_EQUAL_INT32(120 * 65536, out.y);
+    c.x = c.w * 1000; /* far outside the guard band: not clipped */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+}
+
+static void test_prepare_and_clip_report_overflow(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t c;
+    fxl_vec3_t far_pos = {FXL_Q16_INT(30000), FXL_Q16_INT(30000), FXL_Q16_INT(-30000)};
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    fxl_mat4_scale(&p.model, FXL_Q16_INT(30000), FXL_Q16_INT(30000), FXL_Q16_INT(30000));
+    fxl_mat4_scale(&p.view, FXL_Q16_INT(30000), FXL_Q16_INT(30000), FXL_Q16_INT(30000));
+    /* mv entries 9e8 fit q32 int64; clip of a 30000-unit point does not */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_clip(&xf, &far_pos, &c));
+    p.near_q16 = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_prepare(&p, &xf));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_prepare(NULL, &xf));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_set_viewport(&p, 0, 0, 0, 10));
+}
+
+/* ---- the mesh path ------------------------------------------------------- */
+
+typedef struct collect {
+    fxl_vertex_t tri[64][3];
+    int n;
+} collect_t;
+
+static fxl_status_t collect_fn(void *user, const fxl_vertex_t tri[3])
+{
+    collect_t *c = (collect_t *)user;
+    if (c->n >= 64) return FXL_ERR_NOMEM;
+    memcpy(c->tri[c->n++], tri, sizeof(fxl_vertex_t) * 3);
+    return FXL_OK;
+}
+
+static const fxl_vec3_t quad_pos[4] = {
+    {-FXL_Q16_ONE, -FXL_Q16_ONE, FXL_Q16_INT(-4)}, {FXL_Q16_ONE, -FXL_Q16_ONE, FXL_Q16_INT(-4)},
+    {FXL_Q16_ONE, FXL_Q16_ONE, FXL_Q16_INT(-4)},   {-FXL_Q16_ONE, FXL_Q16_ONE, FXL_Q16_INT(-4)}};
+static const fxl_texcoord_t quad_uv[4] = {{0, 0}, {FXL_Q16_ONE, 0}, {FXL_Q16_ONE, FXL_Q16_ONE}, {0, FXL_Q16_ONE}};
+
+static void test_emit_culls_by_screen_winding(void)
+{
+    static const uint16_t ccw[6] = {0, 1, 2, 0, 2, 3}, cw[6] = {0, 2, 1, 0, 3, 2};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_stats_t st;
+    collect_t col;
+    memset(&m, 0, sizeof m);
+    m.pos = quad_pos; m.uv = quad_uv; m.vert_count = 4; m.idx = ccw; m.tri_count = 2;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    memset(&st, 0, sizeof st); col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, &st));
+    TEST_ASSERT_EQUAL_INT(2, col.n); /* counter-clockwise on screen: kept by CULL_CW */
+    TEST_ASSERT_EQUAL_UINT32(0, st.culled_backface);
+    /* vertex 0 = (-1, -1, -4) -> left, below centre; f = cot(fovy / 2) with
+     * fovy = FXL_ANGLE_DEG(60) = 10922 / 65536 turns (59.996 degrees); the
+     * matrix entries are q16 (relative 2^-17), so within 2/65536 px. */
+    {
+        double f = 1.0 / tan(TWO_PI * 5461 / 65536.0);
+        double fx = q16d(p.proj.m[0][0]);
+        TEST_ASSERT_INT32_WITHIN(2, (int32_t)lround((160 - fx / 4 * 160) * 65536), col.tri[0][0].x);
+        TEST_ASSERT_INT32_WITHIN(2, (int32_t)lround((120 + f / 4 * 120) * 65536), col.tri[0][0].y);
+    }
+    TEST_ASSERT_UINT32_WITHIN(1, 1073741824u, col.tri[0][0].inv_w); /* near / w = 1/4 */
+    TEST_ASSERT_EQUAL_INT32(FXL_Q16_ONE, col.tri[0][1].u);
+    TEST_ASSERT_EQUAL_HEX16(0xFFFF, col.tri[0][0].color);
+    m.idx = cw;
+    memset(&st, 0, sizeof st); col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, &st));
+    TEST_ASSERT_EQUAL_INT(0, col.n);
+    TEST_ASSERT_EQUAL_UINT32(2, st.culled_backface);
+    TEST_ASSERT_EQUAL_UINT32(2, st.triangles);
+    p.cull = FXL_CULL_CCW;
+    col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    TEST_ASSERT_EQUAL_INT(2, col.n);
+    p.cull = FXL_CULL_NONE;
+    m.idx = ccw;
+    col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    TEST_ASSERT_EQUAL_INT(2, col.n);
+}
+
+static void test_emit_triangle_through_eye_plane_stays_in_guard_band(void)
+{
+    /* A floor triangle from far ahead to behind the camera, crossing w = 0. */
+    static const fxl_vec3_t pos[3] = {
+        {FXL_Q16_INT(-40), -37814, FXL_Q16_INT(-50)},
+        {FXL_Q16_INT(40), -37814, FXL_Q16_INT(-50)},
+        {0, -37814, FXL_Q16_INT(30)}};
+    static const uint16_t idx[3] = {0, 2, 1};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_stats_t st;
+    collect_t col;
+    int t, k;
+    memset(&m, 0, sizeof m);
+    m.pos = pos; m.vert_count = 3; m.idx = idx; m.tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    p.cull = FXL_CULL_NONE;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(&p, FXL_ANGLE_DEG(60), dq16(4.0 / 3),
+                                                               dq16(0.05), 0));
+    memset(&st, 0, sizeof st); col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, &st));
+    TEST_ASSERT_GREATER_OR_EQUAL(1, col.n);
+    for (t = 0; t < col.n; t++)
+        for (k = 0; k < 3; k++) {
+            const fxl_vertex_t *v = &col.tri[t][k];
+            /* guard: G = 8192 / 160 = 51.2 ndc, i.e. 160 +- 8192 px in x and
+             * 120 +- 8192 * 120 / 160... both axes use the same G */
+            TEST_ASSERT_TRUE(v->x >= (160 - 8192) * 65536 && v->x <= (160 + 8192) * 65536);
+            TEST_ASSERT_TRUE(v->y >= (120 - 51.2 * 120 - 1) * 65536 && v->y <= (120 + 51.2 * 120 + 1) * 65536);
+            TEST_ASSERT_TRUE(v->inv_w >= 1);
+        }
+}
+
+static void test_emit_argument_and_index_errors(void)
+{
+    static const uint16_t bad_idx[3] = {0, 1, 4};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    collect_t col;
+    memset(&m, 0, sizeof m);
+    m.pos = quad_pos; m.vert_count = 4; m.idx = bad_idx; m.tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, NULL, &col, NULL));
+    m.pos = NULL;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    m.pos = quad_pos;
+    p.cull = 7;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+}
+
+/* Every triangle of the host meshes is counter-clockwise seen from the side
+ * its vertex normals point to: geometric normal . mean vertex normal > 0. */
+static void check_mesh_winding(const fxl_mesh_t *m, const char *name)
+{
+    uint32_t t;
+    TEST_ASSERT_NOT_NULL(m->pos);
+    for (t = 0; t < m->tri_count; t++) {
+        const fxl_vec3_t *a = &m->pos[m->idx[3 * t]], *b = &m->pos[m->idx[3 * t + 1]];
+        const fxl_vec3_t *c = &m->pos[m->idx[3 * t + 2]];
+        double e1[3] = {q16d(b->x - a->x), q16d(b->y - a->y), q16d(b->z - a->z)};
+        double e2[3] = {q16d(c->x - a->x), q16d(c->y - a->y), q16d(c->z - a->z)};
+        double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        double n[3] = {0, 0, 0};
+        int k;
+        TEST_ASSERT_TRUE(m->idx[3 * t] < m->vert_count && m->idx[3 * t + 1] < m->vert_count &&
+                         m->idx[3 * t + 2] < m->vert_count);
+        for (k = 0; k < 3; k++) {
+            const fxl_vec3_t *vn = &m->normal[m->idx[3 * t + k]];
+            n[0] += q16d(vn->x); n[1] += q16d(vn->y); n[2] += q16d(vn->z);
+        }
+        if (g[0] * n[0] + g[1] * n[1] + g[2] * n[2] <= 0) {
+            snprintf(msg, sizeof msg, "%s triangle %u faces against its normals", name, (unsigned)t);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+}
+
+static void test_host_meshes_wind_counter_clockwise_toward_normals(void)
+{
+    fxl_mesh_t m;
+    TEST_ASSERT_EQUAL_INT(0, meshes_sphere(&m, 1.0, 16, 8));
+    TEST_ASSERT_EQUAL_UINT32(2 * 16 * 7, m.tri_count);
+    check_mesh_winding(&m, "sphere");
+    meshes_free(&m);
+    TEST_ASSERT_EQUAL_INT(0, meshes_cylinder(&m, 1.0, -5, 5, 12, 4, 1));
+    check_mesh_winding(&m, "tunnel");
+    meshes_free(&m);
+    TEST_ASSERT_EQUAL_INT(0, meshes_cylinder(&m, 1.0, -5, 5, 12, 4, 0));
+    check_mesh_winding(&m, "cylinder");
+    meshes_free(&m);
+    TEST_ASSERT_EQUAL_INT(0, meshes_cube(&m, 1.0));
+    TEST_ASSERT_EQUAL_UINT32(12, m.tri_count);
+    check_mesh_winding(&m, "cube");
+    meshes_free(&m);
+    TEST_ASSERT_EQUAL_INT(0, meshes_floor(&m, -0.5, -4, 4, -10, -1, 4, 6, 2.0));
+    check_mesh_winding(&m, "floor");
+    meshes_free(&m);
+    TEST_ASSERT_EQUAL_INT(-1, meshes_sphere(&m, 1.0, 2, 8));
+}
+
+static void test_cube_mesh_shows_at_most_three_faces(void)
+{
+    /* Cube rotated 30 degrees about x and y at z = -5: the back faces are
+     * culled, 3 faces (6 triangles) face the camera. */
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_mat4_t r;
+    fxl_stats_t st;
+    collect_t col;
+    TEST_ASSERT_EQUAL_INT(0, meshes_cube(&m, 1.0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    fxl_mat4_translate(&p.model, 0, 0, FXL_Q16_INT(-5));
+    fxl_mat4_rotate_x(&r, FXL_ANGLE_DEG(30));
+    fxl_mat4_mul(&p.model, &p.model, &r);
+    fxl_mat4_rotate_y(&r, FXL_ANGLE_DEG(30));
+    fxl_mat4_mul(&p.model, &p.model, &r);
+    memset(&st, 0, sizeof st); col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, &st));
+    TEST_ASSERT_EQUAL_INT(6, col.n);
+    TEST_ASSERT_EQUAL_UINT32(6, st.culled_backface);
+    meshes_free(&m);
+}
+
+/* A tilted wall z = -3 - 0.3 y, x, y in [-ext, ext] as an n x n grid,
+ * covers the whole view (every view ray with |dy| <= tan 30 deg hits it at
+ * distance <= 3.6). Drawn without depth, the pixels written must be exactly
+ * W * H: a hole or a pixel drawn twice along the clipped, fanned edges
+ * would change the count. Returns the number of triangles drawn. */
+enum { WALL_W = 96, WALL_H = 64, WALL_MAXN = 40 };
+static uint32_t draw_wall(double ext, int n, int cull, uint32_t *pixels_out, uint32_t *outside)
+{
+    static uint16_t pixels[WALL_W * WALL_H];
+    static fxl_vec3_t pos[(WALL_MAXN + 1) * (WALL_MAXN + 1)];
+    static uint16_t idx[WALL_MAXN * WALL_MAXN * 6];
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_stats_t st;
+    int i, j, k = 0;
+    for (i = 0; i <= n; i++)
+        for (j = 0; j <= n; j++) {
+            double x = -ext + 2 * ext * j / n, y = -ext + 2 * ext * i / n;
+            pos[i * (n + 1) + j].x = dq16(x);
+            pos[i * (n + 1) + j].y = dq16(y);
+            pos[i * (n + 1) + j].z = dq16(-3 - 0.3 * y);
+        }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) {
+            int a = i * (n + 1) + j;
+            idx[k++] = (uint16_t)a; idx[k++] = (uint16_t)(a + 1); idx[k++] = (uint16_t)(a + n + 2);
+            idx[k++] = (uint16_t)a; idx[k++] = (uint16_t)(a + n + 2); idx[k++] = (uint16_t)(a + n + 1);
+        }
+    memset(&m, 0, sizeof m);
+    m.pos = pos; m.vert_count = (uint32_t)((n + 1) * (n + 1)); m.idx = idx;
+    m.tri_count = (uint32_t)(n * n * 2);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, WALL_W, WALL_H));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(&p, FXL_ANGLE_DEG(60), dq16(1.5),
+                                                               dq16(0.05), 0));
+    p.cull = (uint8_t)cull;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, WALL_W, WALL_H, WALL_W, FXL_PIXFMT_RGB565));
+    fxl_draw_defaults(&d);
+    d.depth = 0;
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, &st));
+    *pixels_out = st.pixels;
+    if (outside) *outside = st.culled_outside;
+    return st.drawn;
+}
+
+static void test_mesh_draw_clipped_wall_covers_each_pixel_once(void)
+{
+    uint32_t px, px2, outside, drawn;
+    /* coarse: 20-unit quads, the part below y = -10 behind the eye, the
+     * rest reaching far beyond the guard band */
+    drawn = draw_wall(100, 10, FXL_CULL_NONE, &px, &outside);
+    printf("coarse wall: %u drawn, %u outside, %u pixels\n", (unsigned)drawn, (unsigned)outside, (unsigned)px);
+    TEST_ASSERT_GREATER_THAN(0, outside);
+    TEST_ASSERT_EQUAL_UINT32(WALL_W * WALL_H, px);
+    /* fine: 1-unit quads, ~100 triangles sharing edges on screen */
+    drawn = draw_wall(20, 40, FXL_CULL_NONE, &px, &outside);
+    printf("fine wall: %u drawn, %u pixels\n", (unsigned)drawn, (unsigned)px);
+    TEST_ASSERT_GREATER_THAN(50, drawn);
+    TEST_ASSERT_EQUAL_UINT32(WALL_W * WALL_H, px);
+    /* one cull mode drops the whole wall, the other keeps all of it */
+    draw_wall(20, 40, FXL_CULL_CW, &px, NULL);
+    draw_wall(20, 40, FXL_CULL_CCW, &px2, NULL);
+    TEST_ASSERT_EQUAL_UINT32(WALL_W * WALL_H, px + px2);
+    TEST_ASSERT_TRUE(px == 0 || px2 == 0);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_sin_cos_max_error_over_all_angles);
+    RUN_TEST(test_sin_cos_exact_at_quadrant_points);
+    RUN_TEST(test_atan2_error_within_half_lsb_plus_cordic);
+    RUN_TEST(test_acos_asin_error_over_all_inputs);
+    RUN_TEST(test_rotations_match_double);
+    RUN_TEST(test_rotate_axis_matches_rodrigues);
+    RUN_TEST(test_rotate_axis_rejects_non_unit_axis);
+    RUN_TEST(test_mat4_mul_and_transform_match_double);
+    RUN_TEST(test_mat4_mul_overflow_saturates_with_status);
+    RUN_TEST(test_perspective_matches_glu_formula);
+    RUN_TEST(test_look_at_matches_double);
+    RUN_TEST(test_projection_accuracy_target_random_meshes);
+    RUN_TEST(test_project_rejects_w_at_or_behind_near);
+    RUN_TEST(test_prepare_and_clip_report_overflow);
+    RUN_TEST(test_emit_culls_by_screen_winding);
+    RUN_TEST(test_emit_triangle_through_eye_plane_stays_in_guard_band);
+    RUN_TEST(test_emit_argument_and_index_errors);
+    RUN_TEST(test_host_meshes_wind_counter_clockwise_toward_normals);
+    RUN_TEST(test_cube_mesh_shows_at_most_three_faces);
+    RUN_TEST(test_mesh_draw_clipped_wall_covers_each_pixel_once);
+    return UNITY_END();
+}

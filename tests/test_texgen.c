@@ -1,0 +1,288 @@
+/* tests/test_texgen.c - texture-coordinate generation (src/texgen.c) against
+ * double precision: planar, cylindrical, spherical, cube map, seams, poles.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "unity.h"
+#include "fixel/pipeline.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static const double TWO_PI = 6.283185307179586476925286766559;
+static char msg[256];
+static uint64_t rng_state;
+static void rng_seed(uint64_t s) { rng_state = s; }
+static uint64_t rng_next(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717ULL;
+}
+static double rng_range(double a, double b)
+{
+    return a + (b - a) * ((double)(rng_next() >> 11) / 9007199254740992.0);
+}
+static fxl_q16_t dq16(double v) { return (fxl_q16_t)lround(v * 65536.0); }
+static double q16d(fxl_q16_t v) { return v / 65536.0; }
+
+/* difference modulo one period, in (-0.5, 0.5] */
+static double wrap_diff(double a, double b)
+{
+    double d = fmod(a - b, 1.0);
+    if (d > 0.5) d -= 1;
+    if (d <= -0.5) d += 1;
+    return d;
+}
+
+static fxl_vec3_t vec(double x, double y, double z)
+{
+    fxl_vec3_t v;
+    v.x = dq16(x); v.y = dq16(y); v.z = dq16(z);
+    return v;
+}
+
+static void test_planar_uses_chosen_plane_with_scale_and_offset(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3] = {vec(1, 2, 3), vec(-0.5, 0.25, 4), vec(0, 0, 0)};
+    fxl_texcoord_t t[3];
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_PLANAR;
+    tg.scale_u = dq16(2); tg.offset_u = dq16(0.5);
+    tg.scale_v = dq16(0.25); tg.offset_v = dq16(-1);
+    tg.plane = FXL_PLANE_XY;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(dq16(2.5), t[0].u);     /* 2 * 1 + 0.5 */
+    TEST_ASSERT_EQUAL_INT32(dq16(-0.5), t[0].v);    /* 0.25 * 2 - 1 */
+    TEST_ASSERT_EQUAL_INT32(dq16(-0.5), t[1].u);
+    tg.plane = FXL_PLANE_YZ;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(dq16(4.5), t[0].u);     /* y */
+    TEST_ASSERT_EQUAL_INT32(dq16(-0.25), t[0].v);   /* z */
+    tg.plane = FXL_PLANE_XZ;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(dq16(2.5), t[0].u);
+    TEST_ASSERT_EQUAL_INT32(dq16(0), t[1].v);       /* 0.25 * 4 - 1 */
+}
+
+/* (a, b, h) as documented for each axis */
+static void frame(int axis, const double p[3], double *a, double *b, double *h)
+{
+    if (axis == FXL_AXIS_X) { *a = p[1]; *b = p[2]; *h = p[0]; }
+    else if (axis == FXL_AXIS_Y) { *a = p[2]; *b = p[0]; *h = p[1]; }
+    else { *a = p[0]; *b = p[1]; *h = p[2]; }
+}
+
+static void check_polar(int mode)
+{
+    fxl_texgen_t tg;
+    double max_u = 0, max_v = 0;
+    int i;
+    fxl_texgen_defaults(&tg);
+    tg.mode = (uint8_t)mode;
+    rng_seed(17 + mode);
+    for (i = 0; i < 20000; i++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        double c[3], r = pow(100.0, rng_range(0, 1)), th = rng_range(0, TWO_PI), ph = rng_range(0.05, 3.09);
+        int k;
+        tg.axis = (uint8_t)(i % 3);
+        /* a small triangle around one point: no seam inside, no pole */
+        for (k = 0; k < 3; k++) {
+            double tk = th + 0.01 * k, pk = ph + 0.005 * (k == 2);
+            double a = r * sin(pk) * cos(tk), b = r * sin(pk) * sin(tk), h = r * cos(pk);
+            if (tg.axis == FXL_AXIS_X) { c[1] = a; c[2] = b; c[0] = h; }
+            else if (tg.axis == FXL_AXIS_Y) { c[2] = a; c[0] = b; c[1] = h; }
+            else { c[0] = a; c[1] = b; c[2] = h; }
+            p[k] = vec(c[0], c[1], c[2]);
+        }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        for (k = 0; k < 3; k++) {
+            double q[3] = {q16d(p[k].x), q16d(p[k].y), q16d(p[k].z)}, a, b, h, wu, wv, eu, ev;
+            frame(tg.axis, q, &a, &b, &h);
+            wu = atan2(b, a) / TWO_PI;
+            wv = mode == FXL_TEXGEN_SPHERICAL ? atan2(sqrt(a * a + b * b), h) / (TWO_PI / 2) : h;
+            eu = fabs(wrap_diff(q16d(t[k].u), wu)) * 65536;
+            ev = fabs(q16d(t[k].v) - wv) * 65536;
+            if (eu > max_u) max_u = eu;
+            if (ev > max_v) max_v = ev;
+            /* u: atan2 rounding 0.5 LSB + CORDIC 2^-11 LSB. v (spherical):
+             * 0.5 LSB rounding + floor-sqrt r error 2^-16 / |p| rad, /pi,
+             * with |p| >= 1: <= 0.5 + 0.32 LSB. Cylindrical v = h exactly. */
+            if (eu > 0.5 + ldexp(1, -10) || ev > (mode == FXL_TEXGEN_SPHERICAL ? 0.83 : 0)) {
+                snprintf(msg, sizeof msg, "mode %d axis %d point (%g %g %g): u err %.3f v err %.3f LSB",
+                         mode, tg.axis, q[0], q[1], q[2], eu, ev);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    printf("texgen mode %d: max u error %.3f LSB, v %.3f LSB\n", mode, max_u, max_v);
+}
+
+static void test_cylindrical_matches_double(void) { check_polar(FXL_TEXGEN_CYLINDRICAL); }
+static void test_spherical_matches_double(void) { check_polar(FXL_TEXGEN_SPHERICAL); }
+
+/* Point on the unit circle around Y at theta (turns), height y. */
+static fxl_vec3_t around_y(double turns, double y)
+{
+    return vec(sin(TWO_PI * turns), y, cos(TWO_PI * turns)); /* a = z, b = x */
+}
+
+static void test_seam_triangle_does_not_span_whole_texture(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    double want[3] = {0.98, 0.02, 0.99}, lo = 1e9, hi = -1e9;
+    int k, mode;
+    for (mode = FXL_TEXGEN_CYLINDRICAL; mode <= FXL_TEXGEN_SPHERICAL; mode++) {
+        fxl_texgen_defaults(&tg);
+        tg.mode = (uint8_t)mode;
+        for (k = 0; k < 3; k++) p[k] = around_y(want[k], 0.1 * k);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        lo = 1e9; hi = -1e9;
+        for (k = 0; k < 3; k++) {
+            double u = q16d(t[k].u);
+            /* the same place of a repeating texture */
+            TEST_ASSERT_DOUBLE_WITHIN(1.0 / 65536, 0, wrap_diff(u, want[k]));
+            if (u < lo) lo = u;
+            if (u > hi) hi = u;
+        }
+        /* without the fix the span would be 0.97; with it 0.04 */
+        snprintf(msg, sizeof msg, "mode %d: u span %.4f", mode, hi - lo);
+        TEST_ASSERT_TRUE_MESSAGE(hi - lo < 0.05, msg);
+        /* with a scale the period scales too */
+        tg.scale_u = FXL_Q16_INT(4);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        TEST_ASSERT_INT32_WITHIN(4, dq16(0.16) + t[0].u, t[1].u);
+    }
+}
+
+static void test_pole_takes_mean_theta_of_other_vertices(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_SPHERICAL;
+    tg.axis = FXL_AXIS_Y;
+    p[0] = vec(0, 1, 0); /* north pole */
+    p[1] = around_y(0.10, 0.9);
+    p[2] = around_y(0.20, 0.9);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    /* mean of 0.10 and 0.20 (each within 0.5 LSB + rounding of the mean) */
+    TEST_ASSERT_INT32_WITHIN(1, dq16(0.15), t[0].u);
+    TEST_ASSERT_EQUAL_INT32(0, t[0].v); /* phi = 0 at +y */
+    /* pole between vertices across the seam: 0.95 and 0.05 -> 1.0 */
+    p[1] = around_y(0.95, 0.9);
+    p[2] = around_y(0.05, 0.9);
+    p[0] = vec(0, -2, 0); /* south pole */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_DOUBLE_WITHIN(2.0 / 65536, 0, wrap_diff(q16d(t[0].u), 0.0));
+    TEST_ASSERT_TRUE(fabs(q16d(t[0].u) - q16d(t[1].u)) < 0.06);
+    TEST_ASSERT_TRUE(fabs(q16d(t[0].u) - q16d(t[2].u)) < 0.06);
+    TEST_ASSERT_EQUAL_INT32(65536, t[0].v); /* phi = 180 deg */
+    /* cylinder cap centre (on the axis at h = 0) is a pole too */
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    p[0] = vec(0, 0, 0);
+    p[1] = around_y(0.30, 0);
+    p[2] = around_y(0.40, 0);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_INT32_WITHIN(1, dq16(0.35), t[0].u);
+}
+
+static void test_cube_faces_and_atlas_layout(void)
+{
+    /* face centres: (major axis direction, face index) */
+    static const double dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    fxl_texgen_t tg;
+    double max_err = 0;
+    int f, i;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CUBE;
+    for (f = 0; f < 6; f++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        p[0] = vec(dir[f][0] * 2, dir[f][1] * 2, dir[f][2] * 2);
+        p[1] = p[0]; p[2] = p[0];
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        /* centre of tile (f % 3, f / 3) in the 3x2 atlas */
+        TEST_ASSERT_INT32_WITHIN(1, dq16(((f % 3) + 0.5) / 3), t[0].u);
+        TEST_ASSERT_INT32_WITHIN(1, dq16(((f / 3) + 0.5) / 2), t[0].v);
+    }
+    /* random small triangles on the faces of a cube of half-size 3 */
+    rng_seed(5);
+    for (i = 0; i < 6000; i++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        double c[3][3];
+        int k, ax, sg;
+        f = i % 6; ax = f / 2; sg = (f % 2) ? -1 : 1;
+        for (k = 0; k < 3; k++) {
+            int j;
+            for (j = 0; j < 3; j++) c[k][j] = rng_range(-2.9, 2.9);
+            c[k][ax] = 3 * sg;
+            p[k] = vec(c[k][0], c[k][1], c[k][2]);
+        }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        for (k = 0; k < 3; k++) {
+            double x = q16d(p[k].x), y = q16d(p[k].y), z = q16d(p[k].z), ma, sc, tc, wu, wv, e;
+            switch (f) {
+            case 0: ma = x; sc = -z; tc = -y; break;
+            case 1: ma = -x; sc = z; tc = -y; break;
+            case 2: ma = y; sc = x; tc = z; break;
+            case 3: ma = -y; sc = x; tc = -z; break;
+            case 4: ma = z; sc = x; tc = -y; break;
+            default: ma = -z; sc = -x; tc = -y; break;
+            }
+            wu = ((f % 3) + (sc / ma + 1) / 2) / 3;
+            wv = ((f / 3) + (tc / ma + 1) / 2) / 2;
+            e = fmax(fabs(q16d(t[k].u) - wu), fabs(q16d(t[k].v) - wv)) * 65536;
+            if (e > max_err) max_err = e;
+            /* s, t are rounded (0.5 LSB) and then divided by 3 (u) or 2 (v)
+             * with rounding: u <= 0.5 / 3 + 1 / 3 = 0.5 LSB, v <= 0.25 +
+             * 0.5 = 0.75 LSB. */
+            if (e > 0.75 + 1e-9) {
+                snprintf(msg, sizeof msg, "face %d vertex %d: error %.3f LSB", f, k, e);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    printf("cube map max error %.3f LSB\n", max_err);
+}
+
+static void test_texgen_rejects_bad_arguments(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    memset(p, 0, sizeof p);
+    fxl_texgen_defaults(&tg);
+    tg.mode = 9;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
+    tg.mode = FXL_TEXGEN_SPHERICAL;
+    tg.axis = 3;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(NULL, p, t));
+    /* all three on the axis: defined output, no division by zero */
+    tg.axis = FXL_AXIS_Y;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(0, t[0].u);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_planar_uses_chosen_plane_with_scale_and_offset);
+    RUN_TEST(test_cylindrical_matches_double);
+    RUN_TEST(test_spherical_matches_double);
+    RUN_TEST(test_seam_triangle_does_not_span_whole_texture);
+    RUN_TEST(test_pole_takes_mean_theta_of_other_vertices);
+    RUN_TEST(test_cube_faces_and_atlas_layout);
+    RUN_TEST(test_texgen_rejects_bad_arguments);
+    return UNITY_END();
+}
