@@ -361,22 +361,23 @@ int ref_sample_level(const fxl_texture_t *t, uint32_t level, fxl_filter_t filter
     fx = (ut - 0.5) - (double)x0;
     fy = (vt - 0.5) - (double)y0;
     rgb[0] = rgb[1] = rgb[2] = 0;
+    /* A key texel in the footprint takes the nearest texel's colour
+     * (texture.h), so keys never bleed and the weights stay bilinear. */
     for (dy = 0; dy < 2; ++dy) {
         for (dx = 0; dx < 2; ++dx) {
-            double w = (dx ? fx : 1 - fx) * (dy ? fy : 1 - fy);
-            if (ref_texel(t, level, x0 + dx, y0 + dy, c)) {
-                continue;
+            double w = (dx ? fx : 1 - fx) * (dy ? fy : 1 - fy), cc[3];
+            if (ref_texel(t, level, x0 + dx, y0 + dy, cc)) {
+                cc[0] = c[0];
+                cc[1] = c[1];
+                cc[2] = c[2];
             }
             for (k = 0; k < 3; ++k) {
-                rgb[k] += w * c[k];
+                rgb[k] += w * cc[k];
             }
             wsum += w;
         }
     }
-    /* wsum >= 1/4: the nearest texel is one of the four and opaque. */
-    for (k = 0; k < 3; ++k) {
-        rgb[k] /= wsum;
-    }
+    (void)wsum;
     return 0;
 }
 
@@ -537,11 +538,13 @@ static int shade_textured(const fxl_draw_t *d, double lod, double ut0, double vt
     }
     tr1 = ref_sample_level(t, l0 + 1, f, ut0 * level_w(t, l0 + 1) / level_w(t, 0),
                            vt0 * level_h(t, l0 + 1) / level_h(t, 0), c1);
-    if (tr0 && tr1) {
+    /* The finer level decides transparency; a transparent coarser level
+     * drops out (reference.h). */
+    if (tr0) {
         return 1;
     }
-    if (tr0 || tr1) {
-        memcpy(rgb, tr0 ? c1 : c0, sizeof(c0));
+    if (tr1) {
+        memcpy(rgb, c0, sizeof(c0));
         return 0;
     }
     for (k = 0; k < 3; ++k) {

@@ -33,9 +33,10 @@
  *   flags every pixel where a depth comparison between two triangles was
  *   within `depth_tie_margin` (ref_image.depth_tie) so metrics can skip it.
  * - Colour key: a key texel is transparent (nothing drawn, no depth write).
- *   Bilinear: drawn only if the point-sampled (nearest) texel is opaque, then
- *   the opaque texels with renormalised weights. Trilinear: each level
- *   likewise; a transparent level drops out, both transparent -> not drawn.
+ *   Bilinear: drawn only if the point-sampled (nearest) texel is opaque; key
+ *   texels of the 2x2 footprint take that nearest texel's colour. Trilinear:
+ *   the pixel is transparent when the finer level's sample is; a transparent
+ *   coarser level drops out (the finer sample is used alone).
  *   Border texels are never transparent.
  * Supported: texenv REPLACE, flat or Gouraud shading when untextured.
  * MODULATE / DECAL and Gouraud with a texture return FXL_ERR_UNSUPPORTED.

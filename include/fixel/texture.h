@@ -11,8 +11,9 @@
  * Colour key: with FXL_TEXF_KEY set, a texel whose *stored* value equals `key`
  * (the RGB565 word, the L8 byte or the I8 index) is transparent: the pixel is
  * not drawn and its depth is not written. Filtering never blends a key texel
- * into its neighbours: a bilinear footprint touching one is drawn only if
- * the nearest texel is opaque, and then uses the opaque texels.
+ * into its neighbours: with bilinear filtering the pixel is drawn only if the
+ * nearest texel is opaque, and any key texel of the 2x2 footprint takes that
+ * nearest texel's colour (weights unchanged, no division).
  * Sizes: power-of-two sides 1 .. 2^FXL_TEX_MAX_LOG2 only; other sizes get
  * FXL_ERR_UNSUPPORTED (pad or resample them with fixel-texconv).
  * Texture coordinates are normalised: 1.0 (q16 65536) is one texture width.
