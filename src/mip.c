@@ -239,7 +239,7 @@ static uint32_t reduce(const mipctx_t *m, const uint32_t *src, uint32_t count)
     return encode(m, avg);
 }
 
-fxl_status_t fxl__mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width,
+fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width,
                                   uint32_t height, fxl_texfmt_t format, uint32_t levels,
                                   const uint16_t *palette, fxl_mip_space_t space,
                                   const uint16_t *key)
@@ -313,6 +313,6 @@ fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width
                            fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                            fxl_mip_space_t space)
 {
-    return fxl__mip_build_keyed(storage, storage_bytes, width, height, format, levels, palette,
+    return fxl_mip_build_keyed(storage, storage_bytes, width, height, format, levels, palette,
                                 space, NULL);
 }

@@ -88,16 +88,4 @@ static inline uint16_t fxl__texel_rgb565(const fxl_texture_t *t, const void *lev
     return rgb;
 }
 
-/* Keyed variant of fxl_mip_build (src/mip.c), used by fixel-texconv until the
- * public API grows one: with `key` non-NULL, texels whose stored value equals
- * *key are transparent. A level-n texel is transparent when at least half of
- * its sources (2 of 4, or 1 of 2) are; otherwise it is the average of the
- * opaque sources only, and never equal to *key (RGB565: the blue LSB is
- * flipped, L8: one code up, 254 for 255, I8: the key index is never
- * chosen). key == NULL is exactly fxl_mip_build. */
-fxl_status_t fxl__mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width,
-                                  uint32_t height, fxl_texfmt_t format, uint32_t levels,
-                                  const uint16_t *palette, fxl_mip_space_t space,
-                                  const uint16_t *key);
-
 #endif

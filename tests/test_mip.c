@@ -182,7 +182,7 @@ void test_linear_spaces_keep_uniform_codes_exact(void)
     for (sp = FXL_MIP_SPACE_GAMMA22; sp <= FXL_MIP_SPACE_SRGB; sp++) {
         for (c = 1; c < 256; c++) {
             g_l8[0] = (uint8_t)c; g_l8[1] = (uint8_t)c; g_l8[2] = (uint8_t)c; g_l8[3] = 0;
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2,
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2,
                                                                NULL, (fxl_mip_space_t)sp, &key));
             snprintf(msg, sizeof msg, "space %u L8 code %u", (unsigned)sp, (unsigned)c);
             TEST_ASSERT_EQUAL_INT_MESSAGE(c, g_l8[4], msg);
@@ -191,7 +191,7 @@ void test_linear_spaces_keep_uniform_codes_exact(void)
             /* key 0xFFFF never matches these: r5/b5 <= 31 with g6 = c */
             uint16_t k = 0xFFFF, v = rgb(c & 31, c, 31 - (c & 31));
             g_rgb[0] = v; g_rgb[1] = v; g_rgb[2] = v; g_rgb[3] = k;
-            fxl__mip_build_keyed(g_rgb, 10, 2, 2, FXL_TEXFMT_RGB565, 2, NULL,
+            fxl_mip_build_keyed(g_rgb, 10, 2, 2, FXL_TEXFMT_RGB565, 2, NULL,
                                  (fxl_mip_space_t)sp, &k);
             snprintf(msg, sizeof msg, "space %u RGB565 %04x", (unsigned)sp, (unsigned)v);
             TEST_ASSERT_EQUAL_INT_MESSAGE(v, g_rgb[4], msg);
@@ -280,12 +280,12 @@ void test_key_two_of_four_transparent_else_mean_of_opaque(void)
      * (sum + 1) / 3: r (15+1)/3 = 5, g (9+1)/3 = 3, b (6+1)/3 = 2 */
     t[0] = key; t[1] = rgb(1, 1, 1); t[2] = rgb(3, 0, 2); t[3] = rgb(4, 0, 2);
     t[4] = rgb(1, 1, 1); t[5] = key; t[6] = key; t[7] = rgb(8, 9, 2);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__mip_build_keyed(t, 20, 4, 2, FXL_TEXFMT_RGB565, 2, NULL,
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build_keyed(t, 20, 4, 2, FXL_TEXFMT_RGB565, 2, NULL,
                                                        FXL_MIP_SPACE_STORED, &key));
     TEST_ASSERT_EQUAL_HEX16(key, t[8]);
     TEST_ASSERT_EQUAL_HEX16(rgb(5, 3, 2), t[9]);
     /* 1-D: one keyed of two -> keyed; level 2 of this chain: (key, opaque) */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__mip_build_keyed(t, 22, 4, 2, FXL_TEXFMT_RGB565, 3, NULL,
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build_keyed(t, 22, 4, 2, FXL_TEXFMT_RGB565, 3, NULL,
                                                        FXL_MIP_SPACE_STORED, &key));
     TEST_ASSERT_EQUAL_HEX16(key, t[10]);
     /* without the key the magenta texels are averaged like any colour */
@@ -300,18 +300,18 @@ void test_key_opaque_average_never_becomes_the_key(void)
     uint16_t key = rgb(2, 2, 2), l8key = 100, ikey = 2;
     g_rgb[0] = rgb(1, 1, 1); g_rgb[1] = rgb(3, 3, 3); g_rgb[2] = rgb(1, 1, 1);
     g_rgb[3] = rgb(3, 3, 3);
-    fxl__mip_build_keyed(g_rgb, 10, 2, 2, FXL_TEXFMT_RGB565, 2, NULL, FXL_MIP_SPACE_STORED, &key);
+    fxl_mip_build_keyed(g_rgb, 10, 2, 2, FXL_TEXFMT_RGB565, 2, NULL, FXL_MIP_SPACE_STORED, &key);
     TEST_ASSERT_EQUAL_HEX16(rgb(2, 2, 3), g_rgb[4]);
     /* L8: 99 and 101 average to the key 100 -> 101 */
     g_l8[0] = 99; g_l8[1] = 101;
-    fxl__mip_build_keyed(g_l8, 3, 2, 1, FXL_TEXFMT_L8, 2, NULL, FXL_MIP_SPACE_STORED, &l8key);
+    fxl_mip_build_keyed(g_l8, 3, 2, 1, FXL_TEXFMT_L8, 2, NULL, FXL_MIP_SPACE_STORED, &l8key);
     TEST_ASSERT_EQUAL_UINT8(101, g_l8[2]);
     /* I8: black/white would pick grey (2), the key index -> next nearest.
      * Mean (128,128,128): black 3*128^2 = 49152, white 3*127^2 = 48387,
      * light grey (189,186,189) 61^2*2 + 58^2 = 10806 -> index 4 */
     grey_palette();
     g_l8[0] = 0; g_l8[1] = 1; g_l8[2] = 1; g_l8[3] = 0;
-    fxl__mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_I8, 2, g_pal, FXL_MIP_SPACE_STORED, &ikey);
+    fxl_mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_I8, 2, g_pal, FXL_MIP_SPACE_STORED, &ikey);
     TEST_ASSERT_EQUAL_UINT8(4, g_l8[4]);
 }
 
@@ -342,7 +342,7 @@ void test_mip_build_error_paths(void)
     /* 2x2 RGB565 with 2 levels needs (4 + 1) * 2 = 10 bytes */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_mip_build(g_rgb, 9, 2, 2, FXL_TEXFMT_RGB565, 2,
                                                        NULL, FXL_MIP_SPACE_STORED));
-    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl__mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2,
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2,
                                                               NULL, FXL_MIP_SPACE_STORED, &key));
     /* one level: nothing to build, success */
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build(g_l8, 4, 2, 2, FXL_TEXFMT_L8, 1, NULL,

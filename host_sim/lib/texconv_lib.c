@@ -10,9 +10,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* fxl__mip_build_keyed: the core's mip builder with a colour key (internal
- * until the public API has one), so the tool and the core agree exactly. */
-#include "../../src/texel.h"
 
 #define TEXCONV_MAX_SIDE (1u << FXL_TEX_MAX_LOG2)
 
@@ -464,7 +461,7 @@ int texconv_convert(const texconv_image_t *img, const texconv_opts_t *o, texconv
     space = o->mips == TEXCONV_MIPS_GAMMA22 ? FXL_MIP_SPACE_GAMMA22
           : o->mips == TEXCONV_MIPS_SRGB    ? FXL_MIP_SPACE_SRGB
                                             : FXL_MIP_SPACE_STORED;
-    st = fxl__mip_build_keyed(out->texels, bytes, img->width, img->height, o->format, levels,
+    st = fxl_mip_build_keyed(out->texels, bytes, img->width, img->height, o->format, levels,
                               out->palette, space, o->has_key ? &key : NULL);
     if (st == FXL_OK)
         st = fxl_texture_init(&out->tex, out->texels, img->width, img->height, o->format, levels);

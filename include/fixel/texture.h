@@ -96,6 +96,14 @@ uint32_t fxl_mip_size(uint32_t width, uint32_t height, fxl_texfmt_t format, uint
 fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                            fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                            fxl_mip_space_t space);
+/* The same with a colour key (*key: the stored value that is transparent;
+ * NULL is fxl_mip_build): a level-n texel is transparent when at least half
+ * of its sources are (2 of 4, 1 of 2), otherwise the average of its opaque
+ * sources, nudged off the key value (RGB565: blue LSB flipped, L8: one code,
+ * I8: the key index is never chosen). */
+fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
+                                 fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
+                                 fxl_mip_space_t space, const uint16_t *key);
 
 #ifdef __cplusplus
 }
