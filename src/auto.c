@@ -17,6 +17,8 @@
  * and the q16 step truncation (L * 2^-16 texel).
  */
 #include "raster_int.h"
+
+#if FXL_HAVE_AUTO
 #include "sfloat.h"
 
 /* Largest log2(|N| / q^3) on the segment from A to B (N, q linear, q > 0):
@@ -153,4 +155,4 @@ int fxl__auto_span_log2(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t 
     k = fit_log2(lg, lb, cap);
     return k > floor_k ? k : floor_k;
 }
-
+#endif /* FXL_HAVE_AUTO */

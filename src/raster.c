@@ -46,6 +46,10 @@ static fxl_status_t check_draw(const fxl_draw_t *d)
         return FXL_ERR_RANGE;
     if (d->persp == FXL_PERSP_AUTO && d->auto_budget <= 0)
         return FXL_ERR_RANGE;
+#if !FXL_HAVE_AUTO
+    if (d->persp == FXL_PERSP_AUTO)
+        return FXL_ERR_UNSUPPORTED;
+#endif
 #if !FXL_HAVE_BILINEAR
     if (d->filter == FXL_FILTER_BILINEAR)
         return FXL_ERR_UNSUPPORTED;
@@ -156,6 +160,7 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
     const fxl_draw_t *d = tri->draw;
     uint32_t bpp = fxl_texfmt_bytes((fxl_texfmt_t)t->format), L;
 
+    (void)d;   /* used only with FXL_HAVE_MIPMAP */
     tri->nlevels = 1;
 #if FXL_HAVE_MIPMAP
     if (d->mip != FXL_MIP_NONE)
@@ -187,6 +192,7 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 #endif
 }
 
+#if FXL_HAVE_AUTO
 /* FXL_PERSP_AUTO where the triangle-wide bound was not enough: the span is
  * cut into chunks of FXL__AUTO_CHUNK pixels anchored at its unclipped start
  * (so the cut, like every value, never depends on the clip rectangle), and
@@ -209,6 +215,7 @@ static void auto_span(fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, 
         c0 = c1;
     }
 }
+#endif
 
 fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                fxl_stats_t *stats)
@@ -300,6 +307,8 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     if (st != FXL_OK)
         return st;
     auto_floor = 8;
+    (void)auto_floor;   /* used only with FXL_HAVE_AUTO */
+#if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv) {
         int k = fxl__auto_seg_log2(&tri, X, Y);
         if (k < 0) {
@@ -308,6 +317,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         }
         tri.seg_log2 = k;
     }
+#endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);
     if (!fn)
@@ -335,9 +345,11 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         cl = xl > target->clip.x0 ? xl : target->clip.x0;
         cr = xr < target->clip.x1 ? xr : target->clip.x1;
         if (cl < cr) {
+#if FXL_HAVE_AUTO
             if (auto_floor < 8)
                 auto_span(&tri, fn, row, xl, xr, cl, cr, auto_floor);
             else
+#endif
                 fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
         }
         fxl__edge_step(&el);

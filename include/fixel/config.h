@@ -38,6 +38,12 @@
 #define FXL_HAVE_MIPMAP 1
 #endif
 
+/* FXL_PERSP_AUTO, the error-budgeted adaptive segment length (~2.6 KB of
+ * Cortex-M4 code); without it FXL_PERSP_AUTO is FXL_ERR_UNSUPPORTED. */
+#ifndef FXL_HAVE_AUTO
+#define FXL_HAVE_AUTO 1
+#endif
+
 /* Texel formats other than RGB565, wrap modes other than repeat, colour key,
  * Gouraud colour. Without it the core keeps only the RGB565 repeat fast path. */
 #ifndef FXL_HAVE_GENERIC
