@@ -272,11 +272,53 @@ void test_gouraud_matches_reference_within_one_step(void)
     }
 }
 
+/* A 2x2 texture (red, green / blue, white) magnified onto a 10x10 square,
+ * u, v from 0 to 1: pixel (i, j) samples u = (i + 0.5) / 5 texels. Point
+ * sampling by hand, and one bilinear pixel computed by hand from the
+ * documented blend: texel centres at +0.5, 5-bit weights, three lerps
+ * (a * (32 - f) + b * f + 16) >> 5. */
+void test_point_and_bilinear_against_hand_computed_texels(void)
+{
+    static const uint16_t t2[4] = {0xF800, 0x07E0, 0x001F, 0xFFFF};
+    static uint16_t pix[16 * 16];
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_vertex_t a[3], b[3];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, t2, 2, 2, FXL_TEXFMT_RGB565, 1));
+    a[0] = vtx(0, 0, 0.5, 0, 0, 0);
+    a[1] = vtx(10, 0, 0.5, 1, 0, 0);
+    a[2] = vtx(10, 10, 0.5, 1, 1, 0);
+    b[0] = a[0];
+    b[1] = a[2];
+    b[2] = vtx(0, 10, 0.5, 0, 1, 0);
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pix, 16, 16, 16, FXL_PIXFMT_RGB565));
+    fxl_draw_triangle(&t, &d, a, NULL);
+    fxl_draw_triangle(&t, &d, b, NULL);
+    TEST_ASSERT_EQUAL_HEX16(0xF800, pix[1 * 16 + 1]);   /* u 0.3, v 0.3: texel (0,0) */
+    TEST_ASSERT_EQUAL_HEX16(0x07E0, pix[2 * 16 + 7]);   /* u 1.5, v 0.5: texel (1,0) */
+    TEST_ASSERT_EQUAL_HEX16(0x001F, pix[8 * 16 + 3]);   /* u 0.7, v 1.7: texel (0,1) */
+    TEST_ASSERT_EQUAL_HEX16(0xFFFF, pix[9 * 16 + 9]);   /* u 1.9, v 1.9: texel (1,1) */
+    d.filter = FXL_FILTER_BILINEAR;
+    fxl_draw_triangle(&t, &d, a, NULL);
+    fxl_draw_triangle(&t, &d, b, NULL);
+    /* Pixel (1,1): u = v = 0.3; minus 0.5 gives -0.2: x0 = y0 = -1 (repeat:
+     * texel 1), f = 0.8 -> 25/32. Upper row (y = 1): white (x 1) to blue
+     * (x 0) -> r (31*7+16)>>5 = 7, g (63*7+16)>>5 = 14, b (31*32+16)>>5 = 31.
+     * Lower row (y = 0): green to red -> r (31*25+16)>>5 = 24, g 14, b 0.
+     * Rows at 25/32: r (7*7+24*25+16)>>5 = 20, g 14, b (31*7+16)>>5 = 7. */
+    TEST_ASSERT_EQUAL_HEX16((20 << 11) | (14 << 5) | 7, pix[1 * 16 + 1]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_every_format_wrap_key_and_filter_matches_reference);
     RUN_TEST(test_modulate_and_decal_follow_their_formulas);
     RUN_TEST(test_gouraud_matches_reference_within_one_step);
+    RUN_TEST(test_point_and_bilinear_against_hand_computed_texels);
     return UNITY_END();
 }
