@@ -1,11 +1,13 @@
-/* test_gallery.c - golden CRC-32s of the simulator gallery.
+/* test_gallery.c - golden CRC-32s of the simulator gallery, and the checks
+ * behind its pictures.
  *
- * Every gallery image (scene.h: every scene x {subdiv16, affine} x {point,
- * bilinear}, 320x240 native RGB565, depth on, mip none) is rendered and its
- * pixel CRC compared with tests/golden/gallery_crc.txt. Fixed point makes
- * the output deterministic, so the comparison is exact. On a mismatch the
- * test names the image, prints expected and actual CRC and writes the PNG to
- * the test output directory for a human to look at.
+ * Every gallery image (scene.h lists them: the double-precision scenes x
+ * {subdiv16, affine} x {point, bilinear}; the floor_mips comparison; the
+ * pipeline scenes x {point, trilinear}; p_cube on the emulated ST7789) is
+ * rendered and its pixel CRC compared with tests/golden/gallery_crc.txt.
+ * Fixed point makes the output deterministic, so the comparison is exact. On
+ * a mismatch the test names the image, prints expected and actual CRC and
+ * writes the PNG to the test output directory for a human to look at.
  *
  * A missing golden file is a failure, never a silent pass. Regenerate it
  * (only after checking the new images by eye) with
@@ -27,7 +29,7 @@ void tearDown(void) {}
 #define MAX_GOLDEN 256
 
 typedef struct golden {
-    char scene[64], persp[32], filter[32];
+    char id[64], persp[32], filter[32];
     uint32_t crc;
     int used;
 } golden_t;
@@ -81,9 +83,9 @@ static int load_golden(void)
             continue;
         }
         memset(&g, 0, sizeof(g));
-        if (sscanf(p, "%63s %31s %31s %lx", g.scene, g.persp, g.filter, &crc) != 4 ||
+        if (sscanf(p, "%63s %31s %31s %lx", g.id, g.persp, g.filter, &crc) != 4 ||
             golden_n >= MAX_GOLDEN) {
-            snprintf(msg, sizeof(msg), "%s:%d: malformed line (want: scene persp filter 0xCRC)",
+            snprintf(msg, sizeof(msg), "%s:%d: malformed line (want: image persp filter 0xCRC)",
                      golden_path, lineno);
             fclose(f);
             return -1;
@@ -99,7 +101,7 @@ static golden_t *find_golden(const gallery_entry_t *e)
 {
     size_t i;
     for (i = 0; i < golden_n; i++) {
-        if (strcmp(golden[i].scene, e->scene) == 0 && strcmp(golden[i].persp, e->persp_name) == 0
+        if (strcmp(golden[i].id, e->id) == 0 && strcmp(golden[i].persp, e->persp_name) == 0
             && strcmp(golden[i].filter, e->filter_name) == 0) {
             return &golden[i];
         }
@@ -118,13 +120,13 @@ static void test_gallery_golden_file_lists_every_image_once(void)
         golden_t *g;
         TEST_ASSERT_EQUAL_INT(0, gallery_entry(i, &e));
         g = find_golden(&e);
-        snprintf(msg, sizeof(msg), "%s has no line for %s %s %s", golden_path, e.scene,
+        snprintf(msg, sizeof(msg), "%s has no line for %s %s %s", golden_path, e.id,
                  e.persp_name, e.filter_name);
         TEST_ASSERT_TRUE_MESSAGE(g != NULL, msg);
         g->used++;
     }
     for (i = 0; i < golden_n; i++) {
-        snprintf(msg, sizeof(msg), "%s: line %.63s %.31s %.31s is %s", golden_path, golden[i].scene,
+        snprintf(msg, sizeof(msg), "%s: line %.63s %.31s %.31s is %s", golden_path, golden[i].id,
                  golden[i].persp, golden[i].filter,
                  golden[i].used ? "duplicated" : "not a gallery image (stale?)");
         TEST_ASSERT_EQUAL_INT_MESSAGE(1, golden[i].used, msg);
@@ -144,8 +146,8 @@ static void test_gallery_crcs_match_golden(void)
         golden_t *g;
         uint32_t crc;
         TEST_ASSERT_EQUAL_INT(0, gallery_entry(i, &e));
-        st = gallery_render(&e, &f, NULL);
-        snprintf(msg, sizeof(msg), "gallery %s %s %s: render failed: %s", e.scene, e.persp_name,
+        st = gallery_render(&e, &f, NULL, NULL);
+        snprintf(msg, sizeof(msg), "gallery %s %s %s: render failed: %s", e.id, e.persp_name,
                  e.filter_name, fxl_status_name(st));
         if (st != FXL_OK) {
             frame_free(&f);
@@ -154,19 +156,19 @@ static void test_gallery_crcs_match_golden(void)
         crc = fxl_host_crc_target(&f.target);
         g = find_golden(&e);
         if (g == NULL || g->crc != crc) {
-            char path[1200], err[256];
-            snprintf(path, sizeof(path), "%s/gallery_%s_%s_%s.png", output_dir(), e.scene,
-                     e.persp_name, e.filter_name);
+            char path[1200], err[256], name[256];
+            gallery_file_name(&e, name, sizeof(name));
+            snprintf(path, sizeof(path), "%s/gallery_%s", output_dir(), name);
             if (pngio_write_target(path, &f.target, err, sizeof(err)) != 0) {
                 snprintf(path, sizeof(path), "(PNG not written: %s)", err);
             }
             if (g == NULL) {
                 snprintf(msg, sizeof(msg), "gallery %s %s %s: no golden CRC, actual 0x%08lX; image: %s",
-                         e.scene, e.persp_name, e.filter_name, (unsigned long)crc, path);
+                         e.id, e.persp_name, e.filter_name, (unsigned long)crc, path);
             } else {
                 snprintf(msg, sizeof(msg),
                          "gallery %s %s %s: CRC expected 0x%08lX, actual 0x%08lX; image: %s",
-                         e.scene, e.persp_name, e.filter_name, (unsigned long)g->crc,
+                         e.id, e.persp_name, e.filter_name, (unsigned long)g->crc,
                          (unsigned long)crc, path);
             }
             TEST_MESSAGE(msg);
@@ -186,10 +188,10 @@ static void test_gallery_render_is_repeatable(void)
     frame_t f;
     uint32_t a, b;
     TEST_ASSERT_EQUAL_INT(0, gallery_entry(1, &e)); /* floor subdiv16 bilinear */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, gallery_render(&e, &f, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, gallery_render(&e, &f, NULL, NULL));
     a = fxl_host_crc_target(&f.target);
     frame_free(&f);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, gallery_render(&e, &f, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, gallery_render(&e, &f, NULL, NULL));
     b = fxl_host_crc_target(&f.target);
     frame_free(&f);
     TEST_ASSERT_EQUAL_HEX32(a, b);
@@ -229,6 +231,118 @@ static void test_gallery_floor_and_quad_pixel_counts(void)
     TEST_ASSERT_EQUAL_UINT32(76800, pixels_without_depth("quad_near"));
 }
 
+static void test_gallery_panel_image_equals_direct_render(void)
+{
+    /* Issue 6: what the emulated panel shows after the real driver, band
+     * renderer (24-row bands, DMA completing late) and wire decoding must be
+     * bit-identical to one full-frame render of the same triangles; for
+     * every module preset and rotation (offsets, MADCTL, odd 135-px width),
+     * for a pipeline scene and a double-precision one. */
+    static const char *const panels[] = {"st7789", "st7789-240x240", "st7789-135x240", "ili9341"};
+    static const char *const scenes[] = {"p_cube", "floor"};
+    size_t p, r, k;
+    for (k = 0; k < 2; k++) {
+        for (p = 0; p < 4; p++) {
+            for (r = 0; r < 4; r++) {
+                frame_t img;
+                panel_check_t c;
+                fxl_draw_t d;
+                fxl_status_t st;
+                fxl_draw_defaults(&d);
+                d.filter = (uint8_t)(k == 0 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT);
+                st = panel_scene_render(panels[p], (int)r, 24, scenes[k], &d, &img, &c);
+                snprintf(msg, sizeof(msg),
+                         "%s on %s rotation %lu: status %s, %ld pixels differ (first at "
+                         "index %ld), protocol errors %d",
+                         scenes[k], panels[p], (unsigned long)r, fxl_status_name(st),
+                         c.diff_pixels, c.first_diff, c.res.protocol_errors);
+                TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, st, msg);
+                TEST_ASSERT_EQUAL_INT_MESSAGE(0, c.res.protocol_errors, msg);
+                TEST_ASSERT_TRUE_MESSAGE(c.diff_pixels == 0, msg);
+                TEST_ASSERT_EQUAL_HEX32(c.direct_crc, c.panel_crc);
+                /* Something was drawn: the cube and floor cover thousands of
+                 * pixels at every one of these sizes. */
+                TEST_ASSERT_GREATER_THAN(1000, (int)c.res.stats.pixels);
+                frame_free(&img);
+            }
+        }
+    }
+}
+
+static void render_320(const char *scene, int texture, uint8_t filter, uint8_t mip, frame_t *f)
+{
+    anyscene_t a;
+    fxl_draw_t d;
+    fxl_draw_defaults(&d);
+    d.filter = filter;
+    d.mip = mip;
+    d.lod = FXL_LOD_SEGMENT;
+    TEST_ASSERT_EQUAL_INT(SCENE_OK, anyscene_build(&a, scene, 320, 240, texture, 0));
+    TEST_ASSERT_EQUAL_INT(0, frame_alloc(f, 320, 240, FXL_PIXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, anyscene_render(&a, &d, &f->target, NULL));
+    anyscene_free(&a);
+}
+
+static void test_gallery_pipeline_cube_matches_double_cube(void)
+{
+    /* p_cube is the cube scene through the fixed-point front end (same
+     * rotation order, face layout and texture coordinates). The only
+     * differences are the q16 inputs (rotation entries within 2^-17,
+     * positions) that move vertices by ~1e-3 px, which flips the odd pixel
+     * along an edge or a texel boundary: measured 149 of 11864 pixels with
+     * point sampling. A wrong rotation sign, order, winding or uv layout
+     * changes thousands. Bound: twice the measurement. */
+    frame_t a, b;
+    int i, n = 0, first = -1;
+    render_320("cube", -1, FXL_FILTER_POINT, FXL_MIP_NONE, &a);
+    render_320("p_cube", -1, FXL_FILTER_POINT, FXL_MIP_NONE, &b);
+    for (i = 0; i < 320 * 240; i++) {
+        if (a.pixels[i] != b.pixels[i]) {
+            first = first < 0 ? i : first;
+            n++;
+        }
+    }
+    snprintf(msg, sizeof(msg), "p_cube differs from cube in %d pixels (first at x %d, y %d)", n,
+             first % 320, first / 320);
+    TEST_ASSERT_TRUE_MESSAGE(n <= 300, msg);
+    frame_free(&a);
+    frame_free(&b);
+}
+
+static void test_gallery_mips_trilinear_greys_the_horizon_point_aliases(void)
+{
+    /* floor_mips derivation: 256-texel checker, 16-texel cells, one texture
+     * per 2 world units; at d rows below the horizon (d = y + 0.5 - 120) one
+     * pixel spans 15360 / d^2 texels along v, so rows 122..133 (d <= 13.5)
+     * have LOD >= log2(15360 / 13.5^2) = 6.4. Every level >= 5 averages whole
+     * black-and-white cell pairs: uniform grey. So trilinear must draw those
+     * 12 x 320 pixels all alike, while point sampling without mips shows
+     * both black and white there (the shimmer; measured about half each,
+     * green channel standard deviation 31.5 of 63). */
+    frame_t pt, tri;
+    int x, y, black = 0, white = 0, other = 0;
+    uint16_t ref;
+    render_320("floor", TEXTURE_CHECKER_HC, FXL_FILTER_POINT, FXL_MIP_NONE, &pt);
+    render_320("floor", TEXTURE_CHECKER_HC, FXL_FILTER_BILINEAR, FXL_MIP_LINEAR, &tri);
+    ref = tri.pixels[122 * 320];
+    for (y = 122; y < 134; y++) {
+        for (x = 0; x < 320; x++) {
+            uint16_t c = pt.pixels[y * 320 + x];
+            black += c == 0x0000u;
+            white += c == 0xFFFFu;
+            other += tri.pixels[y * 320 + x] != ref;
+        }
+    }
+    snprintf(msg, sizeof(msg), "trilinear horizon rows: %d pixels differ from 0x%04X", other,
+             (unsigned)ref);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, other, msg);
+    TEST_ASSERT_TRUE_MESSAGE(ref != 0x0000u && ref != 0xFFFFu, "horizon grey is not grey");
+    snprintf(msg, sizeof(msg), "point horizon rows: %d black, %d white", black, white);
+    TEST_ASSERT_TRUE_MESSAGE(black > 100 && white > 100, msg);
+    frame_free(&pt);
+    frame_free(&tri);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -236,5 +350,8 @@ int main(void)
     RUN_TEST(test_gallery_crcs_match_golden);
     RUN_TEST(test_gallery_render_is_repeatable);
     RUN_TEST(test_gallery_floor_and_quad_pixel_counts);
+    RUN_TEST(test_gallery_panel_image_equals_direct_render);
+    RUN_TEST(test_gallery_pipeline_cube_matches_double_cube);
+    RUN_TEST(test_gallery_mips_trilinear_greys_the_horizon_point_aliases);
     return UNITY_END();
 }

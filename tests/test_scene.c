@@ -392,6 +392,145 @@ static void test_texture_grid_lines_every_8_texels(void)
     texture_free(&t);
 }
 
+static void test_texture_checker_hc_mips_average_in_linear_light(void)
+{
+    /* TEXTURE_CHECKER_HC: 256x256, 16-texel cells of white and black, levels
+     * by fxl_mip_build in sRGB linear light. Level 4 (16x16) is one texel
+     * per cell: still pure black and white. Level 5 and up average equal
+     * numbers of black and white: linear 0.5, sRGB-encoded 0.7354, i.e.
+     * 0.7354 * 31 = 22.8 -> 23 (red, blue) and 0.7354 * 63 = 46.3 -> 46
+     * (green), far above the stored-value mean 15 / 31 that darkens. */
+    host_texture_t t;
+    const uint16_t grey = (uint16_t)((23u << 11) | (46u << 5) | 23u);
+    uint32_t l, i;
+    TEST_ASSERT_EQUAL_INT(0, texture_make(&t, TEXTURE_CHECKER_HC));
+    TEST_ASSERT_EQUAL_UINT8(9, t.tex.levels);
+    TEST_ASSERT_EQUAL_HEX16(0xFFFF, t.texels[fxl_texture_level_offset(&t.tex, 4)]);
+    TEST_ASSERT_EQUAL_HEX16(0x0000, t.texels[fxl_texture_level_offset(&t.tex, 4) + 1]);
+    for (l = 5; l < 9; l++) {
+        uint32_t off = fxl_texture_level_offset(&t.tex, l), n = (256u >> l) * (256u >> l);
+        for (i = 0; i < n; i++) {
+            snprintf(msg, sizeof(msg), "level %lu texel %lu: 0x%04X, expected 0x%04X",
+                     (unsigned long)l, (unsigned long)i, (unsigned)t.texels[off + i],
+                     (unsigned)grey);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(grey, t.texels[off + i], msg);
+        }
+    }
+    texture_free(&t);
+}
+
+static void test_texture_cubemap_tiles_framed_and_coloured(void)
+{
+    /* 256x128 atlas, tiles 85.33 x 64 texels (textures.h). The texel whose
+     * centre is within 2 texels of a tile edge is the dark frame; a texel a
+     * quarter into each tile (clear of lines, which sit at eighths, and of
+     * the label) has that face's own colour, so all six differ. */
+    host_texture_t t;
+    const uint16_t dark = FXL_RGB565(24, 24, 28);
+    uint16_t body[6];
+    int f, g;
+    TEST_ASSERT_EQUAL_INT(0, texture_make(&t, TEXTURE_CUBEMAP));
+    TEST_ASSERT_EQUAL_UINT32(256, t.width);
+    TEST_ASSERT_EQUAL_UINT32(128, t.height);
+    for (f = 0; f < 6; f++) {
+        uint32_t x0 = (uint32_t)((f % 3) * 256 / 3), y0 = (uint32_t)(f / 3) * 64u;
+        uint32_t x1 = (uint32_t)((f % 3 + 1) * 256 / 3) - 1u, y1 = y0 + 63u;
+        TEST_ASSERT_EQUAL_HEX16(dark, texture_texel(&t, x0 + 1u, y0 + 30u));
+        TEST_ASSERT_EQUAL_HEX16(dark, texture_texel(&t, x1, y0 + 30u));
+        TEST_ASSERT_EQUAL_HEX16(dark, texture_texel(&t, x0 + 30u, y0));
+        TEST_ASSERT_EQUAL_HEX16(dark, texture_texel(&t, x0 + 30u, y1));
+        body[f] = texture_texel(&t, x0 + 13u, y0 + 52u);
+        for (g = 0; g < f; g++) {
+            snprintf(msg, sizeof(msg), "tiles %d and %d have the same colour 0x%04X", g, f,
+                     (unsigned)body[f]);
+            TEST_ASSERT_TRUE_MESSAGE(body[g] != body[f], msg);
+        }
+    }
+    texture_free(&t);
+}
+
+static void test_font_covers_labels(void)
+{
+    /* Letters of either case share a glyph; unknown characters are blank. */
+    const uint8_t blank[5] = {0, 0, 0, 0, 0};
+    TEST_ASSERT_EQUAL_MEMORY(texture_font_glyph('a'), texture_font_glyph('A'), 5);
+    TEST_ASSERT_EQUAL_MEMORY(blank, texture_font_glyph(' '), 5);
+    TEST_ASSERT_EQUAL_MEMORY(blank, texture_font_glyph('#'), 5);
+    TEST_ASSERT_EQUAL_UINT8(7, texture_font_glyph('T')[0]);
+    TEST_ASSERT_EQUAL_UINT8(2, texture_font_glyph('T')[4]);
+    TEST_ASSERT_EQUAL_UINT8(4, texture_font_glyph(',')[4]);
+}
+
+static fxl_status_t draw_collected(const fxl_band_tri_t *tris, size_t n, fxl_target_t *t)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        fxl_status_t st = fxl_draw_triangle(t, tris[i].draw, tris[i].v, NULL);
+        if (st != FXL_OK) {
+            return st;
+        }
+    }
+    return FXL_OK;
+}
+
+static void test_pscene_collected_triangles_draw_the_same_image(void)
+{
+    /* The panel path hands pscene_collect's triangles to the band renderer;
+     * the gallery draws meshes with fxl_mesh_draw. Both must give the same
+     * pixels for every pipeline scene (same front end, same order). */
+    size_t i;
+    TEST_ASSERT_EQUAL_UINT32(6, pscene_count());
+    for (i = 0; i < pscene_count(); i++) {
+        pscene_t s;
+        frame_t a, b;
+        fxl_draw_t d, draws[PSCENE_MAX_PARTS];
+        fxl_band_tri_t *tris = NULL;
+        fxl_stats_t st;
+        size_t n = 0;
+        memset(&st, 0, sizeof(st));
+        fxl_draw_defaults(&d);
+        d.filter = FXL_FILTER_BILINEAR;
+        TEST_ASSERT_EQUAL_INT(SCENE_OK, pscene_build(pscene_name(i), 320, 240, 0, &s));
+        TEST_ASSERT_EQUAL_INT(0, frame_alloc(&a, 320, 240, FXL_PIXFMT_RGB565, 1));
+        TEST_ASSERT_EQUAL_INT(0, frame_alloc(&b, 320, 240, FXL_PIXFMT_RGB565, 1));
+        scene_clear_flat(&a.target, 0);
+        scene_clear_flat(&b.target, 0);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, pscene_draw(&s, &d, &a.target, &st));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, pscene_collect(&s, &d, draws, &tris, &n));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, draw_collected(tris, n, &b.target));
+        snprintf(msg, sizeof(msg), "%s: %lu pixels drawn", pscene_name(i),
+                 (unsigned long)st.pixels);
+        /* Every pipeline scene covers thousands of pixels (the table of
+         * `make run`: 11868 for p_cube, the fewest). */
+        TEST_ASSERT_TRUE_MESSAGE(st.pixels > 10000u, msg);
+        {
+            uint32_t k;
+            for (k = 0; k < 320u * 240u && a.pixels[k] == b.pixels[k]; k++) {
+            }
+            snprintf(msg, sizeof(msg), "%s: collected triangles differ at x %lu, y %lu",
+                     pscene_name(i), (unsigned long)(k % 320u), (unsigned long)(k / 320u));
+            TEST_ASSERT_TRUE_MESSAGE(k == 320u * 240u, msg);
+        }
+        free(tris);
+        frame_free(&a);
+        frame_free(&b);
+        pscene_free(&s);
+    }
+}
+
+static void test_pscene_build_errors(void)
+{
+    pscene_t s;
+    TEST_ASSERT_EQUAL_INT(SCENE_ERR_NAME, pscene_build("nope", 320, 240, 0, &s));
+    TEST_ASSERT_EQUAL_INT(SCENE_ERR_NAME, pscene_build(NULL, 320, 240, 0, &s));
+    TEST_ASSERT_EQUAL_INT(SCENE_ERR_SIZE, pscene_build("p_cube", 0, 240, 0, &s));
+    TEST_ASSERT_EQUAL_INT(SCENE_ERR_SIZE, pscene_build("p_cube", 320, 4097, 0, &s));
+    TEST_ASSERT_EQUAL_INT(0, s.parts);
+    TEST_ASSERT_TRUE(anyscene_exists("p_lit"));
+    TEST_ASSERT_TRUE(anyscene_exists("floor"));
+    TEST_ASSERT_FALSE(anyscene_exists("p_nope"));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -410,5 +549,10 @@ int main(void)
     RUN_TEST(test_texture_checker_mips_are_box_averages);
     RUN_TEST(test_texture_crate_marks_corners);
     RUN_TEST(test_texture_grid_lines_every_8_texels);
+    RUN_TEST(test_texture_checker_hc_mips_average_in_linear_light);
+    RUN_TEST(test_texture_cubemap_tiles_framed_and_coloured);
+    RUN_TEST(test_font_covers_labels);
+    RUN_TEST(test_pscene_collected_triangles_draw_the_same_image);
+    RUN_TEST(test_pscene_build_errors);
     return UNITY_END();
 }

@@ -2,8 +2,11 @@
 #include "scene.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "crc32.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -601,11 +604,267 @@ fxl_status_t scene_render(const scene_t *s, const fxl_texture_t *tex, const fxl_
     return FXL_OK;
 }
 
+void scene_clear_flat(fxl_target_t *t, uint16_t rgb565)
+{
+    int32_t x, y;
+    uint16_t c = rgb565;
+    if (t == NULL || t->pixels == NULL) {
+        return;
+    }
+    if (t->format == FXL_PIXFMT_RGB565_SWAP) {
+        c = (uint16_t)((c >> 8) | (c << 8));
+    }
+    for (y = t->clip.y0; y < t->clip.y1; y++) {
+        uint16_t *row = t->pixels + (size_t)(y - t->origin_y) * (size_t)t->stride;
+        for (x = t->clip.x0; x < t->clip.x1; x++) {
+            row[x - t->origin_x] = c;
+        }
+    }
+    if (t->depth != NULL) {
+        (void)fxl_target_clear_depth(t);
+    }
+}
+
+static void put_px(fxl_target_t *t, int32_t x, int32_t y, uint16_t c)
+{
+    if (x < t->clip.x0 || x >= t->clip.x1 || y < t->clip.y0 || y >= t->clip.y1) {
+        return;
+    }
+    if (t->format == FXL_PIXFMT_RGB565_SWAP) {
+        c = (uint16_t)((c >> 8) | (c << 8));
+    }
+    t->pixels[(size_t)(y - t->origin_y) * (size_t)t->stride + (size_t)(x - t->origin_x)] = c;
+}
+
+static void text_pass(fxl_target_t *t, int32_t x, int32_t y, int32_t scale, const char *text,
+                      uint16_t c)
+{
+    int32_t gx, gy, i, j;
+    for (; *text != '\0'; text++, x += 4 * scale) {
+        const uint8_t *g = texture_font_glyph(*text);
+        for (gy = 0; gy < 5; gy++) {
+            for (gx = 0; gx < 3; gx++) {
+                if (!(g[gy] & (4u >> gx))) {
+                    continue;
+                }
+                for (j = 0; j < scale; j++) {
+                    for (i = 0; i < scale; i++) {
+                        put_px(t, x + gx * scale + i, y + gy * scale + j, c);
+                    }
+                }
+            }
+        }
+    }
+}
+
+void scene_draw_text(fxl_target_t *t, int32_t x, int32_t y, int32_t scale, const char *text,
+                     uint16_t fg, uint16_t shadow)
+{
+    if (t == NULL || t->pixels == NULL || text == NULL || scale < 1) {
+        return;
+    }
+    text_pass(t, x + scale, y + scale, scale, text, shadow);
+    text_pass(t, x, y, scale, text, fg);
+}
+
+/* ---- any scene ------------------------------------------------------------ */
+
+int anyscene_exists(const char *name)
+{
+    size_t i;
+    if (name == NULL) {
+        return 0;
+    }
+    for (i = 0; i < SCENE_N; i++) {
+        if (strcmp(name, scene_names[i]) == 0) {
+            return 1;
+        }
+    }
+    return pscene_exists(name);
+}
+
+int anyscene_build(anyscene_t *a, const char *name, int32_t width, int32_t height, int texture,
+                   fxl_angle_t spin)
+{
+    int rc;
+    if (a == NULL) {
+        return SCENE_ERR_NAME;
+    }
+    memset(a, 0, sizeof(*a));
+    if (pscene_exists(name)) {
+        rc = pscene_build(name, width, height, spin, &a->p);
+        if (rc != SCENE_OK) {
+            return rc;
+        }
+        a->is_pipe = 1;
+        a->name = a->p.name;
+        return SCENE_OK;
+    }
+    rc = scene_build(name, width, height, &a->s);
+    if (rc != SCENE_OK) {
+        return rc;
+    }
+    if (texture_make(&a->tex, texture >= 0 ? (texture_id_t)texture : a->s.texture) != 0) {
+        scene_free(&a->s);
+        return SCENE_ERR_NOMEM;
+    }
+    a->name = a->s.name;
+    return SCENE_OK;
+}
+
+void anyscene_free(anyscene_t *a)
+{
+    if (a != NULL) {
+        scene_free(&a->s);
+        texture_free(&a->tex);
+        pscene_free(&a->p);
+        memset(a, 0, sizeof(*a));
+    }
+}
+
+fxl_status_t anyscene_draw(anyscene_t *a, const fxl_draw_t *d, fxl_target_t *t,
+                           fxl_stats_t *stats)
+{
+    fxl_draw_t dd;
+    uint32_t i;
+    if (a == NULL || d == NULL || t == NULL) {
+        return FXL_ERR_ARG;
+    }
+    if (a->is_pipe) {
+        return pscene_draw(&a->p, d, t, stats);
+    }
+    dd = *d;
+    dd.texture = &a->tex.tex;
+    for (i = 0; i < a->s.tri_count; i++) {
+        fxl_status_t st = fxl_draw_triangle(t, &dd, &a->s.verts[3u * i], stats);
+        if (st != FXL_OK) {
+            return st;
+        }
+    }
+    return FXL_OK;
+}
+
+fxl_status_t anyscene_render(anyscene_t *a, const fxl_draw_t *d, fxl_target_t *t,
+                             fxl_stats_t *stats)
+{
+    if (a == NULL || d == NULL || t == NULL) {
+        return FXL_ERR_ARG;
+    }
+    scene_clear(t, a->is_pipe ? a->p.height : a->s.height);
+    return anyscene_draw(a, d, t, stats);
+}
+
+fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
+                              fxl_draw_t draws[PSCENE_MAX_PARTS], fxl_band_tri_t **tris,
+                              size_t *count)
+{
+    uint32_t i;
+    if (a == NULL || d == NULL || draws == NULL || tris == NULL || count == NULL) {
+        return FXL_ERR_ARG;
+    }
+    if (a->is_pipe) {
+        return pscene_collect(&a->p, d, draws, tris, count);
+    }
+    draws[0] = *d;
+    draws[0].texture = &a->tex.tex;
+    *count = 0;
+    *tris = (fxl_band_tri_t *)calloc(a->s.tri_count ? a->s.tri_count : 1u, sizeof(**tris));
+    if (*tris == NULL) {
+        return FXL_ERR_NOMEM;
+    }
+    for (i = 0; i < a->s.tri_count; i++) {
+        memcpy((*tris)[i].v, &a->s.verts[3u * i], 3u * sizeof(fxl_vertex_t));
+        (*tris)[i].draw = &draws[0];
+    }
+    *count = a->s.tri_count;
+    return FXL_OK;
+}
+
+/* ---- panel ---------------------------------------------------------------- */
+
+fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
+                                const char *scene, const fxl_draw_t *d, frame_t *panel_img,
+                                panel_check_t *chk)
+{
+    anyscene_t a;
+    frame_t direct;
+    fxl_draw_t draws[PSCENE_MAX_PARTS];
+    fxl_band_tri_t *tris = NULL;
+    size_t count = 0, n, k;
+    panel_check_t c;
+    fxl_status_t st;
+    int w, h;
+    memset(&c, 0, sizeof(c));
+    c.first_diff = -1;
+    if (panel_img == NULL || d == NULL) {
+        return FXL_ERR_ARG;
+    }
+    memset(panel_img, 0, sizeof(*panel_img));
+    if (panel_emu_frame_size(panel, rotation, &w, &h) != 0) {
+        return FXL_ERR_ARG;
+    }
+    if (anyscene_build(&a, scene, w, h, -1, 0) != SCENE_OK) {
+        return FXL_ERR_ARG;
+    }
+    if (frame_alloc(panel_img, w, h, FXL_PIXFMT_RGB565, 0) != 0 ||
+        frame_alloc(&direct, w, h, FXL_PIXFMT_RGB565, 1) != 0) {
+        frame_free(panel_img);
+        anyscene_free(&a);
+        return FXL_ERR_NOMEM;
+    }
+    st = anyscene_collect(&a, d, draws, &tris, &count);
+    if (st == FXL_OK) {
+        n = (size_t)w * (size_t)h;
+        st = panel_emu_render_scene(panel, rotation, band_rows, tris, count, PANEL_CLEAR_RGB565,
+                                    panel_img->pixels, n, &c.res);
+        /* The reference: the same triangles, the same draw state, one
+         * full-frame target cleared like every band. */
+        scene_clear_flat(&direct.target, PANEL_CLEAR_RGB565);
+        if (st == FXL_OK) {
+            st = anyscene_draw(&a, d, &direct.target, NULL);
+        }
+        c.panel_crc = fxl_host_crc_target(&panel_img->target);
+        c.direct_crc = fxl_host_crc_target(&direct.target);
+        for (k = 0; k < n; k++) {
+            if (panel_img->pixels[k] != direct.pixels[k]) {
+                if (c.first_diff < 0) {
+                    c.first_diff = (long)k;
+                }
+                c.diff_pixels++;
+            }
+        }
+    }
+    free(tris);
+    frame_free(&direct);
+    anyscene_free(&a);
+    if (chk != NULL) {
+        *chk = c;
+    }
+    return st;
+}
+
 /* ---- gallery -------------------------------------------------------------- */
+
+#define GALLERY_N_SCENE (SCENE_N * 4u)
+#define GALLERY_N_PIPE (2u * 6u)
+
+static const gallery_entry_t mips_panels[GALLERY_MIPS_PANELS] = {
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC, "subdiv16", 16, "point",
+     FXL_FILTER_POINT, FXL_MIP_NONE, FXL_LOD_SEGMENT, "POINT, NO MIPS", NULL, 0, 0},
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC, "subdiv16", 16, "bilinear",
+     FXL_FILTER_BILINEAR, FXL_MIP_NONE, FXL_LOD_SEGMENT, "BILINEAR, NO MIPS", NULL, 0, 0},
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC, "subdiv16", 16, "lod-tri",
+     FXL_FILTER_BILINEAR, FXL_MIP_NEAREST, FXL_LOD_TRIANGLE, "PER-TRIANGLE LOD", NULL, 0, 0},
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC, "subdiv16", 16, "lod-seg",
+     FXL_FILTER_BILINEAR, FXL_MIP_NEAREST, FXL_LOD_SEGMENT, "PER-SEGMENT LOD", NULL, 0, 0},
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC, "subdiv16", 16, "trilinear",
+     FXL_FILTER_BILINEAR, FXL_MIP_LINEAR, FXL_LOD_SEGMENT, "TRILINEAR", NULL, 0, 0},
+    {GALLERY_SCENE, "floor_mips", "floor", TEXTURE_CHECKER_HC_LEVELS, "subdiv16", 16, "levels",
+     FXL_FILTER_POINT, FXL_MIP_NEAREST, FXL_LOD_SEGMENT, "LEVEL PER SEGMENT", NULL, 0, 0}};
 
 size_t gallery_count(void)
 {
-    return SCENE_N * 4u;
+    return GALLERY_N_SCENE + 1u + GALLERY_N_PIPE + 1u;
 }
 
 int gallery_entry(size_t i, gallery_entry_t *e)
@@ -613,12 +872,64 @@ int gallery_entry(size_t i, gallery_entry_t *e)
     if (e == NULL || i >= gallery_count()) {
         return -1;
     }
-    e->scene = scene_names[i / 4u];
-    e->persp_name = (i / 2u) % 2u == 0 ? "subdiv16" : "affine";
-    e->persp = (int16_t)((i / 2u) % 2u == 0 ? 16 : FXL_PERSP_AFFINE);
-    e->filter_name = i % 2u == 0 ? "point" : "bilinear";
-    e->filter = (uint8_t)(i % 2u == 0 ? FXL_FILTER_POINT : FXL_FILTER_BILINEAR);
+    memset(e, 0, sizeof(*e));
+    e->texture = -1;
+    e->persp_name = "subdiv16";
+    e->persp = 16;
+    e->lod = FXL_LOD_SEGMENT;
+    e->mip = FXL_MIP_NONE;
+    if (i < GALLERY_N_SCENE) {
+        e->kind = GALLERY_SCENE;
+        e->scene = e->id = scene_names[i / 4u];
+        if ((i / 2u) % 2u != 0) {
+            e->persp_name = "affine";
+            e->persp = FXL_PERSP_AFFINE;
+        }
+        e->filter_name = i % 2u == 0 ? "point" : "bilinear";
+        e->filter = (uint8_t)(i % 2u == 0 ? FXL_FILTER_POINT : FXL_FILTER_BILINEAR);
+        return 0;
+    }
+    i -= GALLERY_N_SCENE;
+    if (i == 0) {
+        e->kind = GALLERY_MIPS;
+        e->id = "floor_mips";
+        e->scene = "floor";
+        e->texture = TEXTURE_CHECKER_HC;
+        e->filter_name = "compare";
+        return 0;
+    }
+    i -= 1u;
+    if (i < GALLERY_N_PIPE) {
+        e->kind = GALLERY_PIPE;
+        e->scene = e->id = pscene_name(i / 2u);
+        if (i % 2u == 0) {
+            e->filter_name = "point";
+            e->filter = FXL_FILTER_POINT;
+        } else {
+            e->filter_name = "trilinear";
+            e->filter = FXL_FILTER_BILINEAR;
+            e->mip = FXL_MIP_LINEAR;
+        }
+        return 0;
+    }
+    e->kind = GALLERY_PANEL;
+    e->id = "panel_st7789_r1_p_cube";
+    e->scene = "p_cube";
+    e->filter_name = "bilinear";
+    e->filter = FXL_FILTER_BILINEAR;
+    e->panel = "st7789";
+    e->rotation = 1;
+    e->band_rows = 24;
     return 0;
+}
+
+void gallery_file_name(const gallery_entry_t *e, char *buf, size_t n)
+{
+    if (e->kind == GALLERY_SCENE || e->kind == GALLERY_PIPE) {
+        snprintf(buf, n, "%s_%s_%s.png", e->id, e->persp_name, e->filter_name);
+    } else {
+        snprintf(buf, n, "%s.png", e->id);
+    }
 }
 
 void gallery_draw_settings(const gallery_entry_t *e, fxl_draw_t *d)
@@ -626,35 +937,115 @@ void gallery_draw_settings(const gallery_entry_t *e, fxl_draw_t *d)
     fxl_draw_defaults(d);
     d->persp = e->persp;
     d->filter = e->filter;
-    d->mip = FXL_MIP_NONE;
+    d->mip = e->mip;
+    d->lod = e->lod;
     d->depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
 }
 
-fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)
+int gallery_mips_panel(size_t i, gallery_entry_t *e)
 {
-    scene_t s;
-    host_texture_t tex;
+    if (e == NULL || i >= GALLERY_MIPS_PANELS) {
+        return -1;
+    }
+    *e = mips_panels[i];
+    return 0;
+}
+
+int gallery_mips_compose(const frame_t panels[GALLERY_MIPS_PANELS], frame_t *out)
+{
+    const int32_t pw = SCENE_DEFAULT_WIDTH, ph = SCENE_DEFAULT_HEIGHT;
+    const uint16_t gutter = FXL_RGB565(10, 10, 12);
+    int32_t x, y;
+    size_t i;
+    if (panels == NULL || out == NULL ||
+        frame_alloc(out, 3 * pw, 2 * ph, FXL_PIXFMT_RGB565, 0) != 0) {
+        return -1;
+    }
+    for (i = 0; i < GALLERY_MIPS_PANELS; i++) {
+        int32_t ox = (int32_t)(i % 3u) * pw, oy = (int32_t)(i / 3u) * ph;
+        const fxl_target_t *src = &panels[i].target;
+        if (src->width != pw || src->height != ph || src->format != FXL_PIXFMT_RGB565) {
+            frame_free(out);
+            return -1;
+        }
+        for (y = 0; y < ph; y++) {
+            memcpy(out->pixels + (size_t)(oy + y) * (size_t)(3 * pw) + (size_t)ox,
+                   src->pixels + (size_t)y * (size_t)src->stride, (size_t)pw * sizeof(uint16_t));
+        }
+        scene_draw_text(&out->target, ox + 8, oy + 8, 2, mips_panels[i].label,
+                        FXL_RGB565(255, 255, 255), FXL_RGB565(0, 0, 0));
+    }
+    /* 2-px gutters on the panel boundaries (drawn over the panels' edges). */
+    for (y = 0; y < 2 * ph; y++) {
+        for (x = 0; x < 3 * pw; x++) {
+            int32_t mx = x % pw, my = y % ph;
+            if ((mx == 0 && x > 0) || (mx == pw - 1 && x < 3 * pw - 1) || (my == 0 && y > 0) ||
+                (my == ph - 1 && y < 2 * ph - 1)) {
+                out->pixels[(size_t)y * (size_t)(3 * pw) + (size_t)x] = gutter;
+            }
+        }
+    }
+    return 0;
+}
+
+static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)
+{
+    anyscene_t a;
     fxl_draw_t d;
     fxl_status_t st;
+    memset(out, 0, sizeof(*out));
+    if (anyscene_build(&a, e->scene, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, e->texture, 0) !=
+        SCENE_OK) {
+        return FXL_ERR_ARG;
+    }
+    if (frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, FXL_PIXFMT_RGB565, 1) != 0) {
+        anyscene_free(&a);
+        return FXL_ERR_NOMEM;
+    }
+    gallery_draw_settings(e, &d);
+    st = anyscene_render(&a, &d, &out->target, stats);
+    anyscene_free(&a);
+    return st;
+}
+
+fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats,
+                            panel_check_t *chk)
+{
     if (e == NULL || out == NULL) {
         return FXL_ERR_ARG;
     }
     memset(out, 0, sizeof(*out));
-    if (scene_build(e->scene, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, &s) != SCENE_OK) {
-        return FXL_ERR_ARG;
+    if (e->kind == GALLERY_MIPS) {
+        frame_t p[GALLERY_MIPS_PANELS];
+        fxl_status_t st = FXL_OK;
+        size_t i;
+        memset(p, 0, sizeof(p));
+        for (i = 0; i < GALLERY_MIPS_PANELS && st == FXL_OK; i++) {
+            st = render_single(&mips_panels[i], &p[i], stats);
+        }
+        if (st == FXL_OK && gallery_mips_compose(p, out) != 0) {
+            st = FXL_ERR_NOMEM;
+        }
+        for (i = 0; i < GALLERY_MIPS_PANELS; i++) {
+            frame_free(&p[i]);
+        }
+        return st;
     }
-    if (texture_make(&tex, s.texture) != 0) {
-        scene_free(&s);
-        return FXL_ERR_NOMEM;
+    if (e->kind == GALLERY_PANEL) {
+        fxl_draw_t d;
+        panel_check_t c;
+        fxl_status_t st;
+        gallery_draw_settings(e, &d);
+        st = panel_scene_render(e->panel, e->rotation, e->band_rows, e->scene, &d, out, &c);
+        if (stats != NULL) {
+            stats->triangles += c.res.stats.triangles;
+            stats->drawn += c.res.stats.drawn;
+            stats->pixels += c.res.stats.pixels;
+        }
+        if (chk != NULL) {
+            *chk = c;
+        }
+        return st;
     }
-    if (frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, FXL_PIXFMT_RGB565, 1) != 0) {
-        texture_free(&tex);
-        scene_free(&s);
-        return FXL_ERR_NOMEM;
-    }
-    gallery_draw_settings(e, &d);
-    st = scene_render(&s, &tex.tex, &d, &out->target, stats);
-    texture_free(&tex);
-    scene_free(&s);
-    return st;
+    return render_single(e, out, stats);
 }

@@ -58,6 +58,8 @@
 #include <stdint.h>
 
 #include "fixel/fixel.h"
+#include "panel_emu.h"
+#include "pipe_scenes.h"
 #include "textures.h"
 
 #define SCENE_DEFAULT_WIDTH 320
@@ -115,27 +117,134 @@ void scene_clear(fxl_target_t *t, int32_t frame_height);
 fxl_status_t scene_render(const scene_t *s, const fxl_texture_t *tex, const fxl_draw_t *draw,
                           fxl_target_t *t, fxl_stats_t *stats);
 
+/* Fill the clip rectangle with one native RGB565 colour and clear the
+ * depth buffer (if any) to 0: what the band renderer does per band. */
+void scene_clear_flat(fxl_target_t *t, uint16_t rgb565);
+
+/* Draw `text` (texture_font_glyph's 3x5 font, `scale` px per font pixel,
+ * 4 * scale advance) with its top-left at frame pixel (x, y), in colour fg
+ * over a one-font-pixel drop shadow in `shadow`. Clipped to the target. */
+void scene_draw_text(fxl_target_t *t, int32_t x, int32_t y, int32_t scale, const char *text,
+                     uint16_t fg, uint16_t shadow);
+
+/* ---- any scene: double-precision (above) or pipeline (pipe_scenes.h) ---- */
+
+typedef struct anyscene {
+    const char *name;
+    int is_pipe;
+    scene_t s;              /* double-precision scene ... */
+    host_texture_t tex;     /* ... and its texture */
+    pscene_t p;             /* pipeline scene (textures inside) */
+} anyscene_t;
+
+/* 1 when name is a scene of either kind. */
+int anyscene_exists(const char *name);
+/* Build scene `name` for width x height. texture >= 0 replaces a
+ * double-precision scene's texture (texture_id_t; ignored for pipeline
+ * scenes); spin turns pipeline scenes' models (pipe_scenes.h). Returns
+ * SCENE_OK or a SCENE_ERR_* code; *a is then empty. */
+int anyscene_build(anyscene_t *a, const char *name, int32_t width, int32_t height, int texture,
+                   fxl_angle_t spin);
+void anyscene_free(anyscene_t *a);
+/* Draw without clearing (texture and per-part settings from the scene, the
+ * rest from *d). Stats are added to (may be NULL). */
+fxl_status_t anyscene_draw(anyscene_t *a, const fxl_draw_t *d, fxl_target_t *t,
+                           fxl_stats_t *stats);
+/* scene_clear (the sky gradient), then anyscene_draw. */
+fxl_status_t anyscene_render(anyscene_t *a, const fxl_draw_t *d, fxl_target_t *t,
+                             fxl_stats_t *stats);
+/* The screen triangles in draw order, each pointing at its draw state in
+ * draws[] (filled here); *tris is malloc'd. */
+fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
+                              fxl_draw_t draws[PSCENE_MAX_PARTS], fxl_band_tri_t **tris,
+                              size_t *count);
+
+/* ---- a scene on an emulated SPI panel (panel_emu.h) ---------------------- */
+
+#define PANEL_CLEAR_RGB565 FXL_RGB565(28, 32, 44) /* the band renderer's flat clear */
+
+typedef struct panel_check {
+    panel_emu_result_t res;  /* wire CRC, bands, protocol errors, stats */
+    uint32_t panel_crc;      /* CRC-32 of the panel image (native RGB565 bytes) */
+    uint32_t direct_crc;     /* the same of the direct full-frame render */
+    long diff_pixels;        /* pixels where the two differ (0 = bit-identical) */
+    long first_diff;         /* index of the first such pixel, -1 if none */
+} panel_check_t;
+
+/* Render scene `scene` (either kind, its own texture) for the frame size of
+ * `panel` in `rotation` through the real driver and band renderer into the
+ * emulated panel (panel_emu_render_scene, `band_rows` rows per band, 0 =
+ * 24), and directly into a full-frame native RGB565 target with depth,
+ * cleared to PANEL_CLEAR_RGB565 like the bands, with the same draw state.
+ * *panel_img (frame_free it) receives what the panel shows; *chk (may be
+ * NULL) the CRCs and the comparison. Returns the first error (FXL_ERR_ARG
+ * for an unknown panel or scene, FXL_ERR_IO for protocol errors). */
+fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
+                                const char *scene, const fxl_draw_t *d, frame_t *panel_img,
+                                panel_check_t *chk);
+
 /* ---- the gallery ---------------------------------------------------------- */
 
-/* Every scene x {subdiv16, affine} x {point, bilinear}, in that order. */
+/* Gallery images, in this order:
+ * 1. GALLERY_SCENE: every double-precision scene x {subdiv16, affine} x
+ *    {point, bilinear}, mip none (the core issue's gallery);
+ * 2. GALLERY_MIPS: "floor_mips", the floor with TEXTURE_CHECKER_HC in six
+ *    320x240 panels side by side (3 x 2, 960 x 480, labelled), subdiv16:
+ *    point without mips, bilinear without mips, per-triangle LOD (mip
+ *    nearest, bilinear), per-segment LOD (mip nearest, bilinear), trilinear
+ *    (mip linear, bilinear, per-segment LOD), and the level chosen per
+ *    segment (TEXTURE_CHECKER_HC_LEVELS, point, mip nearest);
+ * 3. GALLERY_PIPE: every pipeline scene (pipe_scenes.h) x {point (mip none),
+ *    trilinear (bilinear, mip linear, per-segment LOD)}, subdiv16;
+ * 4. GALLERY_PANEL: p_cube (subdiv16, bilinear) on the emulated ST7789
+ *    240x320 in rotation 1, 24-row bands (panel_scene_render).
+ * All at 320 x 240 unless stated, native RGB565, depth test + write. */
+typedef enum gallery_kind {
+    GALLERY_SCENE = 0,
+    GALLERY_MIPS = 1,
+    GALLERY_PIPE = 2,
+    GALLERY_PANEL = 3
+} gallery_kind_t;
+
 typedef struct gallery_entry {
-    const char *scene;
+    gallery_kind_t kind;
+    const char *id;          /* first token of the golden line, file name stem */
+    const char *scene;       /* scene drawn (GALLERY_MIPS: "floor") */
+    int texture;             /* texture_id_t replacing the scene's, or -1 */
     const char *persp_name;  /* "subdiv16", "affine" */
     int16_t persp;
-    const char *filter_name; /* "point", "bilinear" */
+    const char *filter_name; /* "point", "bilinear", "trilinear", "compare", ... */
     uint8_t filter;          /* fxl_filter_t */
+    uint8_t mip;             /* fxl_mipmode_t */
+    uint8_t lod;             /* fxl_lodmode_t */
+    const char *label;       /* text on a floor_mips panel, else NULL */
+    const char *panel;       /* GALLERY_PANEL: panel name, else NULL */
+    int rotation, band_rows; /* GALLERY_PANEL */
 } gallery_entry_t;
 
 size_t gallery_count(void);
 /* Entry i, or -1 past the end. */
 int gallery_entry(size_t i, gallery_entry_t *e);
-/* The draw settings of a gallery image: fxl_draw_defaults() with the entry's
- * persp and filter, FXL_MIP_NONE, depth test + write. */
+/* File name of an entry's PNG: "<id>_<persp>_<filter>.png" for scenes,
+ * "floor_mips.png", "<id>.png" for the panel. */
+void gallery_file_name(const gallery_entry_t *e, char *buf, size_t n);
+/* The draw settings of an entry: fxl_draw_defaults() with the entry's
+ * persp, filter, mip and lod, depth test + write. */
 void gallery_draw_settings(const gallery_entry_t *e, fxl_draw_t *d);
-/* Render one gallery image the way its golden CRC is defined: 320 x 240,
- * native RGB565, depth buffer on, gallery_draw_settings(). *out is a new
- * frame (frame_free it). Returns FXL_OK, a draw error, or FXL_ERR_NOMEM /
- * FXL_ERR_ARG when the scene, texture or frame cannot be made. */
-fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats);
+
+/* The six panels of floor_mips, each a GALLERY_SCENE-like entry. */
+#define GALLERY_MIPS_PANELS 6
+int gallery_mips_panel(size_t i, gallery_entry_t *e);
+/* Compose the six 320 x 240 panel frames into *out (new 960 x 480 frame,
+ * 3 columns x 2 rows, labels drawn, 2-px dark gutters). Returns 0 or -1. */
+int gallery_mips_compose(const frame_t panels[GALLERY_MIPS_PANELS], frame_t *out);
+
+/* Render one gallery image the way its golden CRC is defined (settings
+ * above). *out is a new frame (frame_free it). Returns FXL_OK, a draw error,
+ * or FXL_ERR_NOMEM / FXL_ERR_ARG when the scene, texture or frame cannot be
+ * made. For GALLERY_PANEL the image is what the emulated panel shows; chk
+ * (may be NULL) receives the panel check, otherwise it is untouched. */
+fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats,
+                            panel_check_t *chk);
 
 #endif
