@@ -2,8 +2,8 @@
  * (see include/fixel/target.h).
  *
  * Invariants every function here keeps for a target it accepted:
- *   1 <= width, height <= FXL_TARGET_MAX_DIM, width <= stride,
- *   stride * height <= INT32_MAX (so any element offset y * stride + x fits
+ *   1 <= width, height <= FXL_TARGET_MAX_DIM, width <= stride <= 4 * FXL_TARGET_MAX_DIM,
+ *   (so any element offset y * stride + x fits
  *   an int32_t, for this file and for the span loops),
  *   |origin_x|, |origin_y| <= FXL_TARGET_MAX_ORIGIN (so origin + size and
  *   every frame coordinate inside the buffer fit an int32_t with lots of room),
@@ -34,14 +34,13 @@ static fxl_status_t check_layout(const uint16_t *pixels, int32_t width, int32_t 
     if (width < 1 || width > FXL_TARGET_MAX_DIM || height < 1 || height > FXL_TARGET_MAX_DIM) {
         return FXL_ERR_RANGE;
     }
-    if (stride < width) {
+    /* The same stride limit the draw calls check (target.h), so a target
+     * that initialises is always drawable. */
+    if (stride < width || stride > 4 * FXL_TARGET_MAX_DIM) {
         return FXL_ERR_RANGE;
     }
-    /* stride * height in 64 bits: both are positive int32, the product is
-     * below 2^43 and exact. */
-    if ((int64_t)stride * (int64_t)height > (int64_t)INT32_MAX) {
-        return FXL_ERR_RANGE;
-    }
+    /* With stride <= 2^14 and height <= 2^12 every element offset is below
+     * 2^26: no int32 index can overflow. */
     return FXL_OK;
 }
 

@@ -116,9 +116,11 @@ void fxl_draw_defaults(fxl_draw_t *d);
 int32_t fxl_snap_subpx(fxl_q16_t x);
 
 /* Draw one triangle. Errors: FXL_ERR_ARG (NULL target/draw/vertices/pixels,
- * unknown enum), FXL_ERR_RANGE (inv_w == 0, persp not allowed, bad budget),
- * FXL_ERR_UNSUPPORTED (texture invalid for this build). Nothing is drawn on
- * error. Degenerate and off-clip triangles return FXL_OK and are counted. */
+ * unknown enum, a target whose fields were edited out of range), FXL_ERR_RANGE
+ * (inv_w == 0, persp not allowed, bad budget), FXL_ERR_UNSUPPORTED (a feature
+ * compiled out by config.h), or whatever fxl_texture_validate() returns for
+ * an invalid texture. Nothing is drawn on error. Degenerate and off-clip
+ * triangles return FXL_OK and are counted. */
 fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw,
                                const fxl_vertex_t v[3], fxl_stats_t *stats);
 

@@ -13,8 +13,8 @@
  *
  * Memory. pixels (and the optional depth buffer) belong to the caller; the
  * target only points at them. Both use `stride` elements per row.
- * Limits: 1 <= width, height <= FXL_TARGET_MAX_DIM, width <= stride,
- * |origin| <= FXL_TARGET_MAX_ORIGIN.
+ * Limits: 1 <= width, height <= FXL_TARGET_MAX_DIM, width <= stride <=
+ * 4 * FXL_TARGET_MAX_DIM, |origin| <= FXL_TARGET_MAX_ORIGIN.
  */
 #ifndef FIXEL_TARGET_H
 #define FIXEL_TARGET_H
