@@ -102,7 +102,7 @@ int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t 
         minx = X[i] < minx ? X[i] : minx;
         maxx = X[i] > maxx ? X[i] : maxx;
     }
-    w = (int32_t)(((int64_t)maxx - minx) >> FXL__S) + 1;
+    w = (int32_t)(((int64_t)maxx - minx) >> FXL__S) + 1;   /* widest span, px */
     while (cap < 8 && ((int32_t)1 << cap) < w)
         cap++;
     lb = fxl__log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
@@ -128,10 +128,29 @@ int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t 
         lg = fxl__sf_log2_q8(qx) + fxl__sf_log2_q8(nmax) / 2 - 3 * fxl__sf_log2_q8(qmin);
     }
     k = fit_log2(lg, lb, cap);
-    /* When the cheap triangle bound shortens the segments, spans are
-     * refined one by one (fxl__auto_span_log2): only the rows that need
-     * short segments pay for them. -1 asks the caller for that. */
-    return k >= cap ? k : -1 - k;
+    if (k >= cap)
+        return k;
+    /* Exact bound over the whole triangle: the max of |N_u| / q^3 and
+     * |N_v| / q^3 lies at a vertex or an edge's critical point (no interior
+     * maximum unless grad N is parallel to grad q). Once per triangle. */
+    {
+        fxl__sf_t Nu[3], Nv[3], Q[3];
+        int32_t ru = INT32_MIN / 4, rv = INT32_MIN / 4;
+        for (i = 0; i < 3; i++)
+            n_at(tri, X[i], Y[i], &Nu[i], &Nv[i], &Q[i]);
+        for (i = 0; i < 3; i++) {
+            int j = (i + 1) % 3;
+            int32_t a = seg_max_ratio(Nu[i], Nu[j], Q[i], Q[j]), b = seg_max_ratio(Nv[i], Nv[j], Q[i], Q[j]);
+            ru = a > ru ? a : ru;
+            rv = b > rv ? b : rv;
+        }
+        lg = fxl__sf_log2_q8(qx) + log2_sum_bound(ru, rv);
+        k = fit_log2(lg, lb, cap);
+    }
+    /* Spans are refined chunk by chunk (fxl__auto_span_log2) only on wide
+     * triangles, where the worst region (a horizon) can be a small part of
+     * the triangle; -1 - k asks the caller for that. */
+    return (k >= cap || w <= 2 << FXL__AUTO_CHUNK_LOG2) ? k : -1 - k;
 }
 
 int fxl__auto_span_log2(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int floor_k)

@@ -199,7 +199,6 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
  * each chunk that reaches the clip gets the longest segment its own error
  * bound allows: a receding row pays for short segments only where it is
  * strongly minified. */
-#define FXL__AUTO_CHUNK_LOG2 7
 static void auto_span(fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr, int32_t cl,
                       int32_t cr, int floor_k)
 {

@@ -150,6 +150,7 @@ void fxl__edge_step(fxl__edge_t *e);
  * (0..8), or -1 - k when spans must be refined one by one with
  * fxl__auto_span_log2, never going below k. */
 int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
+#define FXL__AUTO_CHUNK_LOG2 7   /* chunks of 128 pixels per refined span */
 int fxl__auto_span_log2(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int floor_k);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
