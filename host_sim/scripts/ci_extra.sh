@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# ci_extra.sh - CI steps of the stability issue, run last by .ci/run:
+#   1. fixel-fuzz, 10^6 cases built with -fsanitize=address,undefined
+#      (two processes, half the cases each; fixed seed, so a finding
+#      reproduces with the printed bytes);
+#   2. the libFuzzer target for 20 s when clang is installed;
+#   3. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, Cortex-M4 on
+#      qemu where the tools exist).
+# Environment: FXL_BUILD_DIR (host build, default build), FXL_ASAN_DIR
+# (sanitizer build from `make sanitize`, default build-asan; configured here
+# when missing), FXL_FUZZ_CASES (default 1000000), FXL_FUZZ_SEED (default 1).
+# Optional tools: clang, qemu-system-arm, gcc-arm-none-eabi (steps skip
+# without them). Takes about 2-4 minutes on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bdir="${FXL_BUILD_DIR:-build}"
+adir="${FXL_ASAN_DIR:-build-asan}"
+cases="${FXL_FUZZ_CASES:-1000000}"
+seed="${FXL_FUZZ_SEED:-1}"
+status=0
+
+echo "== fuzz: $cases cases, seed $seed, ASan+UBSan"
+if [ ! -x "$adir/bin/fixel-fuzz" ]; then
+    cmake -S . -B "$adir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFXL_SANITIZE=ON >/dev/null
+    cmake --build "$adir" -j "${JOBS:-2}" --target fixel-fuzz
+fi
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+half=$((cases / 2))
+t0=$SECONDS
+"$adir/bin/fixel-fuzz" --seed "$seed" --start 0 --cases "$half" --quiet > "$adir/fuzz_a.txt" 2>&1 &
+pa=$!
+"$adir/bin/fixel-fuzz" --seed "$seed" --start "$half" --cases "$((cases - half))" --quiet > "$adir/fuzz_b.txt" 2>&1 &
+pb=$!
+wait "$pa" || status=1
+wait "$pb" || status=1
+cat "$adir/fuzz_a.txt" "$adir/fuzz_b.txt"
+echo "-- fuzz: $((SECONDS - t0)) s"
+
+if command -v clang >/dev/null 2>&1; then
+    echo "== libFuzzer: 20 s"
+    out="$adir/fuzz_raster"
+    clang -std=c99 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined \
+        -fno-sanitize-recover=all -D_POSIX_C_SOURCE=200809L -I include -I src -I host_sim/lib \
+        tests/fuzz/fuzz_raster.c host_sim/lib/reference.c src/*.c -lm -o "$out"
+    mkdir -p "$adir/fuzz_corpus"
+    if ! "$out" -max_len=256 -max_total_time=20 -seed="$seed" -artifact_prefix="$adir/" \
+        "$adir/fuzz_corpus" > "$adir/libfuzzer.txt" 2>&1; then
+        tail -40 "$adir/libfuzzer.txt"
+        status=1
+    fi
+    tail -n 1 "$adir/libfuzzer.txt"
+else
+    echo "== libFuzzer: clang not found (apt-get install clang); skipped"
+fi
+
+echo "== determinism"
+FXL_BUILD_DIR="$bdir" bash host_sim/scripts/determinism.sh || status=1
+exit $status

@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# determinism.sh - the gallery CRCs must be bit-identical across builds.
+#
+# Renders the list in determinism/det_entries.h (every gallery scene x 7 draw
+# variants, 320x240) with the core built by: gcc -O0, gcc -O2, clang -O2 (when
+# clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
+# -M mps2-an386 with semihosting (when both exist), and compares each list
+# with the one tests/test_determinism wrote (when it has run). Vertex data
+# and textures are generated once on the host (determinism/gen_data.c), so
+# every build renders the same input.
+#   FXL_BUILD_DIR  a configured host build with lib/libfixel_host.a (default build)
+#   FXL_DET_OUT    work folder (default $FXL_BUILD_DIR/determinism)
+# Exit 0 when all lists agree, 1 on a mismatch or a failed build/run.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+root=$(pwd)
+bdir="${FXL_BUILD_DIR:-build}"
+out="${FXL_DET_OUT:-$bdir/determinism}"
+mkdir -p "$out"
+lib="$bdir/lib"
+if [ ! -f "$lib/libfixel_host.a" ] || [ ! -f "$lib/libfixel.a" ]; then
+    echo "determinism.sh: $lib/libfixel_host.a missing; build first (make)" >&2
+    exit 1
+fi
+warn="-Wall -Wextra -Wpedantic -Werror"
+inc="-I$root/include -I$root/src -I$root/determinism -I$out"
+core=$(ls "$root"/src/*.c)
+
+echo "== generating vertex data and textures on the host"
+cc=${CC:-gcc}
+"$cc" -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -I"$root/include" -I"$root/host_sim/lib" \
+    "$root/determinism/gen_data.c" "$lib/libfixel_host.a" "$lib/libfixel.a" \
+    $( [ -f "$lib/libfixel_port.a" ] && echo "$lib/libfixel_port.a" ) -lpng -lm -o "$out/gen_data"
+"$out/gen_data" "$out/det_data.h"
+
+lists=()
+run_host() {   # name compiler flags...
+    local name=$1 comp=$2
+    shift 2
+    echo "== $name: $comp $*"
+    # shellcheck disable=SC2086
+    "$comp" -std=c99 "$@" $warn -DDET_HOST $inc "$root/determinism/det_main.c" $core -o "$out/det_$name"
+    "$out/det_$name" > "$out/$name.txt"
+    lists+=("$name")
+}
+
+run_host gcc-O0 gcc -O0
+run_host gcc-O2 gcc -O2
+if command -v clang >/dev/null 2>&1; then
+    run_host clang-O2 clang -O2
+else
+    echo "== clang-O2: clang not found (apt-get install clang); skipped"
+fi
+
+if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1; then
+    echo "== m4-O2: arm-none-eabi-gcc -mcpu=cortex-m4 -O2 on qemu-system-arm -M mps2-an386"
+    # shellcheck disable=SC2086
+    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu=cortex-m4 -mthumb \
+        -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
+        -T "$root/determinism/mps2_an386.ld" -Wl,--gc-sections \
+        "$root/determinism/startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m4.elf"
+    rm -f "$out/m4-O2.txt"
+    if timeout 600 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
+        -semihosting-config enable=on,target=native,chardev=semi \
+        -chardev file,id=semi,path="$out/m4-O2.txt" -kernel "$out/det_m4.elf"; then
+        lists+=("m4-O2")
+    else
+        echo "determinism.sh: the Cortex-M4 run failed (exit $?)" >&2
+        lists+=("m4-O2")
+    fi
+else
+    echo "== m4-O2: needs arm-none-eabi-gcc and qemu-system-arm (apt-get install gcc-arm-none-eabi" \
+         "libnewlib-arm-none-eabi qemu-system-arm); skipped"
+fi
+
+ctest_list="$bdir/tests/output/determinism_crcs.txt"
+if [ -f "$ctest_list" ]; then
+    cp "$ctest_list" "$out/ctest.txt"
+    lists+=("ctest")
+fi
+
+status=0
+ref="$out/gcc-O2.txt"
+lines=$(grep -c . "$ref")
+echo
+echo "== comparison against gcc-O2 ($((lines - 1)) frames)"
+for name in "${lists[@]}"; do
+    f="$out/$name.txt"
+    if [ ! -s "$f" ] || ! grep -q '^done$' "$f"; then
+        echo "  $name: incomplete output"
+        status=1
+    elif cmp -s "$ref" "$f"; then
+        echo "  $name: identical"
+    else
+        echo "  $name: DIFFERS"
+        diff "$ref" "$f" | head -20
+        status=1
+    fi
+done
+if grep -v '^done$' "$ref" | grep -v ' FXL_OK ' >/dev/null; then
+    echo "determinism.sh: some draws failed:" >&2
+    grep -v '^done$' "$ref" | grep -v ' FXL_OK ' >&2
+    status=1
+fi
+exit $status

@@ -1,0 +1,178 @@
+/* fuzz.c - fixel-fuzz: randomized, deterministic fuzzing of fxl_draw_triangle.
+ *
+ *   fixel-fuzz [--cases N] [--seed S] [--start I] [--long] [--bytes B]
+ *              [--replay HEX] [--stop-after K] [--quiet]
+ *
+ * Case i of seed S is B bytes (default 192) from a SplitMix64 stream keyed by
+ * (S, i), decoded and checked by tests/fuzz/fuzz_case.h (status codes,
+ * canaries and guard pages, clip, determinism, exact coverage, stats).
+ * A finding prints the seed, the case index, its bytes as hex (feed them to
+ * --replay or to tests/test_fuzz_regress.c) and the decoded case. Exit 0 when
+ * nothing was found, 1 otherwise, 2 on usage errors. --long runs 10^8 cases.
+ * Build it with -fsanitize=address,undefined for the CI run (ci_extra.sh).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../../tests/fuzz/fuzz_case.h"
+
+#define MAX_BYTES 1024
+
+static uint64_t splitmix(uint64_t *s)
+{
+    uint64_t z = (*s += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+static void case_bytes(uint64_t seed, uint64_t index, uint8_t *b, size_t n)
+{
+    uint64_t s = seed * UINT64_C(0xD1B54A32D192ED03) ^ index * UINT64_C(0x9E3779B97F4A7C15);
+    size_t i;
+    for (i = 0; i < n; i += 8) {
+        uint64_t r = splitmix(&s);
+        size_t k;
+        for (k = 0; k < 8 && i + k < n; k++)
+            b[i + k] = (uint8_t)(r >> (8 * k));
+    }
+}
+
+static int parse_hex(const char *h, uint8_t *b, size_t cap, size_t *n)
+{
+    size_t len = strlen(h), i;
+    if (len % 2 != 0 || len / 2 > cap)
+        return -1;
+    for (i = 0; i < len / 2; i++) {
+        unsigned v;
+        if (sscanf(h + 2 * i, "%2x", &v) != 1)
+            return -1;
+        b[i] = (uint8_t)v;
+    }
+    *n = len / 2;
+    return 0;
+}
+
+static void print_hex(FILE *f, const uint8_t *b, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        fprintf(f, "%02x", b[i]);
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: fixel-fuzz [--cases N] [--seed S] [--start I] [--long] [--bytes B]\n"
+                    "                  [--replay HEX] [--stop-after K] [--quiet]\n");
+}
+
+int main(int argc, char **argv)
+{
+    uint64_t cases = 100000, seed = 1, start = 0, i, findings = 0, stop_after = 10;
+    uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0;
+    size_t nbytes = 192;
+    const char *replay = NULL;
+    int quiet = 0, a;
+    uint8_t buf[MAX_BYTES];
+    static fz_state st;
+    char msg[FZ_MSG];
+    double t0;
+
+    for (a = 1; a < argc; a++) {
+        if (!strcmp(argv[a], "--cases") && a + 1 < argc)
+            cases = strtoull(argv[++a], NULL, 0);
+        else if (!strcmp(argv[a], "--seed") && a + 1 < argc)
+            seed = strtoull(argv[++a], NULL, 0);
+        else if (!strcmp(argv[a], "--start") && a + 1 < argc)
+            start = strtoull(argv[++a], NULL, 0);
+        else if (!strcmp(argv[a], "--bytes") && a + 1 < argc)
+            nbytes = (size_t)strtoul(argv[++a], NULL, 0);
+        else if (!strcmp(argv[a], "--stop-after") && a + 1 < argc)
+            stop_after = strtoull(argv[++a], NULL, 0);
+        else if (!strcmp(argv[a], "--replay") && a + 1 < argc)
+            replay = argv[++a];
+        else if (!strcmp(argv[a], "--long"))
+            cases = 100000000u;
+        else if (!strcmp(argv[a], "--quiet"))
+            quiet = 1;
+        else {
+            usage();
+            return 2;
+        }
+    }
+    if (nbytes < 1 || nbytes > MAX_BYTES) {
+        fprintf(stderr, "fixel-fuzz: --bytes must be 1..%d\n", MAX_BYTES);
+        return 2;
+    }
+    if (fz_state_init(&st) != 0) {
+        fprintf(stderr, "fixel-fuzz: out of memory\n");
+        return 2;
+    }
+
+    if (replay) {
+        fz_case c;
+        fz_outcome o;
+        size_t n;
+        int bad;
+        if (parse_hex(replay, buf, sizeof buf, &n) != 0) {
+            fprintf(stderr, "fixel-fuzz: --replay wants an even number of hex digits (max %d bytes)\n", MAX_BYTES);
+            return 2;
+        }
+        fz_decode(buf, n, &c);
+        bad = fz_run_case(&st, &c, &o, msg);
+        printf("replay: %s (status %s, %u written, %u covered)\n", bad ? msg : "ok", fxl_status_name(o.status),
+               (unsigned)o.written, (unsigned)o.covered);
+        fz_print_case(stdout, &c);
+        return bad;
+    }
+
+    t0 = now_s();
+    for (i = start; i < start + cases; i++) {
+        fz_case c;
+        fz_outcome o;
+        case_bytes(seed, i, buf, nbytes);
+        fz_decode(buf, nbytes, &c);
+        if (fz_run_case(&st, &c, &o, msg)) {
+            findings++;
+            printf("FINDING seed %llu case %llu: %s\n  bytes ", (unsigned long long)seed, (unsigned long long)i, msg);
+            print_hex(stdout, buf, nbytes);
+            printf("\n");
+            fz_print_case(stdout, &c);
+            fflush(stdout);
+            if (findings >= stop_after)
+                break;
+        }
+        if (o.status == FXL_OK)
+            n_ok++;
+        else
+            n_err++;
+        n_px += o.written;
+        n_equal += (uint64_t)o.checked_equal;
+        if (!quiet && (i - start + 1) % 1000000u == 0) {
+            fprintf(stderr, "fixel-fuzz: %llu cases, %.0f cases/s\n", (unsigned long long)(i - start + 1),
+                    (double)(i - start + 1) / (now_s() - t0));
+        }
+    }
+    {
+        double dt = now_s() - t0;
+        uint64_t done = i - start;
+        printf("fixel-fuzz: seed %llu, cases %llu..%llu: %llu run in %.1f s (%.0f cases/s), %llu valid "
+               "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written, "
+               "%llu finding(s)\n",
+               (unsigned long long)seed, (unsigned long long)start, (unsigned long long)(start + done),
+               (unsigned long long)done, dt, dt > 0 ? (double)done / dt : 0.0, (unsigned long long)n_ok,
+               (unsigned long long)n_equal, (unsigned long long)n_err, (unsigned long long)n_px,
+               (unsigned long long)findings);
+    }
+    return findings ? 1 : 0;
+}

@@ -1,0 +1,844 @@
+/* fuzz_case.h - one fuzz case of fxl_draw_triangle: decode, run, check.
+ *
+ * Shared by the randomized harness (host_sim/tools/fuzz.c -> fixel-fuzz),
+ * the libFuzzer entry point (tests/fuzz/fuzz_raster.c) and the regression
+ * test (tests/test_fuzz_regress.c), so a reproducer is just the input bytes.
+ * Header-only (static functions) because each user is one translation unit;
+ * host code: libc and POSIX (mmap for guard pages).
+ *
+ * A case is decoded from bytes (missing bytes read as 0, so any length is a
+ * valid case): target size, stride, format, origin, clip, optional depth
+ * buffer, optional texture (any format, size, levels, wrap, key, border,
+ * sometimes an invalid descriptor), every draw field (sometimes an invalid
+ * enum), and three vertices picked from pools of extreme values on purpose
+ * (INT32 limits, +-32767 px, tiny steps, duplicates, collinear points,
+ * inv_w 0 / 1 / UINT32_MAX, huge u, v).
+ *
+ * Checks (a finding is any violated one):
+ *  1 status: FXL_OK exactly when the case is valid by the documented rules
+ *    (raster.h, target.h, texture.h), else one of the applicable errors;
+ *    on error no pixel and no depth value changes.
+ *  2 memory: canary words before and after the pixel and depth buffers are
+ *    intact; textures and palettes end (or start) at a PROT_NONE guard page,
+ *    so a texel read outside the chain faults.
+ *  3 clip: nothing written outside the clip rectangle (stride padding
+ *    included), depth likewise.
+ *  4 determinism: the case is rendered twice on two different backgrounds
+ *    (0x0000 and 0xFFFF); every written pixel must hold the same value in
+ *    both, and the status and depth buffer must be equal.
+ *  5 coverage: the written pixels are a subset of the exact top-left
+ *    coverage (reference.h) within the clip; equal to it when neither a
+ *    depth test nor a colour key can reject pixels. A third run through the
+ *    span-loop probe hook must visit each covered pixel exactly once and
+ *    nothing else, with segments inside the clip rectangle.
+ *  6 stats: pixels written == stats.pixels; a zero-area triangle is counted
+ *    as culled_degenerate.
+ */
+#ifndef FXL_FUZZ_CASE_H
+#define FXL_FUZZ_CASE_H
+
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "fixel/fixel.h"
+#include "reference.h"
+#include "../../src/raster_int.h"
+
+#define FZ_MAX_DIM 160          /* largest target side the decoder makes */
+#define FZ_CANARY 16            /* canary words before and after each buffer */
+#define FZ_TEX_MAX_TEXELS0 (1u << 16) /* level 0 texels (keeps cases fast) */
+#define FZ_MSG 512
+
+/* ---- byte reader ---------------------------------------------------------- */
+
+typedef struct fz_reader {
+    const uint8_t *p;
+    size_t n, i;
+} fz_reader;
+
+static uint32_t fz_u8(fz_reader *r)
+{
+    return r->i < r->n ? r->p[r->i++] : 0u;
+}
+
+static uint32_t fz_u16(fz_reader *r)
+{
+    uint32_t a = fz_u8(r);
+    return a | (fz_u8(r) << 8);
+}
+
+static uint32_t fz_u32(fz_reader *r)
+{
+    uint32_t a = fz_u16(r);
+    return a | (fz_u16(r) << 16);
+}
+
+static int32_t fz_i32(fz_reader *r)
+{
+    uint32_t u = fz_u32(r);
+    return u <= INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1;
+}
+
+/* ---- guarded memory ---------------------------------------------------------
+ * A region of `bytes` with one inaccessible page before and after it. Data
+ * placed flush against either end faults on the first byte read outside. */
+typedef struct fz_guard {
+    uint8_t *base;   /* first usable byte */
+    size_t bytes;    /* usable bytes, a multiple of the page size */
+} fz_guard;
+
+static int fz_guard_alloc(fz_guard *g, size_t want)
+{
+    long pg = sysconf(_SC_PAGESIZE);
+    size_t page = pg > 0 ? (size_t)pg : 4096u;
+    size_t usable = (want + page - 1u) / page * page;
+    int fd = open("/dev/zero", O_RDWR);
+    uint8_t *m;
+
+    if (fd < 0)
+        return -1;
+    m = (uint8_t *)mmap(NULL, usable + 2u * page, PROT_READ | PROT_WRITE, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (m == (uint8_t *)MAP_FAILED)
+        return -1;
+    if (mprotect(m, page, PROT_NONE) != 0 || mprotect(m + page + usable, page, PROT_NONE) != 0)
+        return -1;
+    g->base = m + page;
+    g->bytes = usable;
+    return 0;
+}
+
+/* ---- the decoded case ---------------------------------------------------- */
+
+typedef struct fz_case {
+    /* target */
+    int32_t w, h, stride, origin_x, origin_y;
+    fxl_rect_t clip;
+    int32_t format;           /* fxl_pixfmt_t, possibly invalid */
+    int bad_target;           /* 1: the struct violates target.h (expect ARG) */
+    int has_depth;
+    uint16_t depth_init;      /* constant, or seed of random contents when depth_rand */
+    int depth_rand;
+    /* texture */
+    int has_tex;
+    fxl_texture_t tex;        /* texels/palette filled in by fz_run */
+    int tex_at_start;         /* texture placed after the lower guard page */
+    int pal_null;
+    uint32_t tex_seed;
+    /* draw and vertices */
+    fxl_draw_t draw;
+    fxl_vertex_t v[3];
+} fz_case;
+
+static const int32_t fz_special_i32[] = {
+    INT32_MIN, INT32_MIN + 1, INT32_MAX, INT32_MAX - 1, 0, 1, -1,
+    32767 * 65536, -32767 * 65536, INT32_MAX, INT32_MIN,
+    0x00008000, -0x00008000, 0x00000800, -0x00000800, 0x7FFF8000, (int32_t)0x80008000u,
+    16384 * 65536, -16384 * 65536, 65536, -65536};
+#define FZ_NSPECIAL ((uint32_t)(sizeof fz_special_i32 / sizeof fz_special_i32[0]))
+
+/* A q16 frame coordinate: mostly near the target (so something is drawn),
+ * otherwise extremes. `lo`, `len`: target range in pixels; prev: another
+ * vertex's coordinate for tiny offsets. */
+static int32_t fz_coord(fz_reader *r, int32_t lo, int32_t len, int32_t prev)
+{
+    uint32_t mode = fz_u8(r) % 16u;
+    int64_t c;
+
+    switch (mode) {
+    case 0: case 1: case 2: case 3: case 4: case 5: {
+        /* within the target +- 8 px, random fraction or exact grid/tie points */
+        int64_t px = (int64_t)lo - 8 + (int64_t)(fz_u16(r) % (uint32_t)(len + 16));
+        uint32_t fm = fz_u8(r);
+        int64_t frac = fm < 64 ? 0 : (fm < 96 ? 0x8000 : (fm < 128 ? 0x0800 : (int64_t)(fz_u16(r))));
+        c = px * 65536 + frac;
+        break;
+    }
+    case 6: case 7:
+        c = fz_special_i32[fz_u8(r) % FZ_NSPECIAL];
+        break;
+    case 8:
+        c = fz_i32(r);
+        break;
+    case 9: case 10: {
+        /* prev +- a few units: duplicates, half-grid ties, one grid step */
+        static const int32_t d[] = {0, 1, -1, 0x7FF, 0x800, -0x800, 0x1000, -0x1000, 0x10000, -0x10000};
+        c = (int64_t)prev + d[fz_u8(r) % 10u];
+        break;
+    }
+    case 11: {
+        /* far outside, up to +-2^k px */
+        int k = (int)(fz_u8(r) % 16u);
+        int64_t m = ((int64_t)1 << k) * 65536;
+        c = (fz_u8(r) & 1u) ? m + (int64_t)(fz_u16(r)) : -m - (int64_t)(fz_u16(r));
+        break;
+    }
+    case 12:
+        c = (int64_t)lo * 65536 + (int64_t)(fz_u32(r) % 0x100000u) - 0x80000;
+        break;
+    default:
+        c = ((int64_t)lo + (int64_t)(fz_u16(r) % (uint32_t)(len + 1))) * 65536;
+        break;
+    }
+    if (c > INT32_MAX)
+        c = INT32_MAX;
+    if (c < INT32_MIN)
+        c = INT32_MIN;
+    return (int32_t)c;
+}
+
+static uint32_t fz_inv_w(fz_reader *r, uint32_t prev)
+{
+    uint32_t mode = fz_u8(r) % 12u;
+    switch (mode) {
+    case 0: return 1u;
+    case 1: return UINT32_MAX;
+    case 2: return fz_u8(r) < 16 ? 0u : 2u;           /* 0: FXL_ERR_RANGE */
+    case 3: return (uint32_t)1 << (fz_u8(r) % 32u);
+    case 4: return prev + 1u == 0u ? prev : prev + 1u;
+    case 5: return prev;
+    case 6: return 1u + fz_u8(r);
+    case 7: return UINT32_MAX - fz_u8(r);
+    default: {
+        uint32_t x = fz_u32(r);
+        return x ? x : 1u;
+    }
+    }
+}
+
+static int32_t fz_uv(fz_reader *r, int32_t prev)
+{
+    uint32_t mode = fz_u8(r) % 10u;
+    switch (mode) {
+    case 0: return 0;
+    case 1: return fz_special_i32[fz_u8(r) % FZ_NSPECIAL];
+    case 2: return fz_i32(r);
+    case 3: {
+        int64_t x = (int64_t)prev + ((fz_u8(r) & 1u) ? 1 : -1) * (int64_t)(fz_u8(r) % 4u);
+        return x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : (int32_t)x);
+    }
+    case 4: return prev;
+    default: return (int32_t)(fz_u32(r) % 0x80000u) - 0x40000;   /* +-4 periods */
+    }
+}
+
+static const int16_t fz_persp_vals[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, FXL_PERSP_AUTO, 2, 4, 8, 16, 32,
+                                        64, 128, 256,
+                                        /* invalid: */ 3, 512, -2, 24, INT16_MIN, INT16_MAX};
+#define FZ_NPERSP_VALID 11
+
+static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
+{
+    fz_reader rd = {data, n, 0};
+    fz_reader *r = &rd;
+    uint32_t m, i;
+    int32_t prev_x, prev_y;
+
+    memset(c, 0, sizeof *c);
+
+    /* ---- target ---- */
+    m = fz_u8(r);
+    if (m < 200) {
+        c->w = 1 + (int32_t)(fz_u8(r) % 40u);
+        c->h = 1 + (int32_t)(fz_u8(r) % 40u);
+    } else if (m < 240) {
+        c->w = 1 + (int32_t)(fz_u8(r) % 4u);
+        c->h = 1 + (int32_t)(fz_u8(r) % 4u);
+    } else {
+        c->w = 1 + (int32_t)(fz_u8(r) % FZ_MAX_DIM);
+        c->h = 1 + (int32_t)(fz_u8(r) % FZ_MAX_DIM);
+    }
+    c->stride = c->w + (int32_t)(fz_u8(r) % 8u < 5 ? 0 : fz_u8(r) % 7u);
+    m = fz_u8(r);
+    c->format = m < 120 ? FXL_PIXFMT_RGB565 : (m < 250 ? FXL_PIXFMT_RGB565_SWAP : 2 + (int32_t)(m % 3u));
+    m = fz_u8(r) % 8u;
+    if (m < 4) {
+        c->origin_x = c->origin_y = 0;
+    } else if (m < 6) {
+        c->origin_x = (int32_t)(fz_u16(r) % 801u) - 400;
+        c->origin_y = (int32_t)(fz_u16(r) % 801u) - 400;
+    } else {
+        static const int32_t ext[] = {FXL_TARGET_MAX_ORIGIN, -FXL_TARGET_MAX_ORIGIN, 32767 - FZ_MAX_DIM,
+                                      -32768, FXL_TARGET_MAX_ORIGIN - 1, 0};
+        c->origin_x = ext[fz_u8(r) % 6u];
+        c->origin_y = ext[fz_u8(r) % 6u];
+        /* Clamp to the documented limit except on purpose (bad_target). */
+        if (fz_u8(r) >= 16) {
+            if (c->origin_x < -FXL_TARGET_MAX_ORIGIN) c->origin_x = -FXL_TARGET_MAX_ORIGIN;
+            if (c->origin_y < -FXL_TARGET_MAX_ORIGIN) c->origin_y = -FXL_TARGET_MAX_ORIGIN;
+            if (c->origin_x > FXL_TARGET_MAX_ORIGIN) c->origin_x = FXL_TARGET_MAX_ORIGIN;
+            if (c->origin_y > FXL_TARGET_MAX_ORIGIN) c->origin_y = FXL_TARGET_MAX_ORIGIN;
+        }
+    }
+    /* clip, frame coordinates */
+    m = fz_u8(r) % 8u;
+    c->clip.x0 = c->origin_x;
+    c->clip.y0 = c->origin_y;
+    c->clip.x1 = c->origin_x + c->w;
+    c->clip.y1 = c->origin_y + c->h;
+    if (m >= 3 && m < 6) {
+        int32_t a = (int32_t)(fz_u8(r) % (uint32_t)(c->w + 1)), b = (int32_t)(fz_u8(r) % (uint32_t)(c->w + 1));
+        int32_t e = (int32_t)(fz_u8(r) % (uint32_t)(c->h + 1)), f = (int32_t)(fz_u8(r) % (uint32_t)(c->h + 1));
+        c->clip.x0 = c->origin_x + (a < b ? a : b);
+        c->clip.x1 = c->origin_x + (a < b ? b : a);
+        c->clip.y0 = c->origin_y + (e < f ? e : f);
+        c->clip.y1 = c->origin_y + (e < f ? f : e);
+    } else if (m == 6) {
+        /* empty or inverted */
+        c->clip.x1 = c->clip.x0 - (int32_t)(fz_u8(r) % 3u);
+    } else if (m == 7 && fz_u8(r) < 32) {
+        /* outside the buffer: the struct is invalid */
+        c->clip.x1 += 1 + (int32_t)(fz_u8(r) % 4u);
+    }
+    c->has_depth = fz_u8(r) % 3u != 0u;
+    c->depth_rand = fz_u8(r) % 4u == 0u;
+    {
+        static const uint16_t dv[] = {0, 0, 1, 0x7FFF, 0xFFFF, 0x8000};
+        c->depth_init = c->depth_rand ? (uint16_t)fz_u16(r) : dv[fz_u8(r) % 6u];
+    }
+
+    /* ---- texture ---- */
+    m = fz_u8(r);
+    c->has_tex = m >= 48;
+    if (c->has_tex) {
+        fxl_texture_t *t = &c->tex;
+        uint32_t lw, lh, maxl;
+        m = fz_u8(r);
+        t->format = (uint8_t)(m < 150 ? FXL_TEXFMT_RGB565 : (m < 200 ? FXL_TEXFMT_L8 : (m < 252 ? FXL_TEXFMT_I8 : 3 + m % 2u)));
+        m = fz_u8(r);
+        if (m < 200) {
+            lw = fz_u8(r) % 8u;
+            lh = fz_u8(r) % 8u;
+        } else {
+            lw = fz_u8(r) % (FXL_TEX_MAX_LOG2 + 1u);
+            lh = fz_u8(r) % (FXL_TEX_MAX_LOG2 + 1u);
+            while (lw + lh > 16u) {
+                if (lw > lh) lw--; else lh--;
+            }
+            if (m >= 254)
+                lw = FXL_TEX_MAX_LOG2 + 1u + (m & 1u);   /* too large: invalid */
+        }
+        t->log2_w = (uint8_t)lw;
+        t->log2_h = (uint8_t)lh;
+        maxl = 1u + (lw > lh ? lw : lh);
+        m = fz_u8(r);
+        t->levels = (uint8_t)(m < 100 ? 1u : (m < 200 ? maxl : (m < 250 ? 1u + fz_u8(r) % maxl : (m & 1u ? 0u : maxl + 1u))));
+        m = fz_u8(r);
+        t->wrap_u = (uint8_t)(m % 4u);
+        t->wrap_v = (uint8_t)((m >> 2) % 4u);
+        if (m >= 250)
+            t->wrap_u = 4;   /* invalid */
+        m = fz_u8(r);
+        t->flags = (uint8_t)(m < 80 ? FXL_TEXF_KEY : (m < 252 ? 0u : 0x80u));
+        t->key = (uint16_t)fz_u16(r);
+        if (t->format != FXL_TEXFMT_RGB565 && fz_u8(r) >= 8)
+            t->key &= 0xFFu;
+        t->border = (uint16_t)fz_u16(r);
+        t->reserved = (uint8_t)(fz_u8(r) >= 252 ? 1u : 0u);
+        c->tex_at_start = (int)(fz_u8(r) & 1u);
+        c->pal_null = fz_u8(r) < 8;
+        c->tex_seed = fz_u32(r);
+    }
+
+    /* ---- draw ---- */
+    fxl_draw_defaults(&c->draw);
+    m = fz_u8(r);
+    c->draw.persp = m < 240 ? fz_persp_vals[m % FZ_NPERSP_VALID]
+                            : fz_persp_vals[FZ_NPERSP_VALID + m % (sizeof fz_persp_vals / sizeof fz_persp_vals[0] - FZ_NPERSP_VALID)];
+    m = fz_u8(r);
+    c->draw.filter = (uint8_t)(m < 250 ? m % 2u : 2u + m % 3u);
+    m = fz_u8(r);
+    c->draw.mip = (uint8_t)(m < 250 ? m % 3u : 3u);
+    m = fz_u8(r);
+    c->draw.lod = (uint8_t)(m < 250 ? m % 2u : 2u);
+    m = fz_u8(r);
+    c->draw.texenv = (uint8_t)(m < 250 ? m % 3u : 3u);
+    m = fz_u8(r);
+    c->draw.shade = (uint8_t)(m < 250 ? m % 2u : 2u);
+    c->draw.depth = (uint8_t)(fz_u8(r) % 4u);
+    c->draw.color = (uint16_t)fz_u16(r);
+    m = fz_u8(r);
+    c->draw.lod_bias_q8 = (int16_t)(m < 128 ? 0 : (m < 192 ? (int32_t)(fz_u16(r) % 8193u) - 4096
+                                                            : (m & 1u ? INT16_MAX : INT16_MIN)));
+    m = fz_u8(r);
+    c->draw.auto_budget = m < 200 ? (int32_t)(1u + fz_u32(r) % 0x40000u)
+                                  : (m < 230 ? fz_special_i32[fz_u8(r) % FZ_NSPECIAL] : FXL_Q16_ONE / 4);
+    if (c->has_tex && fz_u8(r) >= 8)
+        c->draw.texture = &c->tex;   /* else untextured with a texture prepared */
+
+    /* ---- vertices ---- */
+    m = fz_u8(r) % 8u;   /* 0..5 free, 6: two vertices equal, 7: collinear */
+    prev_x = c->origin_x * 65536;
+    prev_y = c->origin_y * 65536;
+    for (i = 0; i < 3; i++) {
+        fxl_vertex_t *v = &c->v[i];
+        v->x = fz_coord(r, c->origin_x, c->w, prev_x);
+        v->y = fz_coord(r, c->origin_y, c->h, prev_y);
+        v->inv_w = fz_inv_w(r, i ? c->v[i - 1].inv_w : 0x40000000u);
+        v->u = fz_uv(r, i ? c->v[i - 1].u : 0);
+        v->v = fz_uv(r, i ? c->v[i - 1].v : 0);
+        v->color = (uint16_t)fz_u16(r);
+        prev_x = v->x;
+        prev_y = v->y;
+    }
+    if (m == 6) {
+        c->v[2].x = c->v[0].x;
+        c->v[2].y = c->v[0].y;
+    } else if (m == 7) {
+        /* v2 = v0 + k (v1 - v0) on the q16 grid, k in {-2, -1, 2, 3} (may saturate) */
+        static const int k[] = {-2, -1, 2, 3};
+        int kk = k[fz_u8(r) % 4u];
+        int64_t x = (int64_t)c->v[0].x + kk * ((int64_t)c->v[1].x - c->v[0].x);
+        int64_t y = (int64_t)c->v[0].y + kk * ((int64_t)c->v[1].y - c->v[0].y);
+        if (x >= INT32_MIN && x <= INT32_MAX && y >= INT32_MIN && y <= INT32_MAX) {
+            c->v[2].x = (int32_t)x;
+            c->v[2].y = (int32_t)y;
+        }
+    }
+}
+
+/* ---- the oracle ------------------------------------------------------------- */
+
+#define FZ_E_ARG 1u
+#define FZ_E_RANGE 2u
+#define FZ_E_UNSUP 4u
+
+static int fz_target_valid(const fz_case *c)
+{
+    if (c->w < 1 || c->h < 1 || c->w > FXL_TARGET_MAX_DIM || c->h > FXL_TARGET_MAX_DIM || c->stride < c->w)
+        return 0;
+    if (c->origin_x < -FXL_TARGET_MAX_ORIGIN || c->origin_x > FXL_TARGET_MAX_ORIGIN ||
+        c->origin_y < -FXL_TARGET_MAX_ORIGIN || c->origin_y > FXL_TARGET_MAX_ORIGIN)
+        return 0;
+    if (c->format != FXL_PIXFMT_RGB565 && c->format != FXL_PIXFMT_RGB565_SWAP)
+        return 0;
+    /* target.h: the clip is always inside the buffer (an empty one is fine
+     * as long as it does not reach outside). */
+    if (c->clip.x0 < c->clip.x1 && c->clip.y0 < c->clip.y1 &&
+        (c->clip.x0 < c->origin_x || c->clip.y0 < c->origin_y || c->clip.x1 > c->origin_x + c->w ||
+         c->clip.y1 > c->origin_y + c->h))
+        return 0;
+    return 1;
+}
+
+/* Which errors the documented rules allow for this case (0: must be OK). */
+static uint32_t fz_expected_errors(const fz_case *c)
+{
+    uint32_t e = 0;
+    const fxl_draw_t *d = &c->draw;
+    int i;
+
+    if (!fz_target_valid(c))
+        e |= FZ_E_ARG;
+    if (d->filter > 1 || d->mip > 2 || d->lod > 1 || d->texenv > 2 || d->shade > 1)
+        e |= FZ_E_ARG;
+    {
+        int p = d->persp, ok = p == FXL_PERSP_AFFINE || p == FXL_PERSP_EXACT || p == FXL_PERSP_AUTO ||
+                               (p >= 2 && p <= FXL_PERSP_MAX && (p & (p - 1)) == 0);
+        if (!ok || (p == FXL_PERSP_AUTO && d->auto_budget <= 0))
+            e |= FZ_E_RANGE;
+    }
+    if (d->texture) {
+        const fxl_texture_t *t = d->texture;
+        uint32_t maxl = 1u + (t->log2_w > t->log2_h ? t->log2_w : t->log2_h);
+        int bad = t->log2_w > FXL_TEX_MAX_LOG2 || t->log2_h > FXL_TEX_MAX_LOG2 || t->format > FXL_TEXFMT_I8 ||
+                  t->wrap_u > FXL_WRAP_BORDER || t->wrap_v > FXL_WRAP_BORDER ||
+                  (t->format == FXL_TEXFMT_I8 && !t->palette) || t->reserved != 0 ||
+                  (t->flags & ~FXL_TEXF_KEY) != 0 || t->levels == 0 || t->levels > maxl ||
+                  ((t->flags & FXL_TEXF_KEY) && t->format != FXL_TEXFMT_RGB565 && t->key > 255);
+        if (bad)
+            e |= FZ_E_ARG | FZ_E_RANGE | FZ_E_UNSUP;   /* texture.h does not fix which */
+    }
+    for (i = 0; i < 3; i++)
+        if (c->v[i].inv_w == 0)
+            e |= FZ_E_RANGE;
+    return e;
+}
+
+static uint32_t fz_status_bit(fxl_status_t st)
+{
+    switch (st) {
+    case FXL_OK: return 0;
+    case FXL_ERR_ARG: return FZ_E_ARG;
+    case FXL_ERR_RANGE: return FZ_E_RANGE;
+    case FXL_ERR_UNSUPPORTED: return FZ_E_UNSUP;
+    default: return 0x100u;
+    }
+}
+
+/* ---- running a case ----------------------------------------------------------- */
+
+typedef struct fz_state {
+    fz_guard texmem, palmem;
+    uint16_t *pix_a, *pix_b, *dep_a, *dep_b, *dep_init;  /* FZ_CANARY + stride*h + FZ_CANARY */
+    uint8_t *cover;                                       /* w*h */
+    uint8_t *probe_cnt;
+    size_t cap;
+    int ready;
+} fz_state;
+
+typedef struct fz_outcome {
+    fxl_status_t status;
+    uint32_t written;       /* pixels written */
+    uint32_t covered;       /* exact coverage within the clip */
+    int checked_equal;      /* coverage equality was required */
+} fz_outcome;
+
+/* The probe (check 5) has no user pointer: file-scope state, set per run. */
+static struct {
+    const uint16_t *base;
+    int32_t stride, w, h, ox, oy;
+    fxl_rect_t clip;
+    uint8_t *cnt;
+    int bad;                /* a segment outside the buffer or clip */
+    long bad_idx;
+} fz_probe_ctx;
+
+static uint32_t fz_probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    long k = (long)(s->dst - fz_probe_ctx.base);
+    int32_t row, col, i;
+    (void)tri;
+    if (s->n < 1 || k < 0) {
+        fz_probe_ctx.bad = 1;
+        fz_probe_ctx.bad_idx = k;
+        return 0;
+    }
+    row = (int32_t)(k / fz_probe_ctx.stride);
+    col = (int32_t)(k % fz_probe_ctx.stride);
+    if (row >= fz_probe_ctx.h || col + s->n > fz_probe_ctx.w ||
+        row + fz_probe_ctx.oy < fz_probe_ctx.clip.y0 || row + fz_probe_ctx.oy >= fz_probe_ctx.clip.y1 ||
+        col + fz_probe_ctx.ox < fz_probe_ctx.clip.x0 || col + s->n + fz_probe_ctx.ox > fz_probe_ctx.clip.x1) {
+        fz_probe_ctx.bad = 1;
+        fz_probe_ctx.bad_idx = k;
+        return 0;
+    }
+    for (i = 0; i < s->n; i++) {
+        uint8_t *p = &fz_probe_ctx.cnt[(size_t)row * (size_t)fz_probe_ctx.w + (size_t)(col + i)];
+        if (*p < 255)
+            (*p)++;
+    }
+    return (uint32_t)s->n;
+}
+
+static int fz_state_init(fz_state *s)
+{
+    size_t words = (size_t)FZ_CANARY * 2u + (size_t)(FZ_MAX_DIM + 8) * FZ_MAX_DIM;
+    size_t tex_bytes = (size_t)FZ_TEX_MAX_TEXELS0 * 2u * 4u / 3u + 64u;
+    memset(s, 0, sizeof *s);
+    if (fz_guard_alloc(&s->texmem, tex_bytes) || fz_guard_alloc(&s->palmem, 512))
+        return -1;
+    s->cap = words;
+    s->pix_a = (uint16_t *)malloc(words * 2u);
+    s->pix_b = (uint16_t *)malloc(words * 2u);
+    s->dep_a = (uint16_t *)malloc(words * 2u);
+    s->dep_b = (uint16_t *)malloc(words * 2u);
+    s->dep_init = (uint16_t *)malloc(words * 2u);
+    s->cover = (uint8_t *)malloc((size_t)FZ_MAX_DIM * FZ_MAX_DIM);
+    s->probe_cnt = (uint8_t *)malloc((size_t)FZ_MAX_DIM * FZ_MAX_DIM);
+    if (!s->pix_a || !s->pix_b || !s->dep_a || !s->dep_b || !s->dep_init || !s->cover || !s->probe_cnt)
+        return -1;
+    s->ready = 1;
+    return 0;
+}
+
+static uint32_t fz_xs(uint32_t *x)
+{
+    uint32_t v = *x;
+    v ^= v << 13;
+    v ^= v >> 17;
+    v ^= v << 5;
+    *x = v ? v : 0x9E3779B9u;
+    return *x;
+}
+
+static uint16_t fz_canary_word(size_t i)
+{
+    return (uint16_t)(0xA55Au ^ (uint16_t)(i * 0x9E37u));
+}
+
+/* Fill texels and palette into guarded memory; point c->tex at them. */
+static void fz_place_texture(fz_state *s, fz_case *c)
+{
+    fxl_texture_t *t = &c->tex;
+    uint32_t bpp = t->format == FXL_TEXFMT_RGB565 ? 2u : 1u, L, texels = 0, lw, lh, nl;
+    size_t bytes, i;
+    uint32_t x = c->tex_seed | 1u;
+    uint8_t *dst;
+
+    /* Bytes of the chain the descriptor describes (levels as given, at
+     * most a full chain; invalid descriptors get a full chain of memory). */
+    lw = t->log2_w > FXL_TEX_MAX_LOG2 ? 0u : t->log2_w;
+    lh = t->log2_h > FXL_TEX_MAX_LOG2 ? 0u : t->log2_h;
+    nl = t->levels;
+    if (nl == 0 || nl > 1u + (lw > lh ? lw : lh))
+        nl = 1u + (lw > lh ? lw : lh);
+    for (L = 0; L < nl; L++)
+        texels += 1u << ((lw > L ? lw - L : 0u) + (lh > L ? lh - L : 0u));
+    bytes = (size_t)texels * bpp;
+    if (bytes > s->texmem.bytes)
+        bytes = s->texmem.bytes;
+    dst = c->tex_at_start ? s->texmem.base : s->texmem.base + s->texmem.bytes - bytes;
+    for (i = 0; i < bytes; i++)
+        dst[i] = (uint8_t)(fz_xs(&x) >> 24);
+    /* Make the key occur so keyed paths run. */
+    if ((t->flags & FXL_TEXF_KEY) && bytes >= bpp) {
+        for (i = 0; i + bpp <= bytes; i += bpp * (1u + (fz_xs(&x) & 7u))) {
+            if (bpp == 2u) {
+                uint16_t k = t->key;
+                memcpy(dst + i, &k, 2);
+            } else {
+                dst[i] = (uint8_t)t->key;
+            }
+        }
+    }
+    t->texels = dst;
+    if (t->format == FXL_TEXFMT_I8 && !c->pal_null) {
+        uint16_t *pal = (uint16_t *)(s->palmem.base + s->palmem.bytes - 512u);
+        for (i = 0; i < 256; i++)
+            pal[i] = (uint16_t)(fz_xs(&x) >> 16);
+        t->palette = pal;
+    } else {
+        t->palette = NULL;
+    }
+}
+
+/* Set up a target over buf (FZ_CANARY words in) the way a caller would,
+ * then apply the raw fields so invalid structs reach the core too. */
+static void fz_make_target(const fz_case *c, fxl_target_t *t, uint16_t *buf, uint16_t *depth)
+{
+    memset(t, 0, sizeof *t);
+    t->pixels = buf + FZ_CANARY;
+    t->depth = depth ? depth + FZ_CANARY : NULL;
+    t->width = c->w;
+    t->height = c->h;
+    t->stride = c->stride;
+    t->origin_x = c->origin_x;
+    t->origin_y = c->origin_y;
+    t->clip = c->clip;
+    t->format = (fxl_pixfmt_t)c->format;
+}
+
+static void fz_fill(const fz_case *c, const fz_state *s, uint16_t *pix, uint16_t bg, uint16_t *dep)
+{
+    size_t n = (size_t)c->stride * (size_t)c->h, i;
+    for (i = 0; i < FZ_CANARY; i++) {
+        pix[i] = fz_canary_word(i);
+        pix[FZ_CANARY + n + i] = fz_canary_word(i + 77u);
+    }
+    for (i = 0; i < n; i++)
+        pix[FZ_CANARY + i] = bg;
+    if (dep)
+        memcpy(dep, s->dep_init, (n + 2u * FZ_CANARY) * 2u);
+}
+
+static int fz_in_clip(const fz_case *c, int32_t col, int32_t row)
+{
+    int32_t fx = col + c->origin_x, fy = row + c->origin_y;
+    return col < c->w && fx >= c->clip.x0 && fx < c->clip.x1 && fy >= c->clip.y0 && fy < c->clip.y1;
+}
+
+#define FZ_FAIL(...) do { snprintf(msg, FZ_MSG, __VA_ARGS__); return 1; } while (0)
+
+/* Run one decoded case. Returns 0 when every check holds, 1 with a message
+ * in msg (FZ_MSG bytes) otherwise. */
+static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
+{
+    fxl_target_t ta, tb;
+    fxl_stats_t sa, sb, sp;
+    fxl_status_t st_a, st_b, st_p;
+    uint32_t allowed, written = 0, covered = 0;
+    size_t n = (size_t)c->stride * (size_t)c->h, i;
+    int32_t row, col;
+    int need_equal;
+    long det;
+
+    msg[0] = 0;
+    memset(out, 0, sizeof *out);
+    if (c->has_tex)
+        fz_place_texture(s, c);
+    if (c->has_depth) {
+        uint32_t x = c->depth_init | 0x10000u;
+        for (i = 0; i < n + 2u * FZ_CANARY; i++)
+            s->dep_init[i] = c->depth_rand ? (uint16_t)(fz_xs(&x) >> 16) : c->depth_init;
+        for (i = 0; i < FZ_CANARY; i++) {
+            s->dep_init[i] = fz_canary_word(i + 5u);
+            s->dep_init[FZ_CANARY + n + i] = fz_canary_word(i + 99u);
+        }
+    }
+    fz_fill(c, s, s->pix_a, 0x0000u, c->has_depth ? s->dep_a : NULL);
+    fz_fill(c, s, s->pix_b, 0xFFFFu, c->has_depth ? s->dep_b : NULL);
+    fz_make_target(c, &ta, s->pix_a, c->has_depth ? s->dep_a : NULL);
+    fz_make_target(c, &tb, s->pix_b, c->has_depth ? s->dep_b : NULL);
+
+    memset(&sa, 0, sizeof sa);
+    memset(&sb, 0, sizeof sb);
+    st_a = fxl_draw_triangle(&ta, &c->draw, c->v, &sa);
+    st_b = fxl_draw_triangle(&tb, &c->draw, c->v, &sb);
+    out->status = st_a;
+
+    /* 2: canaries */
+    for (i = 0; i < FZ_CANARY; i++) {
+        if (s->pix_a[i] != fz_canary_word(i) || s->pix_b[i] != fz_canary_word(i))
+            FZ_FAIL("canary before pixels overwritten (word %d)", (int)i - FZ_CANARY);
+        if (s->pix_a[FZ_CANARY + n + i] != fz_canary_word(i + 77u) ||
+            s->pix_b[FZ_CANARY + n + i] != fz_canary_word(i + 77u))
+            FZ_FAIL("canary after pixels overwritten (word %d past the end)", (int)i);
+        if (c->has_depth && (s->dep_a[i] != s->dep_init[i] || s->dep_a[FZ_CANARY + n + i] != s->dep_init[FZ_CANARY + n + i] ||
+                             s->dep_b[i] != s->dep_init[i] || s->dep_b[FZ_CANARY + n + i] != s->dep_init[FZ_CANARY + n + i]))
+            FZ_FAIL("depth canary overwritten (word %d)", (int)i);
+    }
+    /* 1: status */
+    if (st_a != st_b)
+        FZ_FAIL("nondeterministic status: %s then %s", fxl_status_name(st_a), fxl_status_name(st_b));
+    allowed = fz_expected_errors(c);
+    if (allowed == 0 && st_a != FXL_OK)
+        FZ_FAIL("status %s for a valid case", fxl_status_name(st_a));
+    if (allowed != 0 && (st_a == FXL_OK || (fz_status_bit(st_a) & allowed) == 0))
+        FZ_FAIL("status %s, expected one of%s%s%s", fxl_status_name(st_a), (allowed & FZ_E_ARG) ? " ARG" : "",
+                (allowed & FZ_E_RANGE) ? " RANGE" : "", (allowed & FZ_E_UNSUP) ? " UNSUPPORTED" : "");
+
+    /* 3, 4: written pixels, clip, determinism */
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->stride; col++) {
+            size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+            uint16_t a = s->pix_a[k], b = s->pix_b[k];
+            int wa = a != 0x0000u, wb = b != 0xFFFFu;
+            if (!wa && !wb)
+                continue;
+            if (st_a != FXL_OK)
+                FZ_FAIL("pixel (%d,%d) written although the draw failed with %s", col, row, fxl_status_name(st_a));
+            if (!fz_in_clip(c, col, row))
+                FZ_FAIL("pixel (%d,%d) (frame %d,%d) written outside the clip [%d,%d)x[%d,%d)", col, row,
+                        col + c->origin_x, row + c->origin_y, c->clip.x0, c->clip.x1, c->clip.y0, c->clip.y1);
+            /* One render kept its background: the drawn value equals it. */
+            if ((wa && wb && a != b) || (!wa && b != 0x0000u) || (!wb && a != 0xFFFFu))
+                FZ_FAIL("pixel (%d,%d) nondeterministic: %04X vs %04X", col, row, a, b);
+            written++;
+        }
+    if (c->has_depth)
+        for (i = 0; i < n; i++) {
+            size_t k = FZ_CANARY + i;
+            int32_t rr = (int32_t)(i / (size_t)c->stride), cc = (int32_t)(i % (size_t)c->stride);
+            if (s->dep_a[k] != s->dep_b[k])
+                FZ_FAIL("depth (%d,%d) nondeterministic: %04X vs %04X", cc, rr, s->dep_a[k], s->dep_b[k]);
+            if (s->dep_a[k] != s->dep_init[k]) {
+                if (st_a != FXL_OK || !fz_in_clip(c, cc, rr))
+                    FZ_FAIL("depth (%d,%d) written %s", cc, rr, st_a != FXL_OK ? "on error" : "outside the clip");
+                if (!(c->draw.depth & FXL_DEPTH_WRITE))
+                    FZ_FAIL("depth (%d,%d) written without FXL_DEPTH_WRITE", cc, rr);
+            }
+        }
+    out->written = written;
+    if (st_a != FXL_OK)
+        return 0;
+
+    /* 6: stats */
+    if (sa.pixels != written || sb.pixels != written)
+        FZ_FAIL("stats.pixels %u/%u but %u pixels written", (unsigned)sa.pixels, (unsigned)sb.pixels, (unsigned)written);
+    if (sa.triangles != 1)
+        FZ_FAIL("stats.triangles %u", (unsigned)sa.triangles);
+    {
+        int64_t X[3], Y[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            X[k] = ref_snap(c->v[k].x);
+            Y[k] = ref_snap(c->v[k].y);
+        }
+        det = ((X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0])) != 0;
+        if (!det && sa.culled_degenerate != 1)
+            FZ_FAIL("zero-area triangle not counted as culled_degenerate");
+        if (!det && written)
+            FZ_FAIL("zero-area triangle wrote %u pixels", (unsigned)written);
+    }
+
+    /* 5: coverage */
+    {
+        int32_t cx0 = c->clip.x0, cy0 = c->clip.y0, cw = c->clip.x1 - c->clip.x0, ch = c->clip.y1 - c->clip.y0;
+        memset(s->cover, 0, (size_t)c->w * (size_t)c->h);
+        if (cw > 0 && ch > 0) {
+            /* the mask over the clip, scattered to buffer positions */
+            uint8_t *m = s->probe_cnt;
+            if (ref_coverage_mask(c->v, cx0, cy0, cw, ch, m) < 0)
+                FZ_FAIL("reference coverage failed");
+            for (row = 0; row < ch; row++)
+                for (col = 0; col < cw; col++)
+                    if (m[(size_t)row * (size_t)cw + (size_t)col]) {
+                        s->cover[(size_t)(row + cy0 - c->origin_y) * (size_t)c->w + (size_t)(col + cx0 - c->origin_x)] = 1;
+                        covered++;
+                    }
+        }
+    }
+    out->covered = covered;
+    need_equal = !(c->has_depth && (c->draw.depth & FXL_DEPTH_TEST)) &&
+                 !(c->draw.texture && (c->tex.flags & FXL_TEXF_KEY) && c->draw.texenv != FXL_TEXENV_DECAL);
+    out->checked_equal = need_equal;
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->w; col++) {
+            size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+            int w = s->pix_a[k] != 0x0000u || s->pix_b[k] != 0xFFFFu;
+            int cv = s->cover[(size_t)row * (size_t)c->w + (size_t)col];
+            if (w && !cv)
+                FZ_FAIL("pixel (%d,%d) (frame %d,%d) drawn but not covered by the exact rule", col, row,
+                        col + c->origin_x, row + c->origin_y);
+            if (need_equal && cv && !w)
+                FZ_FAIL("pixel (%d,%d) (frame %d,%d) covered by the exact rule but not drawn", col, row,
+                        col + c->origin_x, row + c->origin_y);
+        }
+
+    /* 5b: the probe sees every covered pixel once */
+    fz_fill(c, s, s->pix_a, 0x0000u, c->has_depth ? s->dep_a : NULL);
+    fz_make_target(c, &ta, s->pix_a, c->has_depth ? s->dep_a : NULL);
+    memset(s->probe_cnt, 0, (size_t)c->w * (size_t)c->h);
+    fz_probe_ctx.base = ta.pixels;
+    fz_probe_ctx.stride = c->stride;
+    fz_probe_ctx.w = c->w;
+    fz_probe_ctx.h = c->h;
+    fz_probe_ctx.ox = c->origin_x;
+    fz_probe_ctx.oy = c->origin_y;
+    fz_probe_ctx.clip = c->clip;
+    fz_probe_ctx.cnt = s->probe_cnt;
+    fz_probe_ctx.bad = 0;
+    memset(&sp, 0, sizeof sp);
+    st_p = fxl__draw_triangle_with(&ta, &c->draw, c->v, &sp, fz_probe_seg);
+    if (st_p != FXL_OK)
+        FZ_FAIL("probe run status %s", fxl_status_name(st_p));
+    if (fz_probe_ctx.bad)
+        FZ_FAIL("segment outside the buffer or clip (offset %ld)", fz_probe_ctx.bad_idx);
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->w; col++) {
+            int pc = s->probe_cnt[(size_t)row * (size_t)c->w + (size_t)col];
+            int cv = s->cover[(size_t)row * (size_t)c->w + (size_t)col];
+            if (pc != cv)
+                FZ_FAIL("span loops visit pixel (%d,%d) (frame %d,%d) %d times, exact coverage %d", col, row,
+                        col + c->origin_x, row + c->origin_y, pc, cv);
+        }
+    return 0;
+}
+
+/* Print the case as C initialisers (for a regression test). */
+static void fz_print_case(FILE *f, const fz_case *c)
+{
+    int i;
+    fprintf(f, "  target %dx%d stride %d format %d origin (%d,%d) clip [%d,%d)x[%d,%d) depth %s init %04X%s\n", c->w,
+            c->h, c->stride, c->format, c->origin_x, c->origin_y, c->clip.x0, c->clip.x1, c->clip.y0, c->clip.y1,
+            c->has_depth ? "yes" : "no", c->depth_init, c->depth_rand ? " (random)" : "");
+    if (c->draw.texture)
+        fprintf(f, "  texture fmt %d %dx%d (log2) levels %d wrap %d/%d flags %02X key %04X border %04X%s%s\n",
+                c->tex.format, c->tex.log2_w, c->tex.log2_h, c->tex.levels, c->tex.wrap_u, c->tex.wrap_v, c->tex.flags,
+                c->tex.key, c->tex.border, c->tex.palette ? "" : " no-palette", c->tex_at_start ? " at-start" : "");
+    fprintf(f, "  draw persp %d filter %d mip %d lod %d texenv %d shade %d depth %d color %04X bias %d budget %d\n",
+            c->draw.persp, c->draw.filter, c->draw.mip, c->draw.lod, c->draw.texenv, c->draw.shade, c->draw.depth,
+            c->draw.color, c->draw.lod_bias_q8, (int)c->draw.auto_budget);
+    for (i = 0; i < 3; i++)
+        fprintf(f, "  v%d = {%ld, %ld, %luu, %ld, %ld, 0x%04X}  /* x %.4f y %.4f px */\n", i, (long)c->v[i].x,
+                (long)c->v[i].y, (unsigned long)c->v[i].inv_w, (long)c->v[i].u, (long)c->v[i].v, c->v[i].color,
+                c->v[i].x / 65536.0, c->v[i].y / 65536.0);
+}
+
+#endif
