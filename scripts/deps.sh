@@ -7,7 +7,8 @@
 #   host      cmake (>= 3.20), a C compiler, make, pkg-config, libpng-dev
 #   firmware  cmake, make, gcc-arm-none-eabi, libnewlib-arm-none-eabi
 #   cppcheck  cppcheck
-#   optional  g++ (C++ check of the public headers), qemu-system-arm,
+#   optional  g++ (C++ check of the public headers), clang (libFuzzer,
+#             determinism across compilers), qemu-system-arm,
 #             gnuplot-nox, valgrind: installed one by one when possible,
 #             never an error
 #
@@ -81,6 +82,8 @@ check_optional() {
     have qemu-system-arm || optional_missing+=(qemu-system-arm)
     have gnuplot || optional_missing+=(gnuplot-nox)
     have valgrind || optional_missing+=(valgrind)
+    # clang: libFuzzer target and the clang -O2 determinism build (issue 5)
+    have clang || optional_missing+=(clang)
 }
 
 for group in "${groups[@]}"; do
