@@ -92,6 +92,8 @@ typedef struct fxl__tri {
     const fxl__plane_t *pl[FXL__NPLANES];
     int64_t gpx[FXL__NPLANES];          /* per pixel along x, modular */
     int64_t gpxN[FXL__NPLANES];         /* per full segment */
+    int persp_eb[2];                    /* fxl__persp_eb of u, v (persp.h) */
+    uint8_t fast_id;                    /* span.c: specialised span function, 0 none */
 
     fxl_stats_t *stats;
 } fxl__tri_t;

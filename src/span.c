@@ -8,6 +8,7 @@
  * segment ends on the last pixel of the span, which is inside the triangle,
  * so no correction point is ever extrapolated outside it.
  */
+#include <stddef.h>
 #include "raster_int.h"
 #include "texel.h"
 #include "persp.h"
@@ -43,52 +44,66 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
     return compact565(lerp565x(top, bot, fv));
 }
 
-/* ---- specialised loops ----------------------------------------------------- */
-#define FXL_T_NAME seg_point
-#define FXL_T_BILINEAR 0
-#define FXL_T_DEPTH 0
-#define FXL_T_SWAP 0
-#include "span_fast.h"
-#define FXL_T_NAME seg_point_swap
-#define FXL_T_BILINEAR 0
-#define FXL_T_DEPTH 0
-#define FXL_T_SWAP 1
-#include "span_fast.h"
-#if FXL_HAVE_DEPTH
-#define FXL_T_NAME seg_point_z
-#define FXL_T_BILINEAR 0
-#define FXL_T_DEPTH 1
-#define FXL_T_SWAP 0
-#include "span_fast.h"
-#define FXL_T_NAME seg_point_z_swap
-#define FXL_T_BILINEAR 0
-#define FXL_T_DEPTH 1
-#define FXL_T_SWAP 1
-#include "span_fast.h"
-#endif
 #if FXL_HAVE_BILINEAR
-#define FXL_T_NAME seg_bilin
-#define FXL_T_BILINEAR 1
-#define FXL_T_DEPTH 0
-#define FXL_T_SWAP 0
-#include "span_fast.h"
-#define FXL_T_NAME seg_bilin_swap
-#define FXL_T_BILINEAR 1
-#define FXL_T_DEPTH 0
-#define FXL_T_SWAP 1
-#include "span_fast.h"
-#if FXL_HAVE_DEPTH
-#define FXL_T_NAME seg_bilin_z
-#define FXL_T_BILINEAR 1
-#define FXL_T_DEPTH 1
-#define FXL_T_SWAP 0
-#include "span_fast.h"
-#define FXL_T_NAME seg_bilin_z_swap
-#define FXL_T_BILINEAR 1
-#define FXL_T_DEPTH 1
-#define FXL_T_SWAP 1
-#include "span_fast.h"
-#endif
+/* ---- bilinear footprint of the fast loops -----------------------------------
+ * bl_sample returns the filtered colour in expanded form, equal bit for bit
+ * to fxl__bilerp565 before its compact565:
+ * - lerp565x(a, b, f) = (a (32 - f) + b f + R) >> 5 is computed as
+ *   (32 a + R + (b - a) f) >> 5 in uint32: the same integer modulo 2^32,
+ *   and the true value of every lane sum is below 2^32 (63 * 32 + 16 < 2^11
+ *   at bit 21), so the bits are identical; per row it is one multiply-add
+ *   with 32 a + R and b - a computed once per footprint.
+ * - the 2x2 footprint is fetched and expanded only when its key (the row
+ *   bits of vv, the column bits of uu moved below bit 16) changes; on a
+ *   magnified texture neighbouring pixels mostly share it (4 loads and 4
+ *   expansions saved). Bit 15 of a key is always 0 (lw <= 15), so ~0 means
+ *   "none".
+ * Coordinates uu = u - 1/2 texel, vv = v - 1/2 texel (q16): the weights are
+ * bits 11..15 (constant shifts: UBFX on a Cortex-M4), row and column the
+ * bits from 16 (the row times the width only on a new footprint). */
+typedef struct bl {
+    const uint16_t *tex;
+    uint32_t mu16, mv16;          /* column and row bits of uu, vv */
+    uint32_t mu, mv, lw;          /* mask_u, mask_v, log2 width */
+    uint32_t key;
+    uint32_t a0, d0, a1, d1;      /* 32 e00 + R, e10 - e00; the same for row 1 */
+} bl_t;
+
+#define FXL_RND565 0x02008010u    /* 16 in every lane: round to nearest */
+
+static inline void bl_init(bl_t *b, const fxl__level_t *lv)
+{
+    b->tex = (const uint16_t *)lv->texels;
+    b->mu = lv->mask_u;
+    b->mv = lv->mask_v;
+    b->lw = lv->log2_w;
+    b->mu16 = b->mu << 16;
+    b->mv16 = b->mv << 16;
+    b->key = 0xFFFFFFFFu;
+    b->a0 = b->d0 = b->a1 = b->d1 = 0;
+}
+
+static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv)
+{
+    const uint32_t key = (vv & b->mv16) | ((uu & b->mu16) >> 16);
+    const uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
+    uint32_t top, bot;
+
+    if (key != b->key) {
+        const uint32_t c0 = (uu >> 16) & b->mu, c1 = (c0 + 1u) & b->mu;
+        const uint32_t rv = (vv >> 16) & b->mv;
+        const uint16_t *t0 = b->tex + (rv << b->lw), *t1 = b->tex + (((rv + 1u) & b->mv) << b->lw);
+        const uint32_t e00 = expand565(t0[c0]), e01 = expand565(t1[c0]);
+        b->key = key;
+        b->a0 = (e00 << 5) + FXL_RND565;
+        b->d0 = expand565(t0[c1]) - e00;
+        b->a1 = (e01 << 5) + FXL_RND565;
+        b->d1 = expand565(t1[c1]) - e01;
+    }
+    top = ((b->a0 + b->d0 * fu) >> 5) & 0x07E0F81Fu;
+    bot = ((b->a1 + b->d1 * fu) >> 5) & 0x07E0F81Fu;
+    return (((top << 5) + FXL_RND565 + (bot - top) * fv) >> 5) & 0x07E0F81Fu;
+}
 #endif
 
 #if FXL_HAVE_GENERIC
@@ -212,39 +227,6 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
 }
 #endif /* FXL_HAVE_GENERIC */
 
-fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
-{
-    const fxl_draw_t *d = tri->draw;
-    const fxl_texture_t *t = tri->tex;
-    int zmode = tri->target->depth && (tri->depth_test || tri->depth_write);
-    int fast = t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT &&
-               t->wrap_v == FXL_WRAP_REPEAT && !(t->flags & FXL_TEXF_KEY) &&
-               d->texenv == FXL_TEXENV_REPLACE && !tri->mip_linear && t->log2_w + t->log2_h <= 16 &&
-               (!zmode || (tri->depth_test && tri->depth_write));
-
-    if (fast) {
-#if FXL_HAVE_BILINEAR
-        if (d->filter == FXL_FILTER_BILINEAR) {
-#if FXL_HAVE_DEPTH
-            if (zmode)
-                return tri->swap ? seg_bilin_z_swap : seg_bilin_z;
-#endif
-            return tri->swap ? seg_bilin_swap : seg_bilin;
-        }
-#endif
-#if FXL_HAVE_DEPTH
-        if (zmode)
-            return tri->swap ? seg_point_z_swap : seg_point_z;
-#endif
-        return tri->swap ? seg_point_swap : seg_point;
-    }
-#if FXL_HAVE_GENERIC
-    return seg_generic;
-#else
-    return 0;
-#endif
-}
-
 /* ---- correction points ------------------------------------------------------ */
 
 #define PQ FXL__PQ
@@ -304,21 +286,6 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
             int64_t c = fxl__persp(pv[PA + FXL__AR + i], &rc, tri->a_shift[FXL__AR + i]);
             pt->a[FXL__AR + i] = (uint32_t)(c < 0 ? 0 : (c > cmax[i] ? cmax[i] : c));
         }
-    }
-}
-
-void fxl__span_setup(fxl__tri_t *tri)
-{
-    int i, k = tri->seg_log2 < 0 ? 0 : tri->seg_log2;
-    tri->pl[PQ] = &tri->q;
-    tri->pl[PZ] = &tri->z;
-    for (i = 0; i < FXL__NATTR; i++)
-        tri->pl[PA + i] = &tri->a[i];
-    tri->np = tri->has_color ? NPLANES : (tri->has_uv ? PA + 2 : PA);
-    for (i = 0; i < NPLANES; i++) {
-        uint64_t g = (uint64_t)tri->pl[i]->gx * FXL__ONE;   /* per pixel, modular */
-        tri->gpx[i] = (int64_t)g;
-        tri->gpxN[i] = (int64_t)(g << k);
     }
 }
 
@@ -431,10 +398,13 @@ static inline int32_t log2_len_q8(sf_t a, sf_t b)
 
 /* LOD (q8) at a correction point: log2 of the longer of the texel-space
  * derivative vectors along x and y, at level 0. */
-static int32_t lod_at(const fxl__tri_t *tri, const int64_t pv[NPLANES], const point_t *p)
+#if defined(__GNUC__)
+__attribute__((noinline))   /* once per segment; inlined into every walk it is ~2 KB each */
+#endif
+static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     fxl__recip_t rc;
-    int64_t q = pv[PQ] < tri->q_min ? tri->q_min : pv[PQ];
+    int64_t q = qv < tri->q_min ? tri->q_min : qv;
     int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
     int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
     int64_t qx = tri->gpx[PQ], qy = (int64_t)((uint64_t)tri->q.gy * FXL__ONE);
@@ -444,14 +414,402 @@ static int32_t lod_at(const fxl__tri_t *tri, const int64_t pv[NPLANES], const po
     int32_t lx, ly;
 
     fxl__recip(q, &rc);
-    lx = log2_len_q8(deriv(sux, shu, p->u64, qx, &rc), deriv(svx, shv, p->v64, qx, &rc));
-    ly = log2_len_q8(deriv(suy, shu, p->u64, qy, &rc), deriv(svy, shv, p->v64, qy, &rc));
+    lx = log2_len_q8(deriv(sux, shu, u64, qx, &rc), deriv(svx, shv, v64, qx, &rc));
+    ly = log2_len_q8(deriv(suy, shu, u64, qy, &rc), deriv(svy, shv, v64, qy, &rc));
     return lx > ly ? lx : ly;
 }
 #endif
 
-void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
-                    int32_t cl, int32_t cr)
+/* ---- the fast path ----------------------------------------------------------
+ * RGB565, repeat on both axes, no key, REPLACE (fast_id_of). The walk is the
+ * generic one (fxl__draw_span below) with everything that cannot occur
+ * there removed; every value is bit-identical to it:
+ * - coordinates are modular uint32 (repeat), so coord_diff is the uint32
+ *   difference read as int32 and a step is its magnitude shifted or divided
+ *   (truncation toward zero), all in 32 bits: the last segment's division
+ *   is one UDIV on a Cortex-M4 instead of a 64-bit library division;
+ * - the steps of repeat coordinates lie in [-2^31, 2^31), so the int32
+ *   saturation of shift_step never acts and a level shift is a floor shift
+ *   of the int32 bit pattern;
+ * - the exponents of the two divisions are precomputed per triangle. */
+/* The specialised span walks (one per variant, the pixel loop inlined) are
+ * what makes the fast path fast, and ~20 KB of Thumb code for all sixteen.
+ * Size-optimised builds (-Os) keep only the pixel loops, reached through
+ * the generic walk and the seg functions, as small as before; the output is
+ * the same bit for bit either way. Override with -DFXL__FAST_SPANS=0/1. */
+#ifndef FXL__FAST_SPANS
+#if defined(__OPTIMIZE_SIZE__)
+#define FXL__FAST_SPANS 0
+#else
+#define FXL__FAST_SPANS 1
+#endif
+#endif
+
+/* A level prepared for the point loops. The texel index has two
+ * formulations (FXL__IDX); with v carried as V = v << lw, row * width and
+ * the column sit in disjoint bit fields above bit 16 (lw + lh <= 16):
+ * - masks: ((V & mv16) | (U & mu16)) >> 16 with U = u. Best where a shift
+ *   by a register is not free (x86-64: CL only, and the depth loop needs
+ *   every register; Thumb-1: two-operand).
+ * - top: (U >> shu) + ((V & mv16) >> 16) with U = u << (16 - lw), whose
+ *   top lw bits are the column already wrapped. On Thumb-2 that is LSR, AND
+ *   and ADD with LSR #16: one instruction less per pixel. A 1-texel-wide
+ *   level has column 0: U = 0 (and shu any valid shift). */
+#if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB >= 2
+#define FXL__IDX_TOPU 1
+#define FXL__IDX(U, V, shu, mu16, mv16) (((U) >> (shu)) + (((V) & (mv16)) >> 16))
+#else
+#define FXL__IDX_TOPU 0
+#define FXL__IDX(U, V, shu, mu16, mv16) ((((V) & (mv16)) | ((U) & (mu16))) >> 16)
+#endif
+
+typedef struct fl {
+    const uint16_t *tex;
+    uint32_t lw, shu;
+    uint32_t mu16, mv16;
+} fl_t;
+
+static inline void fl_init(fl_t *f, const fxl__level_t *lv)
+{
+    f->tex = (const uint16_t *)lv->texels;
+    f->lw = lv->log2_w;
+    f->shu = f->lw ? 32u - f->lw : 31u;
+    f->mu16 = lv->mask_u << 16;
+    f->mv16 = (lv->mask_v << f->lw) << 16;
+}
+
+/* fast_correct: FXL__ALWAYS_INLINE (persp.h), it runs twice per walk. */
+
+typedef struct fxl__pt {
+    uint32_t u, v;               /* level-0 texel q16, modular */
+    uint32_t z;                  /* inv_w, u0.32 */
+#if FXL_HAVE_MIPMAP
+    int64_t u64, v64;            /* before wrapping, for the LOD */
+#endif
+} fxl__pt_t;
+
+/* pv: q, z, u, v plane values at the correction point. */
+static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, const int64_t pv[4], fxl__pt_t *pt)
+{
+    fxl__recip_t rc;
+    int64_t u, v, q = pv[0];
+
+    /* sat_u32(z >> PF): a negative value (rounding at a sliver) gives 0 */
+    pt->z = pv[1] < 0 ? 0u : sat_u32((int64_t)((uint64_t)pv[1] >> FXL__PF));
+    if (q < tri->q_min)
+        q = tri->q_min;
+    fxl__recip(q, &rc);
+    if (tri->stats)
+        tri->stats->divisions++;
+    u = fxl__persp_e(pv[2], &rc, tri->persp_eb[0]);
+    v = fxl__persp_e(pv[3], &rc, tri->persp_eb[1]);
+    pt->u = (uint32_t)(uint64_t)u;
+    pt->v = (uint32_t)(uint64_t)v;
+#if FXL_HAVE_MIPMAP
+    pt->u64 = u;
+    pt->v64 = v;
+#endif
+}
+
+/* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the
+ * result is the int32 bit pattern. A negative d has magnitude 0 - d <= 2^31. */
+static inline uint32_t step_pow2_u32(uint32_t d, int k)
+{
+    return (d & 0x80000000u) ? 0u - ((0u - d) >> k) : d >> k;
+}
+
+/* step_of(coord_diff(b, a), div) likewise; div = 0 gives 0. */
+static inline uint32_t step_div_u32(uint32_t d, uint32_t div)
+{
+    if (div == 0u)
+        return 0u;
+    return (d & 0x80000000u) ? 0u - (0u - d) / div : d / div;
+}
+
+/* sat_i32 of the signed step of z1 - z0 (|z1 - z0| < 2^32), as bits. */
+static inline uint32_t sat_step_bits(uint32_t mag, int neg)
+{
+    if (neg)
+        return mag >= 0x80000000u ? 0x80000000u : 0u - mag;
+    return mag > 0x7FFFFFFFu ? 0x7FFFFFFFu : mag;
+}
+
+static inline uint32_t step_z_pow2(uint32_t z1, uint32_t z0, int k)
+{
+    return z1 >= z0 ? sat_step_bits((z1 - z0) >> k, 0) : sat_step_bits((z0 - z1) >> k, 1);
+}
+
+static inline uint32_t step_z_div(uint32_t z1, uint32_t z0, uint32_t div)
+{
+    if (div == 0u)
+        return 0u;
+    return z1 >= z0 ? sat_step_bits((z1 - z0) / div, 0) : sat_step_bits((z0 - z1) / div, 1);
+}
+
+#if FXL_HAVE_MIPMAP
+/* shift_step of an int32 step (no saturation needed), as bits. */
+static inline uint32_t shift_step_u32(uint32_t d, int level)
+{
+    return (d & 0x80000000u) ? ~(~d >> level) : d >> level;
+}
+
+static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_t *p0)
+{
+    return lod_at(tri, q0, p0->u64, p0->v64);
+}
+#endif
+
+typedef void (*fxl__span_fast_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                   int32_t cr);
+
+#define FXL_T_LOOP loop_point
+#define FXL_T_SPAN span_point
+#define FXL_T_SEG seg_point
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_point_swap
+#define FXL_T_SPAN span_point_swap
+#define FXL_T_SEG seg_point_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_LOOP loop_point_z
+#define FXL_T_SPAN span_point_z
+#define FXL_T_SEG seg_point_z
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_point_z_swap
+#define FXL_T_SPAN span_point_z_swap
+#define FXL_T_SEG seg_point_z_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#if FXL_HAVE_BILINEAR
+#define FXL_T_LOOP loop_bilin
+#define FXL_T_SPAN span_bilin
+#define FXL_T_SEG seg_bilin
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_bilin_swap
+#define FXL_T_SPAN span_bilin_swap
+#define FXL_T_SEG seg_bilin_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_LOOP loop_bilin_z
+#define FXL_T_SPAN span_bilin_z
+#define FXL_T_SEG seg_bilin_z
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_bilin_z_swap
+#define FXL_T_SPAN span_bilin_z_swap
+#define FXL_T_SEG seg_bilin_z_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#endif
+
+#if FXL_HAVE_MIPMAP && FXL__FAST_SPANS
+/* Two levels blended (point-mip-linear and trilinear). */
+#define FXL_T_LOOP loop_pml
+#define FXL_T_LOOP1 loop_point
+#define FXL_T_SPAN span_pml
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_pml_swap
+#define FXL_T_LOOP1 loop_point_swap
+#define FXL_T_SPAN span_pml_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_LOOP loop_pml_z
+#define FXL_T_LOOP1 loop_point_z
+#define FXL_T_SPAN span_pml_z
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_pml_z_swap
+#define FXL_T_LOOP1 loop_point_z_swap
+#define FXL_T_SPAN span_pml_z_swap
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#if FXL_HAVE_BILINEAR
+#define FXL_T_LOOP loop_tri
+#define FXL_T_LOOP1 loop_bilin
+#define FXL_T_SPAN span_tri
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_tri_swap
+#define FXL_T_LOOP1 loop_bilin_swap
+#define FXL_T_SPAN span_tri_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#if FXL_HAVE_DEPTH
+#define FXL_T_LOOP loop_tri_z
+#define FXL_T_LOOP1 loop_bilin_z
+#define FXL_T_SPAN span_tri_z
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#include "span_fast.h"
+#define FXL_T_LOOP loop_tri_z_swap
+#define FXL_T_LOOP1 loop_bilin_z_swap
+#define FXL_T_SPAN span_tri_z_swap
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 1
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#include "span_fast.h"
+#endif
+#endif
+#endif
+
+/* Variant table, id = 1 + bilinear + 2 depth + 4 swap + 8 mip-linear; the
+ * seg column is what fxl__pick_seg_fn hands out for the id (seg_generic for
+ * the blended variants, as they had no specialised loop), and draw_span
+ * takes the span column only when the caller passed exactly that seg
+ * function (a measuring probe gets the generic walk). */
+#if FXL_HAVE_GENERIC
+#define SEG_GENERIC seg_generic
+#else
+#define SEG_GENERIC 0
+#endif
+#if FXL_HAVE_DEPTH
+#define IF_DEPTH(x) x
+#else
+#define IF_DEPTH(x) 0
+#endif
+#if FXL_HAVE_BILINEAR
+#define IF_BILIN(x) x
+#else
+#define IF_BILIN(x) 0
+#endif
+#if FXL_HAVE_MIPMAP && FXL__FAST_SPANS
+#define IF_MIP(x) x
+#else
+#define IF_MIP(x) 0
+#endif
+#if FXL__FAST_SPANS
+#define IF_SPANS(x) x
+#else
+#define IF_SPANS(x) 0
+#endif
+static const struct {
+    fxl__seg_fn seg;
+    fxl__span_fast_fn span;
+} fast_tab[17] = {
+    {0, IF_SPANS(0)},
+    {seg_point, IF_SPANS(span_point)},
+    {IF_BILIN(seg_bilin), IF_SPANS(IF_BILIN(span_bilin))},
+    {IF_DEPTH(seg_point_z), IF_SPANS(IF_DEPTH(span_point_z))},
+    {IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_SPANS(IF_BILIN(IF_DEPTH(span_bilin_z)))},
+    {seg_point_swap, IF_SPANS(span_point_swap)},
+    {IF_BILIN(seg_bilin_swap), IF_SPANS(IF_BILIN(span_bilin_swap))},
+    {IF_DEPTH(seg_point_z_swap), IF_SPANS(IF_DEPTH(span_point_z_swap))},
+    {IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_SPANS(IF_BILIN(IF_DEPTH(span_bilin_z_swap)))},
+    {IF_MIP(SEG_GENERIC), IF_SPANS(IF_MIP(span_pml))},
+    {IF_MIP(IF_BILIN(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_BILIN(span_tri)))},
+    {IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_DEPTH(span_pml_z)))},
+    {IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_SPANS(IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z))))},
+    {IF_MIP(SEG_GENERIC), IF_SPANS(IF_MIP(span_pml_swap))},
+    {IF_MIP(IF_BILIN(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_BILIN(span_tri_swap)))},
+    {IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_DEPTH(span_pml_z_swap)))},
+    {IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_SPANS(IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap))))},
+};
+
+static int fast_id_of(const fxl__tri_t *tri)
+{
+    const fxl_draw_t *d = tri->draw;
+    const fxl_texture_t *t = tri->tex;
+    int zmode = tri->target->depth && (tri->depth_test || tri->depth_write);
+    int id;
+
+    if (!(t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
+          !(t->flags & FXL_TEXF_KEY) && d->texenv == FXL_TEXENV_REPLACE && t->log2_w + t->log2_h <= 16 &&
+          (!zmode || (tri->depth_test && tri->depth_write))))
+        return 0;
+    id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) + (tri->swap ? 4 : 0) +
+         (tri->mip_linear ? 8 : 0);
+    return fast_tab[id].seg ? id : 0;
+}
+
+fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
+{
+    int id = fast_id_of(tri);
+    if (id)
+        return fast_tab[id].seg;
+    return SEG_GENERIC;
+}
+
+void fxl__span_setup(fxl__tri_t *tri)
+{
+    int i, k = tri->seg_log2 < 0 ? 0 : tri->seg_log2;
+    tri->pl[PQ] = &tri->q;
+    tri->pl[PZ] = &tri->z;
+    for (i = 0; i < FXL__NATTR; i++)
+        tri->pl[PA + i] = &tri->a[i];
+    tri->np = tri->has_color ? NPLANES : (tri->has_uv ? PA + 2 : PA);
+    /* planes past np are never read (correct, lod_at and the fast walk
+     * read q, z, u, v, and the colours only with has_color) */
+    for (i = 0; i < tri->np; i++) {
+        uint64_t g = (uint64_t)tri->pl[i]->gx * FXL__ONE;   /* per pixel, modular */
+        tri->gpx[i] = (int64_t)g;
+        tri->gpxN[i] = (int64_t)(g << k);
+    }
+    tri->fast_id = 0;
+    if (tri->has_uv) {
+        tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
+        tri->persp_eb[1] = fxl__persp_eb(tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
+        tri->fast_id = (uint8_t)fast_id_of(tri);
+    }
+}
+
+/* The generic walk: any attribute set, any seg function (or a probe). */
+static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
+                              int32_t cl, int32_t cr)
 {
     int64_t pv[NPLANES];
     const int32_t Yc = row * FXL__ONE + FXL__HALF;
@@ -516,7 +874,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
                 if (tri->lod_per_segment) {
-                    lod = lod_at(tri, pv0, &p0) + tri->draw->lod_bias_q8;
+                    lod = lod_at(tri, pv0[PQ], p0.u64, p0.v64) + tri->draw->lod_bias_q8;
                     if (lod < 0)
                         lod = 0;
                     if (lod > tri->lod_max_q8)
@@ -568,4 +926,15 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
         tri->stats->pixels += written;
         tri->stats->spans++;
     }
+}
+
+void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
+                    int32_t cl, int32_t cr)
+{
+    /* the caller's seg function is the one fxl__pick_seg_fn chose for this
+     * triangle: take the specialised walk */
+    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].span)
+        fast_tab[tri->fast_id].span(tri, row, xl, xr, cl, cr);
+    else
+        draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
