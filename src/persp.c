@@ -14,7 +14,7 @@
  */
 #include "raster_int.h"
 
-#if FXL_HAVE_MIPMAP
+#if FXL_HAVE_MIPMAP || FXL_HAVE_AUTO
 /* round(256 * log2(1 + i / 256)), i = 0..255. */
 static const uint8_t fxl__log2_frac_q8[256] = {
       0,   1,   3,   4,   6,   7,   9,  10,  11,  13,  14,  16,  17,  18,  20,  21,

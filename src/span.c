@@ -12,6 +12,7 @@
 #include "raster_int.h"
 #include "texel.h"
 #include "persp.h"
+#include "sfloat.h"
 
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
  * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
@@ -345,51 +346,18 @@ static inline int32_t shift_step(int64_t d, int level)
  * The terms span many octaves (a sliver's gradients, a far q), so they are
  * carried as m * 2^e with |m| < 2^31: a few integer operations, no floats,
  * ~2^-30 relative precision - far more than the 1/256 level LOD needs. */
-typedef struct sf {
-    int64_t m;
-    int e;
-} sf_t;
-
-static inline sf_t sf_make(int64_t m, int e)
-{
-    sf_t r;
-    uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
-    int bits = 64 - fxl__clz64_inline(a), sh = bits > 31 ? bits - 31 : 0;
-    r.m = fxl__asr64(m, sh);
-    r.e = e + sh;
-    return r;
-}
-
-static inline sf_t sf_mul(sf_t a, sf_t b)
-{
-    return sf_make(a.m * b.m, a.e + b.e);   /* |a.m * b.m| < 2^62 */
-}
-
-/* a + sign * b */
-static inline sf_t sf_addsub(sf_t a, sf_t b, int sign)
-{
-    int d = a.e - b.e;
-    if (b.m == 0 || d > 31)
-        return a;
-    if (a.m == 0 || d < -31)
-        return sf_make(sign * b.m, b.e);
-    if (d >= 0)
-        return sf_make(a.m * ((int64_t)1 << d) + sign * b.m, b.e);
-    return sf_make(a.m + sign * b.m * ((int64_t)1 << -d), a.e);
-}
-
 /* (S_g 2^sh - u q_g) / q for one gradient g, in q16 texels per pixel. */
-static inline sf_t deriv(int64_t s_g, int sh, int64_t u, int64_t q_g, const fxl__recip_t *rc)
+static inline fxl__sf_t deriv(int64_t s_g, int sh, int64_t u, int64_t q_g, const fxl__recip_t *rc)
 {
-    sf_t num = sf_addsub(sf_make(s_g, sh), sf_mul(sf_make(u, 0), sf_make(q_g, 0)), -1);
+    fxl__sf_t num = fxl__sf_addsub(fxl__sf_make(s_g, sh), fxl__sf_mul(fxl__sf_make(u, 0), fxl__sf_make(q_g, 0)), -1);
     /* 1 / q = r * 2^-62 * 2^-(32 - n) */
-    return sf_mul(num, sf_make((int64_t)rc->r, rc->n - 94));
+    return fxl__sf_mul(num, fxl__sf_make((int64_t)rc->r, rc->n - 94));
 }
 
 /* log2 of |(a, b)| in q8 for a, b in q16 texels per pixel. */
-static inline int32_t log2_len_q8(sf_t a, sf_t b)
+static inline int32_t log2_len_q8(fxl__sf_t a, fxl__sf_t b)
 {
-    sf_t sq = sf_addsub(sf_mul(a, a), sf_mul(b, b), 1);
+    fxl__sf_t sq = fxl__sf_addsub(fxl__sf_mul(a, a), fxl__sf_mul(b, b), 1);
     if (sq.m <= 0)
         return INT32_MIN / 4;
     /* log2(len) = (log2(len_q16^2) - 32) / 2 */
