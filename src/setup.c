@@ -44,9 +44,21 @@ static int64_t div_frac(int64_t r, int64_t den, int bits)
 static int64_t gradient(int64_t N, int64_t den)
 {
     const int64_t lim = (int64_t)1 << (62 - FXL__PF);
-    int64_t qi = N / den;
-    int64_t r = N - qi * den;
+    int64_t qi, r;
 
+    /* The value is sign(N) * round_half_up(|N| 2^PF / den). When |N| 2^PF
+     * fits 63 bits (the usual case) one division with its remainder gives it
+     * exactly - the same number the chunked path below computes with three,
+     * which matters on Cortex-M where each is a library call. */
+    if (N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
+        uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;
+        uint64_t q = a / (uint64_t)den, rem = a - q * (uint64_t)den;
+        if (2u * rem >= (uint64_t)den)
+            q++;
+        return N < 0 ? -(int64_t)q : (int64_t)q;
+    }
+    qi = N / den;
+    r = N - qi * den;
     if (qi >= lim)
         return INT64_MAX / 2;
     if (qi <= -lim)
