@@ -1,0 +1,221 @@
+#!/usr/bin/env bash
+# bench.sh - `make bench`: the speed-versus-accuracy benchmark (issue 4).
+#
+#   FXL_BUILD_DIR=build FXL_BIN_DIR=build/bin bash host_sim/scripts/bench.sh
+#
+# Writes docs/bench/results.csv, docs/bench/*.png (gnuplot), and
+# docs/bench/footprint.txt; prints a summary table. Progress goes to stderr.
+# Work files: build-bench-host/ (callgrind), build-bench-m4/, build-bench-m0/
+# (firmware), build-bench-size/ (footprint builds).
+# Optional tools, each skipped with a note when missing: valgrind (host
+# instructions per pixel), arm-none-eabi-gcc + qemu-system-arm (Cortex-M
+# figures), gnuplot (charts). Environment knobs:
+#   BENCH_RUNS=5     timing runs per configuration (median)
+#   BENCH_TRACE=1    also count floor subdiv16 point/bilinear exactly from a
+#                    QEMU exec trace (a few seconds); 0 skips it
+set -euo pipefail
+# A parent make (make bench) must not hand its jobserver to the make calls below.
+unset MAKEFLAGS MFLAGS MAKELEVEL
+
+root=$(cd "$(dirname "$0")/../.." && pwd)
+cd "$root"
+build=${FXL_BUILD_DIR:-build}
+bin=${FXL_BIN_DIR:-$build/bin}
+out=docs/bench
+hostw=build-bench-host
+m4w=build-bench-m4
+m0w=build-bench-m0
+sizew=build-bench-size
+runs=${BENCH_RUNS:-5}
+trace=${BENCH_TRACE:-1}
+scripts=host_sim/scripts
+t_start=$SECONDS
+
+say() { printf '[bench %3ds] %s\n' $((SECONDS - t_start)) "$*" >&2; }
+have() { command -v "$1" >/dev/null 2>&1; }
+
+mkdir -p "$out" "$hostw" "$m4w" "$m0w" "$sizew"
+
+if [ ! -d "$build" ]; then
+    say "configuring $build"
+    cmake -S . -B "$build" >&2
+fi
+say "building fixel-bench in $build"
+cmake --build "$build" --target fixel-bench -j 2 >&2
+bench="$bin/fixel-bench"
+
+# ---- host instructions per pixel (callgrind), in the background ------------------
+host_ir=""
+cg_pid=""
+if have valgrind; then
+    host_ir="$hostw/host_ir.txt"
+    say "callgrind: every configuration, draw calls only (background)"
+    (
+        rm -f "$hostw"/cg.out*
+        valgrind --tool=callgrind --collect-atstart=no --toggle-collect=fxl_draw_triangle \
+            --callgrind-out-file="$hostw/cg.out" "$bench" draw >"$hostw/draw.txt" 2>"$hostw/valgrind.log"
+        if grep -q '^# client requests: yes' "$hostw/draw.txt"; then
+            for f in "$hostw"/cg.out.*; do
+                name=$(sed -n 's/^desc: Trigger: Client Request: //p' "$f")
+                tot=$(sed -n 's/^totals: //p;s/^summary: //p' "$f" | head -n 1)
+                [ -n "$name" ] && [ -n "$tot" ] && echo "${name//\// } $tot callgrind"
+            done >"$host_ir"
+        else
+            # No valgrind headers at build time: one process per configuration.
+            : >"$host_ir"
+            grep -v '^#' "$hostw/draw.txt" | while IFS=/ read -r s m fl; do
+                valgrind --tool=callgrind --collect-atstart=no --toggle-collect=fxl_draw_triangle \
+                    --callgrind-out-file="$hostw/one.out" "$bench" draw --scene "$s" --method "$m" \
+                    --filter "$fl" >/dev/null 2>>"$hostw/valgrind.log"
+                echo "$s $m $fl $(sed -n 's/^totals: //p;s/^summary: //p' "$hostw/one.out" | head -n 1) callgrind"
+            done >"$host_ir"
+        fi
+    ) &
+    cg_pid=$!
+else
+    say "valgrind not found (apt-get install valgrind): no host instruction counts"
+fi
+
+# ---- Cortex-M firmware --------------------------------------------------------------
+m4_counts=""
+m0_counts=""
+footprint="$out/footprint.txt"
+qemu_run() { # elf fw_out [extra qemu args...]
+    local elf=$1 fw=$2
+    shift 2
+    rm -f "$fw"
+    timeout 600 qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
+        -chardev file,id=semi,path="$fw" -semihosting-config enable=on,target=native,chardev=semi \
+        "$@" -kernel "$elf"
+}
+if have arm-none-eabi-gcc; then
+    say "firmware data from the host scenes"
+    "$bench" gen-fw "$m4w/data_all.c" --filters point,bilinear,trilinear
+    "$bench" gen-fw "$m0w/data_point.c" --filters point
+    "$bench" gen-fw "$m4w/data_trace.c" --filters point,bilinear --scene floor --method subdiv16
+    say "building the M4 (-O2) and M0+ (-O2) firmware"
+    make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-O2 OUT="$root/$m4w/icount" DATA="$root/$m4w/data_all.c" >&2
+    make -s -j 2 -C bench fw CPU=cortex-m0plus OPT=-O2 OUT="$root/$m0w/icount" DATA="$root/$m0w/data_point.c" >&2
+    make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-O2 OUT="$root/$m4w/trace" DATA="$root/$m4w/data_trace.c" >&2
+    if have qemu-system-arm; then
+        say "qemu mps2-an386, -icount shift=0: M4 (all configurations) and M0+ code (point)"
+        qemu_run "$m4w/icount/bench.elf" "$m4w/icount/fw.txt" -icount shift=0
+        qemu_run "$m0w/icount/bench.elf" "$m0w/icount/fw.txt" -icount shift=0
+        python3 "$scripts/m4_count.py" icount "$m4w/icount/fw.txt" >"$m4w/counts.txt"
+        python3 "$scripts/m4_count.py" icount "$m0w/icount/fw.txt" >"$m0w/counts.txt"
+        if [ "$trace" = 1 ]; then
+            say "exact trace count: floor subdiv16 point/bilinear on M4"
+            arm-none-eabi-nm "$m4w/trace/libfixel.a" >"$m4w/trace/lib.nm"
+            dfilter=$(python3 "$scripts/m4_count.py" ranges "$m4w/trace/bench.nm" "$m4w/trace/ranges.nm" \
+                "$m4w/trace/lib.nm")
+            rm -f "$m4w/trace/fw.txt"
+            timeout 600 qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
+                -chardev file,id=semi,path="$m4w/trace/fw.txt" \
+                -semihosting-config enable=on,target=native,chardev=semi \
+                -singlestep -d exec,nochain -dfilter "$dfilter" -D /dev/stdout \
+                -kernel "$m4w/trace/bench.elf" |
+                "$bench" count-trace "$m4w/trace/ranges.nm" >"$m4w/trace/segments.txt"
+            python3 "$scripts/m4_count.py" trace "$m4w/trace/fw.txt" "$m4w/trace/segments.txt" \
+                >"$m4w/trace/counts.txt"
+            # Later lines win in fixel-bench: exact counts replace the icount ones.
+            cat "$m4w/trace/counts.txt" >>"$m4w/counts.txt"
+            say "trace vs icount: $(tr '\n' ';' <"$m4w/trace/counts.txt")"
+        fi
+        m4_counts="$m4w/counts.txt"
+        m0_counts="$m0w/counts.txt"
+    else
+        say "qemu-system-arm not found (apt-get install qemu-system-arm): no Cortex-M counts"
+    fi
+
+    say "footprint: core alone for M0+ and M4 at -Os and -O2, and the smallest configuration"
+    cat >"$sizew/min_config.h" <<'EOF'
+/* The smallest useful fixel: point + bilinear, subdivided perspective,
+ * RGB565 repeat textures, no mip maps, no generic path, no depth buffer,
+ * no adaptive mode. */
+#define FXL_HAVE_MIPMAP 0
+#define FXL_HAVE_GENERIC 0
+#define FXL_HAVE_DEPTH 0
+#define FXL_HAVE_AUTO 0
+EOF
+    {
+        echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size of libfixel.a"
+        echo "# (every src/*.c module, the 3D front end included); linked: the core code + const data"
+        echo "# that one textured fxl_draw_triangle program keeps after --gc-sections (bench/size_main.c)."
+        echo "# min = point + bilinear, subdivided, RGB565: FXL_HAVE_MIPMAP/GENERIC/DEPTH/AUTO 0."
+        echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
+        printf '%-14s %-4s %-5s %9s %6s %6s %9s\n' cpu opt cfg archive data bss linked
+        for cpu in cortex-m0plus cortex-m4; do
+            for opt in -Os -O2; do
+                for cfg in full min; do
+                    d="$root/$sizew/${cpu#cortex-}$opt-$cfg"
+                    # From scratch: bench/Makefile's objects do not depend on
+                    # the config header, so a changed configuration would
+                    # otherwise reuse stale objects.
+                    rm -rf "$d"
+                    mkdir -p "$d"
+                    extra=()
+                    [ "$cfg" = min ] && extra=(CONFIG="$root/$sizew/min_config.h")
+                    if ! make -s -j 2 -C bench "$d/libfixel.a" CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" \
+                        >"$d.build.log" 2>&1; then
+                        say "footprint: the core does not build for $cpu $opt $cfg (see $d.build.log)"
+                        printf '%-14s %-4s %-5s %9s\n' $cpu $opt $cfg "build-failed"
+                        continue
+                    fi
+                    arm-none-eabi-nm "$d/libfixel.a" >"$d/lib.nm" 2>/dev/null
+                    # A link failure (a symbol missing in this configuration) is
+                    # reported in the table, not fatal.
+                    if make -s -C bench core CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" >"$d/link.log" 2>&1; then
+                        linked=$(python3 "$scripts/m4_count.py" linked "$d/size.nm" "$d/lib.nm" | cut -d' ' -f1)
+                    else
+                        linked=-1
+                        say "footprint: $cpu $opt $cfg does not link: $(grep -m1 'undefined reference' "$d/link.log" || tail -n 1 "$d/link.log")"
+                    fi
+                    arm-none-eabi-size -t "$d/libfixel.a" | tail -n 1 |
+                        awk -v c=$cpu -v o=$opt -v g=$cfg -v l="$linked" \
+                            '{printf "%-14s %-4s %-5s %9d %6d %6d %9d\n", c, o, g, $1, $2, $3, l}'
+                done
+            done
+        done
+        echo
+        echo "# worst-case stack of one fxl_draw_triangle call (gcc -fcallgraph-info=su, frames summed"
+        echo "# along the deepest call chain; libgcc helpers not included)"
+        for cpu in cortex-m0plus cortex-m4; do
+            for opt in -Os -O2; do
+                d="$root/$sizew/${cpu#cortex-}$opt-full/core"
+                [ -d "$d" ] || continue
+                printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" fxl_draw_triangle)"
+            done
+        done
+        echo
+        "$bench" ram
+    } >"$footprint"
+    say "footprint written to $footprint"
+else
+    say "arm-none-eabi-gcc not found (apt-get install gcc-arm-none-eabi): no Cortex-M figures"
+fi
+
+if [ -n "$cg_pid" ]; then
+    say "waiting for callgrind"
+    wait "$cg_pid" || say "callgrind failed (see $hostw/valgrind.log)"
+fi
+
+# ---- accuracy, speed, CSV and the summary -------------------------------------------
+say "accuracy against the reference renderer and host timing (median of $runs runs)"
+args=(accuracy --runs "$runs" --csv "$out/results.csv" --plot-dir "$hostw")
+[ -n "$host_ir" ] && [ -s "$host_ir" ] && args+=(--host-ir "$host_ir")
+[ -n "$m4_counts" ] && args+=(--m4 "$m4_counts")
+[ -n "$m0_counts" ] && args+=(--m0 "$m0_counts")
+"$bench" "${args[@]}" >"$hostw/summary.txt"
+
+if have gnuplot; then
+    say "charts"
+    for gp in speed_error error_len psnr_cost; do
+        gnuplot -e "datadir='$hostw'; outdir='$out'" "$scripts/$gp.gp"
+    done
+else
+    say "gnuplot not found (apt-get install gnuplot-nox): no charts"
+fi
+
+cat "$hostw/summary.txt"
+[ -f "$footprint" ] && { echo; cat "$footprint"; }
+say "done: $out/results.csv, $out/*.png, $footprint"

@@ -1,0 +1,846 @@
+/* bench.c - fixel-bench: the speed-versus-accuracy benchmark (issue 4).
+ *
+ *   fixel-bench accuracy [--scene S] [--method M] [--filter F] [--runs N]
+ *                        [--host-ir FILE] [--m4 FILE] [--m0 FILE]
+ *                        [--csv FILE] [--plot-dir DIR]
+ *       every scene x method x filter: coverage, texel-coordinate error,
+ *       image error (all against the reference renderer), host Mpixels/s;
+ *       joins the instruction counts gathered by bench.sh and writes the CSV
+ *       (docs/bench/README.md documents the columns), the gnuplot data files
+ *       and a summary table on stdout.
+ *   fixel-bench draw [--scene S] [--method M] [--filter F]
+ *       one frame of each configuration, for callgrind: with valgrind's
+ *       client requests it dumps the counters after each configuration
+ *       under the name "scene/method/filter" (run with --collect-atstart=no
+ *       --toggle-collect=fxl_draw_triangle so only the draw calls count).
+ *   fixel-bench gen-fw OUT.c [--filters point,bilinear,trilinear]
+ *       the scenes' triangles, textures and the configuration list as C
+ *       arrays for the firmware in bench/ (both sides use the same data).
+ *   fixel-bench ram
+ *       the memory the caller provides per scene (frame, depth, bands,
+ *       texture level 0 and whole chain, vertex data).
+ *   fixel-bench count-trace NM_FILE < trace
+ *       count QEMU exec-trace instructions inside the functions listed by
+ *       `arm-none-eabi-nm -S` (NM_FILE), one line per bench_begin ..
+ *       bench_end segment of the firmware.
+ *
+ * Instruction counts are divided by *covered* pixels: the sum over the
+ * scene's triangles of the pixels their coverage includes (what reaches the
+ * span loops, before the depth test). Progress goes to stderr.
+ * Exit status: 0 success, 1 a failure, 2 a bad command line.
+ */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L
+#endif
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_lib.h"
+#include "fixel/fixel.h"
+#include "metrics.h"
+#include "reference.h"
+#include "scene.h"
+#include "textures.h"
+#include "timing.h"
+#include "../../src/raster_int.h"
+
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define BENCH_HAVE_CALLGRIND 1
+#endif
+#endif
+#ifndef BENCH_HAVE_CALLGRIND
+#define BENCH_HAVE_CALLGRIND 0
+#define CALLGRIND_DUMP_STATS_AT(s) ((void)(s))
+#endif
+
+#define W SCENE_DEFAULT_WIDTH
+#define H SCENE_DEFAULT_HEIGHT
+#define NPIX ((size_t)W * (size_t)H)
+
+typedef struct method {
+    const char *name;
+    int16_t persp;
+    int seg_len;      /* pixels between exact points: 0 affine, -1 adaptive */
+} method_t;
+
+typedef struct filter {
+    const char *name;
+    uint8_t filter, mip;
+} filter_t;
+
+static const char *const scenes[] = {"floor", "floor_rolled", "cube", "tunnel", "small_tris", "quad_near"};
+static const method_t methods[] = {{"affine", FXL_PERSP_AFFINE, 0}, {"subdiv4", 4, 4},   {"subdiv8", 8, 8},
+                                   {"subdiv16", 16, 16},           {"subdiv32", 32, 32}, {"subdiv64", 64, 64},
+                                   {"exact", FXL_PERSP_EXACT, 1},   {"auto", FXL_PERSP_AUTO, -1}};
+/* Point and bilinear sample level 0 (the fast RGB565 loops); trilinear uses
+ * the whole chain with per-segment LOD. */
+static const filter_t filters[] = {{"point", FXL_FILTER_POINT, FXL_MIP_NONE},
+                                   {"bilinear", FXL_FILTER_BILINEAR, FXL_MIP_NONE},
+                                   {"trilinear", FXL_FILTER_BILINEAR, FXL_MIP_LINEAR}};
+#define NSCENES (sizeof scenes / sizeof scenes[0])
+#define NMETHODS (sizeof methods / sizeof methods[0])
+#define NFILTERS (sizeof filters / sizeof filters[0])
+
+typedef struct options {
+    const char *scene, *method, *filter;
+    int runs;
+    const char *host_ir, *m4, *m0, *csv, *plot_dir;
+    const char *fw_filters;
+} options_t;
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: fixel-bench accuracy|draw|gen-fw|ram|count-trace [options]\n"
+               "  (see the comment at the top of host_sim/tools/bench.c)\n");
+}
+
+static int selected(const char *want, const char *name)
+{
+    return !want || strcmp(want, name) == 0;
+}
+
+static void draw_settings(const method_t *m, const filter_t *f, const fxl_texture_t *tex, fxl_draw_t *d)
+{
+    fxl_draw_defaults(d);
+    d->texture = tex;
+    d->persp = m->persp;
+    d->filter = f->filter;
+    d->mip = f->mip;
+    d->lod = FXL_LOD_SEGMENT;
+    d->depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+}
+
+static fxl_status_t draw_scene(const scene_t *s, const fxl_draw_t *d, fxl_target_t *t)
+{
+    uint32_t i;
+    for (i = 0; i < s->tri_count; i++) {
+        fxl_status_t st = fxl_draw_triangle(t, d, &s->verts[3u * i], NULL);
+        if (st != FXL_OK)
+            return st;
+    }
+    return FXL_OK;
+}
+
+/* ---- the probe: exact per-pixel u, v of the core ----------------------------- */
+
+typedef struct probe {
+    const uint16_t *base;
+    uint8_t *count;       /* triangles whose span covered the pixel */
+    int32_t *tri;         /* the one that passed the depth test last, -1 none */
+    uint32_t *u, *v;      /* its level-0 q16 coordinates (modular) */
+    int32_t cur;          /* triangle being drawn */
+} probe_t;
+
+/* The probe hook has no user pointer; this tool is single-threaded. */
+static probe_t *g_probe;
+
+/* Replaces the span loop: counts coverage, applies the core's depth rule
+ * (draw when inv_w >> 16 > stored, then store) and records u, v. */
+static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_t *p = g_probe;
+    int32_t i;
+    (void)tri;
+    for (i = 0; i < s->n; i++) {
+        size_t k = (size_t)(s->dst - p->base) + (size_t)i;
+        uint32_t zz = (s->z + (uint32_t)s->dz * (uint32_t)i) >> 16;
+        if (p->count[k] < 255)
+            p->count[k]++;
+        if (s->zb) {
+            if (zz <= s->zb[i])
+                continue;
+            s->zb[i] = (uint16_t)zz;
+        }
+        p->tri[k] = p->cur;
+        p->u[k] = s->u + (uint32_t)s->du * (uint32_t)i;
+        p->v[k] = s->v + (uint32_t)s->dv * (uint32_t)i;
+    }
+    return (uint32_t)s->n;
+}
+
+/* ---- analytic bound of affine segments --------------------------------------- */
+
+/* K such that the bound for segment length L is K * L^2: the largest
+ * |(du/dx, dv/dx)| |q'| / (4 q) over the pixels the reference drew. */
+static double scene_bound_k(const scene_t *s, const ref_image *ref, uint32_t tw, uint32_t th)
+{
+    double kmax = 0;
+    int32_t x, y;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            size_t k = (size_t)y * W + (size_t)x;
+            const fxl_vertex_t *t;
+            double X[3], Y[3], A, db[3], b[3], q = 0, dq = 0, u, v, du[2], dv[2], px = x + 0.5, py = y + 0.5;
+            int i;
+            if (!ref->drawn[k] || ref->tri[k] < 0)
+                continue;
+            t = &s->verts[3 * (size_t)ref->tri[k]];
+            for (i = 0; i < 3; i++) {
+                X[i] = ref_snap(t[i].x) / (double)(1 << FXL_SUBPIXEL_BITS);
+                Y[i] = ref_snap(t[i].y) / (double)(1 << FXL_SUBPIXEL_BITS);
+            }
+            A = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+            if (A == 0 || ref_uv_at(t, px, py, 0, &u, &v, du, dv) != 0)
+                continue;
+            b[1] = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / A;
+            b[2] = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / A;
+            b[0] = 1 - b[1] - b[2];
+            db[1] = (Y[2] - Y[0]) / A;
+            db[2] = -(Y[1] - Y[0]) / A;
+            db[0] = -db[1] - db[2];
+            for (i = 0; i < 3; i++) {
+                q += b[i] * (double)t[i].inv_w;
+                dq += db[i] * (double)t[i].inv_w;
+            }
+            {
+                double g = hypot(du[0] * tw, dv[0] * th);
+                double kk = bench_affine_bound(1.0, g, q, dq);
+                if (kk > kmax)
+                    kmax = kk;
+            }
+        }
+    return kmax;
+}
+
+/* ---- instruction counts gathered by bench.sh ----------------------------------- */
+
+typedef struct counts {
+    char key[NSCENES][NMETHODS][NFILTERS];
+    double val[NSCENES][NMETHODS][NFILTERS];
+    char src[NSCENES][NMETHODS][NFILTERS][8];
+} counts_t;
+
+static int index_of(const char *const *names, size_t n, size_t stride, const char *name)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        const char *s = *(const char *const *)((const char *)names + i * stride);
+        if (strcmp(s, name) == 0)
+            return (int)i;
+    }
+    return -1;
+}
+
+/* Lines "scene method filter count [source]"; '#' comments ignored. */
+static int read_counts(const char *path, counts_t *c)
+{
+    FILE *f;
+    char line[256];
+    memset(c, 0, sizeof *c);
+    if (!path)
+        return 0;
+    f = fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "fixel-bench: cannot read %s (its column stays empty)\n", path);
+        return 0;
+    }
+    while (fgets(line, sizeof line, f)) {
+        char sc[64], me[64], fi[64], src[16] = "";
+        double v;
+        int a, b, d;
+        if (line[0] == '#' || sscanf(line, "%63s %63s %63s %lf %15s", sc, me, fi, &v, src) < 4)
+            continue;
+        a = index_of(scenes, NSCENES, sizeof scenes[0], sc);
+        b = index_of(&methods[0].name, NMETHODS, sizeof methods[0], me);
+        d = index_of(&filters[0].name, NFILTERS, sizeof filters[0], fi);
+        if (a < 0 || b < 0 || d < 0)
+            continue;
+        c->key[a][b][d] = 1;
+        c->val[a][b][d] = v;
+        snprintf(c->src[a][b][d], sizeof c->src[a][b][d], "%s", src);
+    }
+    fclose(f);
+    return 0;
+}
+
+/* ---- accuracy (and everything else) -------------------------------------------- */
+
+typedef struct row {
+    int valid;
+    uint64_t covered;
+    metrics_coverage cov;
+    metrics_summary err;
+    double wrong_share, psnr, max_diff, bound, mpix, host_ipp, m4_ipp, m0_ipp;
+    char m4_src[8];
+} row_t;
+
+static row_t rows[NSCENES][NMETHODS][NFILTERS];
+
+static double time_frame(const scene_t *s, const fxl_draw_t *d, frame_t *fr, int runs)
+{
+    double t[15];
+    int r;
+    if (runs > 15)
+        runs = 15;
+    for (r = 0; r < runs; r++) {
+        int frames = 0;
+        uint64_t total = 0;
+        while (total < 20000000u || frames < 2) {   /* >= 20 ms of drawing per run */
+            uint64_t t0;
+            (void)fxl_target_clear(&fr->target, 0);
+            (void)fxl_target_clear_depth(&fr->target);
+            t0 = timing_now_ns();
+            (void)draw_scene(s, d, &fr->target);
+            total += timing_now_ns() - t0;
+            frames++;
+        }
+        t[r] = (double)total / 1e9 / frames;
+    }
+    return timing_median(t, (size_t)runs);
+}
+
+static int run_scene(size_t si, const options_t *o)
+{
+    scene_t s;
+    host_texture_t tex;
+    ref_image refs[NFILTERS];
+    probe_t pr;
+    frame_t fr, pf;
+    uint8_t *refcount = NULL, *mask = NULL;
+    double *errs = NULL, K = 0;
+    size_t mi, fi, k;
+    int rc = 1;
+
+    memset(refs, 0, sizeof refs);
+    memset(&pr, 0, sizeof pr);
+    memset(&fr, 0, sizeof fr);
+    memset(&pf, 0, sizeof pf);
+    if (scene_build(scenes[si], W, H, &s) != SCENE_OK) {
+        fprintf(stderr, "fixel-bench: scene %s failed\n", scenes[si]);
+        return 1;
+    }
+    if (texture_make(&tex, s.texture) != 0) {
+        scene_free(&s);
+        return 1;
+    }
+    pr.count = calloc(NPIX, 1);
+    pr.tri = malloc(NPIX * sizeof(int32_t));
+    pr.u = malloc(NPIX * sizeof(uint32_t));
+    pr.v = malloc(NPIX * sizeof(uint32_t));
+    refcount = malloc(NPIX);
+    mask = malloc(NPIX);
+    errs = malloc(NPIX * sizeof(double));
+    if (!pr.count || !pr.tri || !pr.u || !pr.v || !refcount || !mask || !errs ||
+        frame_alloc(&fr, W, H, FXL_PIXFMT_RGB565, 1) != 0 || frame_alloc(&pf, W, H, FXL_PIXFMT_RGB565, 1) != 0)
+        goto out;
+
+    /* References: exact perspective, one per filter (u, v do not depend on it). */
+    for (fi = 0; fi < NFILTERS; fi++) {
+        ref_params p;
+        fxl_status_t st;
+        if (!selected(o->filter, filters[fi].name) && fi != 0)
+            continue;
+        ref_params_init(&p, W, H);
+        draw_settings(&methods[6], &filters[fi], &tex.tex, &p.draw);
+        p.depth_enabled = 1;
+        st = ref_render(&p, s.verts, (int)s.tri_count, &refs[fi]);
+        if (st != FXL_OK) {
+            fprintf(stderr, "fixel-bench: reference of %s/%s: %s\n", scenes[si], filters[fi].name,
+                    fxl_status_name(st));
+            goto out;
+        }
+    }
+    for (k = 0; k < NPIX; k++) {
+        refcount[k] = refs[0].covered[k];
+        mask[k] = (uint8_t)(refs[0].drawn[k] && !refs[0].depth_tie[k]);
+    }
+    K = scene_bound_k(&s, &refs[0], tex.width, tex.height);
+
+    for (mi = 0; mi < NMETHODS; mi++) {
+        fxl_draw_t d;
+        metrics_coverage cov;
+        metrics_summary err;
+        size_t n = 0, wrong = 0;
+        uint64_t covered = 0;
+        uint32_t i;
+        if (!selected(o->method, methods[mi].name))
+            continue;
+        fprintf(stderr, "  %s %s\n", scenes[si], methods[mi].name);
+        /* Probe pass: level 0 (FXL_MIP_NONE) so u, v are level-0 texels. */
+        draw_settings(&methods[mi], &filters[0], &tex.tex, &d);
+        memset(pr.count, 0, NPIX);
+        for (k = 0; k < NPIX; k++)
+            pr.tri[k] = -1;
+        pr.base = pf.target.pixels;
+        (void)fxl_target_clear_depth(&pf.target);
+        g_probe = &pr;
+        for (i = 0; i < s.tri_count; i++) {
+            fxl_status_t st;
+            pr.cur = (int32_t)i;
+            st = fxl__draw_triangle_with(&pf.target, &d, &s.verts[3u * i], NULL, probe_seg);
+            if (st != FXL_OK) {
+                fprintf(stderr, "fixel-bench: %s %s: %s\n", scenes[si], methods[mi].name, fxl_status_name(st));
+                goto out;
+            }
+        }
+        for (k = 0; k < NPIX; k++)
+            covered += pr.count[k];
+        (void)metrics_coverage_compare(refcount, pr.count, NPIX, &cov);
+        for (k = 0; k < NPIX; k++) {
+            double du, dv;
+            uint32_t tx, ty;
+            if (!mask[k] || pr.tri[k] != refs[0].tri[k])
+                continue;
+            du = bench_wrap_diff(pr.u[k], refs[0].u[k], tex.width);
+            dv = bench_wrap_diff(pr.v[k], refs[0].v[k], tex.height);
+            errs[n++] = hypot(du, dv);
+            tx = (pr.u[k] >> 16) & (tex.width - 1u);
+            ty = (pr.v[k] >> 16) & (tex.height - 1u);
+            if ((int32_t)tx != refs[0].tex_x[k] || (int32_t)ty != refs[0].tex_y[k])
+                wrong++;
+        }
+        (void)metrics_summarize(errs, n, &err);
+
+        for (fi = 0; fi < NFILTERS; fi++) {
+            row_t *r = &rows[si][mi][fi];
+            metrics_image im;
+            double sec;
+            if (!selected(o->filter, filters[fi].name))
+                continue;
+            draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
+            (void)fxl_target_clear(&fr.target, 0);
+            (void)fxl_target_clear_depth(&fr.target);
+            if (draw_scene(&s, &d, &fr.target) != FXL_OK)
+                goto out;
+            (void)metrics_image_compare(&fr.target, &refs[fi], mask, &im);
+            sec = o->runs > 0 ? time_frame(&s, &d, &fr, o->runs) : 0;
+            r->valid = 1;
+            r->covered = covered;
+            r->cov = cov;
+            r->err = err;
+            r->wrong_share = n ? (double)wrong / (double)n : 0;
+            r->psnr = im.psnr;
+            r->max_diff = im.max_diff;
+            r->bound = methods[mi].seg_len > 1 ? K * methods[mi].seg_len * methods[mi].seg_len : 0;
+            r->mpix = sec > 0 ? (double)covered / sec / 1e6 : NAN;
+        }
+    }
+    rc = 0;
+out:
+    for (fi = 0; fi < NFILTERS; fi++)
+        ref_free(&refs[fi]);
+    free(pr.count);
+    free(pr.tri);
+    free(pr.u);
+    free(pr.v);
+    free(refcount);
+    free(mask);
+    free(errs);
+    frame_free(&fr);
+    frame_free(&pf);
+    texture_free(&tex);
+    scene_free(&s);
+    return rc;
+}
+
+static void fmt_num(char *buf, size_t n, double v, const char *fmt)
+{
+    if (isnan(v))
+        buf[0] = '\0';
+    else
+        snprintf(buf, n, fmt, v);
+}
+
+/* Cost on the chart's x axis: M4 instructions per pixel, else host. */
+static double row_cost(const row_t *r)
+{
+    return !isnan(r->m4_ipp) ? r->m4_ipp : r->host_ipp;
+}
+
+static int write_outputs(const options_t *o)
+{
+    FILE *csv = stdout;
+    size_t si, mi, fi;
+    if (o->csv) {
+        csv = fopen(o->csv, "w");
+        if (!csv) {
+            fprintf(stderr, "fixel-bench: cannot write %s\n", o->csv);
+            return 1;
+        }
+    }
+    fprintf(csv, "scene,method,filter,seg_len,covered_px,cov_mismatch,drawn_twice,holes,"
+                 "err_max,err_mean,err_p99,wrong_texel_share,psnr_db,max_chan_diff,bound_max,"
+                 "host_mpix_s,host_ipp,m4_ipp,m4_count,m0_ipp\n");
+    for (si = 0; si < NSCENES; si++)
+        for (mi = 0; mi < NMETHODS; mi++)
+            for (fi = 0; fi < NFILTERS; fi++) {
+                const row_t *r = &rows[si][mi][fi];
+                char mp[32], hi[32], m4[32], m0[32];
+                uint32_t twice;
+                if (!r->valid)
+                    continue;
+                /* drawn more often than the exact rule says (overlapping
+                 * scenes legitimately cover some pixels twice) */
+                twice = r->cov.count_mismatches - r->cov.holes - r->cov.extra;
+                fmt_num(mp, sizeof mp, r->mpix, "%.2f");
+                fmt_num(hi, sizeof hi, r->host_ipp, "%.2f");
+                fmt_num(m4, sizeof m4, r->m4_ipp, "%.2f");
+                fmt_num(m0, sizeof m0, r->m0_ipp, "%.2f");
+                fprintf(csv, "%s,%s,%s,%d,%llu,%u,%u,%u,%.6f,%.6f,%.6f,%.6f,%.2f,%.2f,%.6f,%s,%s,%s,%s,%s\n",
+                        scenes[si], methods[mi].name, filters[fi].name, methods[mi].seg_len,
+                        (unsigned long long)r->covered, r->cov.mismatches, twice, r->cov.holes, r->err.max,
+                        r->err.mean, r->err.p99, r->wrong_share, r->psnr, r->max_diff, r->bound, mp, hi, m4,
+                        r->m4_src, m0);
+            }
+    if (o->csv)
+        fclose(csv);
+
+    if (o->plot_dir) {
+        char path[1024];
+        FILE *sp, *lp, *pp;
+        /* error_len.dat rows by increasing L: exact (1), subdiv4 .. subdiv64 */
+        static const size_t by_len[] = {6, 1, 2, 3, 4, 5};
+        size_t k;
+        snprintf(path, sizeof path, "%s/speed_error.dat", o->plot_dir);
+        sp = fopen(path, "w");
+        snprintf(path, sizeof path, "%s/error_len.dat", o->plot_dir);
+        lp = fopen(path, "w");
+        snprintf(path, sizeof path, "%s/psnr_cost.dat", o->plot_dir);
+        pp = fopen(path, "w");
+        if (!sp || !lp || !pp) {
+            fprintf(stderr, "fixel-bench: cannot write the plot data in %s\n", o->plot_dir);
+            if (sp)
+                fclose(sp);
+            if (lp)
+                fclose(lp);
+            if (pp)
+                fclose(pp);
+            return 1;
+        }
+        /* speed_error.dat: one block per scene (gnuplot `index`), point
+         * filter rows: cost, err_max, err_p99, on_front(max), method. */
+        for (si = 0; si < NSCENES; si++) {
+            double x[NMETHODS], y[NMETHODS];
+            uint8_t front[NMETHODS];
+            fprintf(sp, "# %s: cost err_max err_p99 front method\n", scenes[si]);
+            for (mi = 0; mi < NMETHODS; mi++) {
+                const row_t *r = &rows[si][mi][0];
+                x[mi] = r->valid ? row_cost(r) : NAN;
+                y[mi] = r->valid ? r->err.max : NAN;
+            }
+            (void)bench_pareto(x, y, NMETHODS, front);
+            for (mi = 0; mi < NMETHODS; mi++) {
+                const row_t *r = &rows[si][mi][0];
+                if (!r->valid || isnan(x[mi]))
+                    continue;
+                fprintf(sp, "%.3f %.6g %.6g %d %s\n", x[mi], r->err.max > 1e-6 ? r->err.max : 1e-6,
+                        r->err.p99 > 1e-6 ? r->err.p99 : 1e-6, front[mi], methods[mi].name);
+            }
+            fprintf(sp, "\n\n");
+            /* error_len.dat: L, err_max, err_p99, bound (subdivided + exact) */
+            fprintf(lp, "# %s: L err_max err_p99 bound\n", scenes[si]);
+            for (k = 0; k < sizeof by_len / sizeof by_len[0]; k++) {
+                const row_t *r = &rows[si][by_len[k]][0];
+                mi = by_len[k];
+                if (!r->valid)
+                    continue;
+                fprintf(lp, "%d %.6g %.6g %.6g\n", methods[mi].seg_len, r->err.max > 1e-6 ? r->err.max : 1e-6,
+                        r->err.p99 > 1e-6 ? r->err.p99 : 1e-6, r->bound > 0 ? r->bound : NAN);
+            }
+            fprintf(lp, "\n\n");
+        }
+        /* psnr_cost.dat: one block per filter x scene: cost psnr method */
+        for (fi = 0; fi < NFILTERS; fi++)
+            for (si = 0; si < NSCENES; si++) {
+                fprintf(pp, "# %s %s: cost psnr method\n", filters[fi].name, scenes[si]);
+                for (mi = 0; mi < NMETHODS; mi++) {
+                    const row_t *r = &rows[si][mi][fi];
+                    if (!r->valid || isnan(row_cost(r)))
+                        continue;
+                    fprintf(pp, "%.3f %.3f %s\n", row_cost(r), r->psnr, methods[mi].name);
+                }
+                fprintf(pp, "\n\n");
+            }
+        fclose(sp);
+        fclose(lp);
+        fclose(pp);
+    }
+
+    /* Summary table */
+    printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %8s\n", "scene", "method", "filter", "host_i/px", "M4_i/px",
+           "M0_i/px", "err_max", "err_p99", "PSNR");
+    for (si = 0; si < NSCENES; si++)
+        for (mi = 0; mi < NMETHODS; mi++)
+            for (fi = 0; fi < NFILTERS; fi++) {
+                const row_t *r = &rows[si][mi][fi];
+                char hi[32], m4[32], m0[32];
+                if (!r->valid)
+                    continue;
+                fmt_num(hi, sizeof hi, r->host_ipp, "%.1f");
+                fmt_num(m4, sizeof m4, r->m4_ipp, "%.1f");
+                fmt_num(m0, sizeof m0, r->m0_ipp, "%.1f");
+                printf("%-13s %-9s %-9s %9s %8s %8s %9.4f %9.4f %8.2f\n", scenes[si], methods[mi].name,
+                       filters[fi].name, hi, m4, m0, r->err.max, r->err.p99, r->psnr);
+            }
+    return 0;
+}
+
+static int cmd_accuracy(const options_t *o)
+{
+    static counts_t hc, m4c, m0c;
+    size_t si, mi, fi;
+    (void)read_counts(o->host_ir, &hc);
+    (void)read_counts(o->m4, &m4c);
+    (void)read_counts(o->m0, &m0c);
+    for (si = 0; si < NSCENES; si++) {
+        if (!selected(o->scene, scenes[si]))
+            continue;
+        fprintf(stderr, "fixel-bench: %s\n", scenes[si]);
+        if (run_scene(si, o) != 0)
+            return 1;
+    }
+    for (si = 0; si < NSCENES; si++)
+        for (mi = 0; mi < NMETHODS; mi++)
+            for (fi = 0; fi < NFILTERS; fi++) {
+                row_t *r = &rows[si][mi][fi];
+                double px = r->covered ? (double)r->covered : NAN;
+                r->host_ipp = hc.key[si][mi][fi] ? hc.val[si][mi][fi] / px : NAN;
+                r->m4_ipp = m4c.key[si][mi][fi] ? m4c.val[si][mi][fi] / px : NAN;
+                r->m0_ipp = m0c.key[si][mi][fi] ? m0c.val[si][mi][fi] / px : NAN;
+                snprintf(r->m4_src, sizeof r->m4_src, "%s", m4c.src[si][mi][fi]);
+            }
+    return write_outputs(o);
+}
+
+/* ---- draw: one frame per configuration under callgrind ------------------------- */
+
+static int cmd_draw(const options_t *o)
+{
+    size_t si, mi, fi;
+    printf("# client requests: %s\n", BENCH_HAVE_CALLGRIND ? "yes" : "no");
+    for (si = 0; si < NSCENES; si++) {
+        scene_t s;
+        host_texture_t tex;
+        frame_t fr;
+        if (!selected(o->scene, scenes[si]))
+            continue;
+        if (scene_build(scenes[si], W, H, &s) != SCENE_OK)
+            return 1;
+        if (texture_make(&tex, s.texture) != 0 || frame_alloc(&fr, W, H, FXL_PIXFMT_RGB565, 1) != 0) {
+            scene_free(&s);
+            return 1;
+        }
+        for (mi = 0; mi < NMETHODS; mi++)
+            for (fi = 0; fi < NFILTERS; fi++) {
+                fxl_draw_t d;
+                char name[128];
+                if (!selected(o->method, methods[mi].name) || !selected(o->filter, filters[fi].name))
+                    continue;
+                draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
+                (void)fxl_target_clear(&fr.target, 0);
+                (void)fxl_target_clear_depth(&fr.target);
+                if (draw_scene(&s, &d, &fr.target) != FXL_OK)
+                    return 1;
+                snprintf(name, sizeof name, "%s/%s/%s", scenes[si], methods[mi].name, filters[fi].name);
+                CALLGRIND_DUMP_STATS_AT(name);
+                printf("%s\n", name);
+            }
+        frame_free(&fr);
+        texture_free(&tex);
+        scene_free(&s);
+    }
+    return 0;
+}
+
+/* ---- gen-fw: the firmware's data ---------------------------------------------- */
+
+static int cmd_gen_fw(const char *path, const options_t *o)
+{
+    FILE *f = fopen(path, "w");
+    size_t si, mi, fi, ncfg = 0;
+    int used[TEXTURE_COUNT] = {0};
+    int tex_of[NSCENES];
+    int t;
+    if (!f) {
+        fprintf(stderr, "fixel-bench: cannot write %s\n", path);
+        return 1;
+    }
+    fprintf(f, "/* Generated by fixel-bench gen-fw from host_sim/lib/scene.c and textures.c.\n"
+               " * Do not edit; `make bench` regenerates it. */\n#include \"bench_data.h\"\n\n");
+    for (si = 0; si < NSCENES; si++) {
+        scene_t s;
+        uint32_t i;
+        if (scene_build(scenes[si], W, H, &s) != SCENE_OK) {
+            fclose(f);
+            return 1;
+        }
+        used[s.texture] = 1;
+        fprintf(f, "static const fxl_vertex_t verts_%s[%u] = {\n", scenes[si], 3u * s.tri_count);
+        for (i = 0; i < 3u * s.tri_count; i++) {
+            const fxl_vertex_t *v = &s.verts[i];
+            fprintf(f, "    {%ld, %ld, %luu, %ld, %ld, %uu},\n", (long)v->x, (long)v->y, (unsigned long)v->inv_w,
+                    (long)v->u, (long)v->v, (unsigned)v->color);
+        }
+        fprintf(f, "};\n");
+        fprintf(f, "#define NTRI_%s %uu\n\n", scenes[si], s.tri_count);
+        tex_of[si] = (int)s.texture;
+        scene_free(&s);
+    }
+    for (t = 0; t < TEXTURE_COUNT; t++) {
+        host_texture_t tex;
+        uint32_t i;
+        if (!used[t])
+            continue;
+        if (texture_make(&tex, (texture_id_t)t) != 0) {
+            fclose(f);
+            return 1;
+        }
+        fprintf(f, "static const uint16_t texels_%d[%u] = {", t, tex.texel_count);
+        for (i = 0; i < tex.texel_count; i++)
+            fprintf(f, "%s0x%04x,", i % 12 ? " " : "\n    ", tex.texels[i]);
+        fprintf(f, "\n};\n");
+        fprintf(f, "static const fxl_texture_t tex_%d = {texels_%d, 0, %u, %u, %u, %u, %u, %u, %u, 0, %u, %u};\n\n", t,
+                t, tex.tex.log2_w, tex.tex.log2_h, tex.tex.levels, tex.tex.format, tex.tex.wrap_u, tex.tex.wrap_v,
+                tex.tex.flags, tex.tex.key, tex.tex.border);
+        texture_free(&tex);
+    }
+    fprintf(f, "const bench_scene_t bench_scenes[%u] = {\n", (unsigned)NSCENES);
+    for (si = 0; si < NSCENES; si++)
+        fprintf(f, "    {\"%s\", verts_%s, NTRI_%s, &tex_%d},\n", scenes[si], scenes[si], scenes[si], tex_of[si]);
+    fprintf(f, "};\n\nconst bench_cfg_t bench_cfgs[] = {\n");
+    for (si = 0; si < NSCENES; si++)
+        for (mi = 0; mi < NMETHODS; mi++)
+            for (fi = 0; fi < NFILTERS; fi++) {
+                if (!strstr(o->fw_filters, filters[fi].name) || !selected(o->scene, scenes[si]) ||
+                    !selected(o->method, methods[mi].name))
+                    continue;
+                fprintf(f, "    {%u, %d, %u, %u, \"%s %s %s\"},\n", (unsigned)si, methods[mi].persp,
+                        filters[fi].filter, filters[fi].mip, scenes[si], methods[mi].name, filters[fi].name);
+                ncfg++;
+            }
+    fprintf(f, "};\nconst uint32_t bench_ncfg = %u;\n", (unsigned)ncfg);
+    fclose(f);
+    return 0;
+}
+
+static int cmd_count_trace(const char *nm)
+{
+    static bench_range_t ranges[4096];
+    static uint64_t counts[4096];
+    uint32_t begin = 0xFFFFFFFFu, end = 0xFFFFFFFFu;
+    uint64_t unclosed = 0;
+    long n = bench_read_nm(nm, ranges, 4096, "bench_begin", &begin, "bench_end", &end);
+    size_t seg, i;
+    if (n <= 0) {
+        fprintf(stderr, "fixel-bench: no function ranges in %s\n", nm);
+        return 1;
+    }
+    if (begin == 0xFFFFFFFFu || end == 0xFFFFFFFFu) {
+        fprintf(stderr, "fixel-bench: bench_begin / bench_end not in %s\n", nm);
+        return 1;
+    }
+    seg = bench_trace_count(stdin, ranges, (size_t)n, begin, end, counts, 4096, &unclosed);
+    for (i = 0; i < seg && i < 4096; i++)
+        printf("%llu\n", (unsigned long long)counts[i]);
+    if (unclosed)
+        fprintf(stderr, "fixel-bench: the trace ended inside a measurement\n");
+    return 0;
+}
+
+/* ---- ram: what the caller provides per scene ------------------------------------ */
+
+static int cmd_ram(void)
+{
+    size_t si;
+    const uint32_t band_rows = 24;
+    printf("# RAM/flash the caller provides per scene at %dx%d RGB565 (bytes). frame: full framebuffer;\n"
+           "# depth: full depth buffer; bands: two %u-row colour bands + one depth band (issue 6);\n"
+           "# tex0: level 0 (point/bilinear); chain: all levels (trilinear); verts: fxl_vertex_t data\n",
+           W, H, (unsigned)band_rows);
+    printf("%-13s %-8s %8s %8s %8s %8s %8s %8s\n", "scene", "texture", "frame", "depth", "bands", "tex0", "chain",
+           "verts");
+    for (si = 0; si < NSCENES; si++) {
+        scene_t s;
+        host_texture_t tex;
+        if (scene_build(scenes[si], W, H, &s) != SCENE_OK)
+            return 1;
+        if (texture_make(&tex, s.texture) != 0) {
+            scene_free(&s);
+            return 1;
+        }
+        printf("%-13s %-8s %8u %8u %8u %8u %8u %8u\n", scenes[si], texture_name(s.texture),
+               (unsigned)FXL_TARGET_BYTES(W, H), (unsigned)FXL_TARGET_BYTES(W, H),
+               (unsigned)(3u * FXL_TARGET_BYTES(W, band_rows)), (unsigned)(tex.width * tex.height * 2u),
+               (unsigned)(tex.texel_count * 2u), (unsigned)(3u * s.tri_count * sizeof(fxl_vertex_t)));
+        texture_free(&tex);
+        scene_free(&s);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    options_t o;
+    int i;
+    const char *cmd;
+    memset(&o, 0, sizeof o);
+    o.runs = 5;
+    o.fw_filters = "point,bilinear,trilinear";
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    cmd = argv[1];
+    if (strcmp(cmd, "count-trace") == 0) {
+        if (argc != 3) {
+            usage(stderr);
+            return 2;
+        }
+        return cmd_count_trace(argv[2]);
+    }
+    for (i = (strcmp(cmd, "gen-fw") == 0 ? 3 : 2); i < argc; i++) {
+        const char *a = argv[i];
+        const char **dst = NULL;
+        if (i + 1 >= argc) {
+            fprintf(stderr, "fixel-bench: %s needs a value\n", a);
+            return 2;
+        }
+        if (strcmp(a, "--scene") == 0)
+            dst = &o.scene;
+        else if (strcmp(a, "--method") == 0)
+            dst = &o.method;
+        else if (strcmp(a, "--filter") == 0)
+            dst = &o.filter;
+        else if (strcmp(a, "--host-ir") == 0)
+            dst = &o.host_ir;
+        else if (strcmp(a, "--m4") == 0)
+            dst = &o.m4;
+        else if (strcmp(a, "--m0") == 0)
+            dst = &o.m0;
+        else if (strcmp(a, "--csv") == 0)
+            dst = &o.csv;
+        else if (strcmp(a, "--plot-dir") == 0)
+            dst = &o.plot_dir;
+        else if (strcmp(a, "--filters") == 0)
+            dst = &o.fw_filters;
+        else if (strcmp(a, "--runs") == 0)
+            o.runs = atoi(argv[i + 1]);
+        else {
+            fprintf(stderr, "fixel-bench: unknown option %s\n", a);
+            usage(stderr);
+            return 2;
+        }
+        if (dst)
+            *dst = argv[i + 1];
+        i++;
+    }
+    if (strcmp(cmd, "accuracy") == 0)
+        return cmd_accuracy(&o);
+    if (strcmp(cmd, "ram") == 0)
+        return cmd_ram();
+    if (strcmp(cmd, "draw") == 0)
+        return cmd_draw(&o);
+    if (strcmp(cmd, "gen-fw") == 0) {
+        if (argc < 3) {
+            usage(stderr);
+            return 2;
+        }
+        return cmd_gen_fw(argv[2], &o);
+    }
+    usage(stderr);
+    return 2;
+}
