@@ -36,7 +36,7 @@ help:
 	@echo "make test       build, then ctest --output-on-failure -j$(CTEST_JOBS)"
 	@echo "make firmware   cross-build the core for $(FW_CPUS) (build-fw-*),"
 	@echo "                print sizes, check the archives use no libc"
-	@echo "make bench      build, then host_sim/scripts/bench.sh"
+	@echo "make bench      build, then host_sim/scripts/bench.sh and the stability sweeps"
 	@echo "make stability  build, then host_sim/scripts/stability.sh"
 	@echo "make sanitize   ASan+UBSan Debug build in $(ASAN_DIR)/ and ctest there"
 	@echo "make cppcheck   static analysis of src/ and port/ (informational)"
@@ -90,6 +90,8 @@ bench: build
 	  echo "make bench: host_sim/scripts/bench.sh is not available yet"; exit 1; \
 	fi
 	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/bench.sh
+	@# issue 5: the stability sweeps are part of the benchmark too
+	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/stability.sh
 
 stability: build
 	@if [ ! -f host_sim/scripts/stability.sh ]; then \
