@@ -175,12 +175,22 @@ static void fill_clip(const fxl_target_t *t, uint16_t *buf, uint16_t v)
     int32_t y;
     /* Offsets: 0 <= y - origin_y < height and 0 <= x0 - origin_x <= width,
      * so (y - origin_y) * stride + (x0 - origin_x) <= stride * height
-     * <= INT32_MAX. Computed in size_t all the same. */
+     * < 2^26. Computed in size_t all the same. */
     for (y = c.y0; y < c.y1; y++) {
         uint16_t *row = buf + (size_t)(y - t->origin_y) * (size_t)t->stride +
                         (size_t)(c.x0 - t->origin_x);
-        int32_t i;
-        for (i = 0; i < w; i++) {
+        int32_t i = 0;
+        /* Four stores per iteration: a band clear is a large share of a
+         * band's time on a Cortex-M (3 instructions per pixel rolled up).
+         * Halfword stores only: a wider store would alias the buffer's
+         * uint16_t type. */
+        for (; i + 4 <= w; i += 4) {
+            row[i] = v;
+            row[i + 1] = v;
+            row[i + 2] = v;
+            row[i + 3] = v;
+        }
+        for (; i < w; i++) {
             row[i] = v;
         }
     }
