@@ -28,29 +28,14 @@ typedef struct mipctx {
     uint32_t key;
 } mipctx_t;
 
-static int is_pow2(uint32_t v)
-{
-    return v != 0u && (v & (v - 1u)) == 0u;
-}
-
-static uint32_t log2_pow2(uint32_t v)
-{
-    uint32_t n = 0;
-    while (v > 1u) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 uint32_t fxl_mip_levels(uint32_t width, uint32_t height)
 {
     uint32_t lw, lh;
 
-    if (!is_pow2(width) || !is_pow2(height))
+    if (!fxl__is_pow2(width) || !fxl__is_pow2(height))
         return 0u;
-    lw = log2_pow2(width);
-    lh = log2_pow2(height);
+    lw = fxl__log2_pow2(width);
+    lh = fxl__log2_pow2(height);
     if (lw > FXL_TEX_MAX_LOG2 || lh > FXL_TEX_MAX_LOG2)
         return 0u;
     return 1u + (lw > lh ? lw : lh);

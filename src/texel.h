@@ -15,6 +15,23 @@
 #include <stdint.h>
 #include "fixel/texture.h"
 
+/* Power-of-two sizes (texture.c, mip.c). */
+static inline int fxl__is_pow2(uint32_t v)
+{
+    return v != 0u && (v & (v - 1u)) == 0u;
+}
+
+/* log2 of a power of two (v >= 1). */
+static inline uint32_t fxl__log2_pow2(uint32_t v)
+{
+    uint32_t n = 0;
+    while (v > 1u) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
 /* Side (log2) of mip level `level` of a side of 2^log2_size: halved per
  * level, never below 1 texel. */
 static inline uint32_t fxl__level_log2(uint32_t log2_size, uint32_t level)

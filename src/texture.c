@@ -6,21 +6,6 @@
 #include "fixel/texture.h"
 #include "texel.h"
 
-static int is_pow2(uint32_t v)
-{
-    return v != 0u && (v & (v - 1u)) == 0u;
-}
-
-static uint32_t log2_pow2(uint32_t v)
-{
-    uint32_t n = 0;
-    while (v > 1u) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 uint32_t fxl_texfmt_bytes(fxl_texfmt_t format)
 {
     switch (format) {
@@ -43,10 +28,10 @@ fxl_status_t fxl_texture_init(fxl_texture_t *t, const void *texels, uint32_t wid
         return FXL_ERR_ARG;
     if (fxl_texfmt_bytes(format) == 0u)
         return FXL_ERR_ARG;
-    if (!is_pow2(width) || !is_pow2(height))
+    if (!fxl__is_pow2(width) || !fxl__is_pow2(height))
         return FXL_ERR_UNSUPPORTED;
-    lw = log2_pow2(width);
-    lh = log2_pow2(height);
+    lw = fxl__log2_pow2(width);
+    lh = fxl__log2_pow2(height);
     if (lw > FXL_TEX_MAX_LOG2 || lh > FXL_TEX_MAX_LOG2)
         return FXL_ERR_UNSUPPORTED;
     max_levels = 1u + (lw > lh ? lw : lh);
