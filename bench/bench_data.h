@@ -1,12 +1,14 @@
 /* bench_data.h - the data fixel-bench gen-fw bakes for the firmware: the
  * scenes' screen-space triangles (the same fxl_vertex_t values the host
  * benchmark draws), their textures (full mip chains) and the list of
- * configurations to measure. */
+ * configurations to measure; optionally the meshes of the front-end
+ * benchmark. */
 #ifndef FXL_BENCH_DATA_H
 #define FXL_BENCH_DATA_H
 
 #include <stdint.h>
 #include "fixel/fixel.h"
+#include "fixel/pipeline.h"
 
 typedef struct bench_scene {
     const char *name;
@@ -22,7 +24,17 @@ typedef struct bench_cfg {
     const char *name;            /* "scene method filter" */
 } bench_cfg_t;
 
+/* The front-end benchmark's meshes (bench_frontend.h); bench_nmeshes is 0
+ * unless gen-fw ran with --meshes 1. */
+typedef struct bench_mesh {
+    const char *name;
+    uint8_t texgen;              /* fxl_texgen_mode_t of the texgen level */
+    fxl_mesh_t mesh;
+} bench_mesh_t;
+
 extern const bench_scene_t bench_scenes[];
+extern const bench_mesh_t bench_meshes[];
+extern const uint32_t bench_nmeshes;
 extern const bench_cfg_t bench_cfgs[];
 extern const uint32_t bench_ncfg;
 

@@ -15,10 +15,15 @@
  *   reading, i.e. about 80 instructions per frame.
  * Output lines (semihosting): "calib <ticks> <instructions>", then per
  * configuration "cfg <scene> <method> <filter> <ticks> <harness_ticks> <status>".
+ * With front-end meshes in the data (gen-fw --meshes 1), then per mesh,
+ * level and vertex cache (bench_frontend.h) "fe <mesh> <level> <cache>
+ * <ticks> <status>": one fxl_pipeline_emit call into a callback that does
+ * nothing (fixel-bench frontend converts ticks with the calib line).
  */
 #include <stdint.h>
 
 #include "bench_data.h"
+#include "bench_frontend.h"
 #include "bench_fw.h"
 
 #define FB_W 320
@@ -29,6 +34,7 @@
 #define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
 
 static uint16_t fb[FB_W * FB_H];
+static fxl_vcache_entry_t vcache[BENCH_FE_CACHE];
 
 /* The trace counter counts between these two (see bench_lib.h). */
 __attribute__((noinline)) void bench_begin(void);
@@ -168,6 +174,34 @@ int main(void)
         *p = 0;
         fw_write(line);
         bad |= st != FXL_OK;
+    }
+    for (k = 0; k < bench_nmeshes; k++) {
+        const bench_mesh_t *bm = &bench_meshes[k];
+        int lv, c;
+        for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
+            for (c = 0; c < 2; c++) {
+                fxl_pipeline_t p;
+                uint32_t ntri = 0, tk = 0;
+                fxl_status_t st = bench_fe_setup(&p, lv, bm->texgen);
+                char *q = line;
+                if (st == FXL_OK)
+                    st = fxl_pipeline_set_vertex_cache(&p, c ? vcache : 0, c ? BENCH_FE_CACHE : 0u);
+                if (st == FXL_OK) {
+                    t0 = ticks_now();
+                    st = fxl_pipeline_emit(&p, &bm->mesh, bench_fe_sink, &ntri, 0);
+                    tk = ticks_since(t0);
+                }
+                put_str(&q, "fe ");
+                put_str(&q, bm->name);
+                put_str(&q, " ");
+                put_str(&q, bench_fe_level_names[lv]);
+                put_str(&q, c ? " 1 " : " 0 ");
+                put_u32(&q, tk);
+                put_str(&q, st == FXL_OK ? " ok\n" : " error\n");
+                *q = 0;
+                fw_write(line);
+                bad |= st != FXL_OK;
+            }
     }
     return bad;
 }

@@ -400,6 +400,17 @@ fxl_status_t fxl_pipeline_init(fxl_pipeline_t *p, int32_t width, int32_t height)
     p->light.ambient[0] = p->light.ambient[1] = p->light.ambient[2] = 64;
     p->light.diffuse[0] = p->light.diffuse[1] = p->light.diffuse[2] = 191;
     fxl_texgen_defaults(&p->texgen);
+    p->vcache = NULL;
+    p->vcache_count = 0;
+    return FXL_OK;
+}
+
+fxl_status_t fxl_pipeline_set_vertex_cache(fxl_pipeline_t *p, fxl_vcache_entry_t *entries,
+                                           uint32_t count)
+{
+    if (!p || (!entries && count > 0)) return FXL_ERR_ARG;
+    p->vcache = count > 0 ? entries : NULL;
+    p->vcache_count = entries ? count : 0;
     return FXL_OK;
 }
 
@@ -514,13 +525,14 @@ static fxl_status_t to_screen(int64_t ndc_q30, int64_t g_q30, int64_t centre, in
     return FXL_OK;
 }
 
-fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
+/* The position part of fxl_xform_project: screen x, y and inv_w from clip
+ * x, y, w alone (so the vertex cache can keep it). */
+static fxl_status_t project_pos(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
 {
     int s;
     uint64_t wn, rec;
     int64_t ndc_x, ndc_y, inv_w, g_q30;
     fxl_status_t st;
-    if (!xf || !c || !out) return FXL_ERR_ARG;
     if (c->w < xf->near_q32 || c->w <= 0 || beyond_limit(c->w)) return FXL_ERR_RANGE;
     /* One reciprocal per vertex: w = wn * 2^(s - 31) with wn in [2^31, 2^32),
      * rec = 2^62 / wn in (2^30, 2^31] (31 significant bits), so
@@ -539,9 +551,23 @@ fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, f
     if (inv_w > (int64_t)0xFFFFFFFFu) inv_w = 0xFFFFFFFF;
     if (inv_w < 1) inv_w = 1;
     out->inv_w = (uint32_t)inv_w;
+    return FXL_OK;
+}
+
+/* The attribute part: u, v as they are, colour packed. */
+static void project_attr(const fxl_clipvert_t *c, fxl_vertex_t *out)
+{
     out->u = c->u;
     out->v = c->v;
     out->color = pack_q8(c->r, c->g, c->b);
+}
+
+fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
+{
+    fxl_status_t st;
+    if (!xf || !c || !out) return FXL_ERR_ARG;
+    if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
+    project_attr(c, out);
     return FXL_OK;
 }
 
@@ -591,47 +617,135 @@ static int64_t snapped_area2(const fxl_vertex_t *a, const fxl_vertex_t *b, const
     return bx * cy - cx * by; /* |coords| < 2^20 grid units: products < 2^42 */
 }
 
+/* The clipper returns an untouched triangle as its three input vertices in
+ * order; a cut one has a vertex on a plane, so some x, y, w differ. */
+static int unclipped(const fxl_clipvert_t in[3], const fxl_clipvert_t poly[3])
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (in[k].x != poly[k].x || in[k].y != poly[k].y || in[k].w != poly[k].w) return 0;
+    return 1;
+}
+
+/* Everything about mesh vertex i that does not depend on the triangle:
+ * clip position, lit colour, per-vertex texgen data. e->tag is left alone. */
+static fxl_status_t vertex_compute(const fxl_pipeline_t *p, const fxl_xform_t *xf,
+                                   const fxl_mesh_t *m, uint32_t i, fxl_vcache_entry_t *e)
+{
+    fxl_clipvert_t c;
+    fxl_status_t st;
+    uint16_t colour;
+    if ((st = fxl_xform_clip(xf, &m->pos[i], &c)) != FXL_OK) return st;
+    e->x = c.x;
+    e->y = c.y;
+    e->w = c.w;
+    colour = m->color ? m->color[i] : p->material;
+    if (p->lighting && m->normal) {
+        fxl_vec3_t ne;
+        eye_normal(xf, &m->normal[i], &ne);
+        colour = fxl_light_shade(&p->light, &ne, colour);
+    }
+    e->color = colour;
+    if (p->texgen.mode != FXL_TEXGEN_NONE) {
+        fxl_vec3_t tp;
+        if (p->texgen.space == FXL_TEXGEN_EYE) {
+            if ((st = fxl_xform_eye(xf, &m->pos[i], &tp)) != FXL_OK) return st;
+        } else {
+            tp = m->pos[i];
+        }
+        fxl__texgen_vertex(&p->texgen, &tp, e->tex);
+    } else {
+        e->tex[0] = e->tex[1] = e->tex[2] = 0;
+    }
+    e->projected = 0;
+    return FXL_OK;
+}
+
+/* Screen vertex k of a triangle that the clipper passed through unchanged
+ * (poly[k] is cv[k], so its x, y, inv_w depend on the mesh vertex alone):
+ * from the cache entry when it still holds vertex idx and was projected,
+ * else projected now and kept. */
+static fxl_status_t project_cached(const fxl_xform_t *xf, fxl_vcache_entry_t *cache, uint32_t ncache,
+                                   uint32_t idx, const fxl_clipvert_t *c, fxl_vertex_t *out)
+{
+    fxl_vcache_entry_t *e = &cache[idx < ncache ? idx : idx % ncache];
+    fxl_status_t st;
+    if (e->tag == idx && e->projected) {
+        out->x = e->sx;
+        out->y = e->sy;
+        out->inv_w = e->inv_w;
+    } else {
+        if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
+        if (e->tag == idx) { /* not evicted by another corner meanwhile */
+            e->sx = out->x;
+            e->sy = out->y;
+            e->inv_w = out->inv_w;
+            e->projected = 1;
+        }
+    }
+    project_attr(c, out);
+    return FXL_OK;
+}
+
 fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl_emit_fn fn,
                                void *user, fxl_stats_t *stats)
 {
     fxl_xform_t xf;
     fxl_status_t st;
-    uint32_t t;
+    fxl_vcache_entry_t *cache = p ? p->vcache : NULL;
+    uint32_t t, ncache = 0;
     if (!p || !m || !fn || !m->pos || (!m->idx && m->tri_count)) return FXL_ERR_ARG;
     if (p->cull > FXL_CULL_CCW || p->texgen.mode > FXL_TEXGEN_CUBE) return FXL_ERR_ARG;
+    if (p->texgen.mode != FXL_TEXGEN_NONE && m->tri_count > 0 &&
+        (p->texgen.axis > FXL_AXIS_Z || p->texgen.plane > FXL_PLANE_XZ ||
+         p->texgen.space > FXL_TEXGEN_EYE))
+        return FXL_ERR_ARG;
     if ((st = fxl_pipeline_prepare(p, &xf)) != FXL_OK) return st;
+    if (cache && p->vcache_count > 0) {
+        /* Only entries 0 .. min(count, vert_count) - 1 can be used: empty
+         * those, whatever an earlier draw left there. */
+        ncache = p->vcache_count;
+        for (t = 0; t < ncache && t < m->vert_count; t++) cache[t].tag = FXL_VCACHE_EMPTY;
+    }
     for (t = 0; t < m->tri_count; t++) {
         fxl_clipvert_t cv[3], poly[FXL_CLIP_MAX_VERTS];
         fxl_vertex_t scr[FXL_CLIP_MAX_VERTS];
-        uint32_t n, k, idx[3];
+        int32_t vt[3][3];
+        uint32_t n, k, idx3[3];
         for (k = 0; k < 3; k++) {
-            uint16_t colour;
-            idx[k] = m->idx[3 * t + k];
-            if (idx[k] >= m->vert_count) return FXL_ERR_RANGE;
-            if ((st = fxl_xform_clip(&xf, &m->pos[idx[k]], &cv[k])) != FXL_OK) return st;
-            colour = m->color ? m->color[idx[k]] : p->material;
-            if (p->lighting && m->normal) {
-                fxl_vec3_t ne;
-                eye_normal(&xf, &m->normal[idx[k]], &ne);
-                colour = fxl_light_shade(&p->light, &ne, colour);
+            uint32_t idx = idx3[k] = m->idx[3 * t + k];
+            fxl_vcache_entry_t local, *e = &local;
+            if (idx >= m->vert_count) return FXL_ERR_RANGE;
+            if (ncache) {
+                /* Direct-mapped; the division only when the cache is
+                 * smaller than the mesh. */
+                e = &cache[idx < ncache ? idx : idx % ncache];
+                if (e->tag != idx) {
+                    e->tag = FXL_VCACHE_EMPTY; /* stays empty if this fails */
+                    if ((st = vertex_compute(p, &xf, m, idx, e)) != FXL_OK) return st;
+                    e->tag = idx;
+                }
+            } else if ((st = vertex_compute(p, &xf, m, idx, e)) != FXL_OK) {
+                return st;
             }
-            unpack_q8(colour, &cv[k]);
+            /* Copy out now: a later corner may evict this entry. */
+            cv[k].x = e->x;
+            cv[k].y = e->y;
+            cv[k].w = e->w;
+            unpack_q8(e->color, &cv[k]);
             if (m->uv && p->texgen.mode == FXL_TEXGEN_NONE) {
-                cv[k].u = m->uv[idx[k]].u;
-                cv[k].v = m->uv[idx[k]].v;
+                cv[k].u = m->uv[idx].u;
+                cv[k].v = m->uv[idx].v;
+            } else {
+                cv[k].u = cv[k].v = 0;
             }
+            vt[k][0] = e->tex[0];
+            vt[k][1] = e->tex[1];
+            vt[k][2] = e->tex[2];
         }
         if (p->texgen.mode != FXL_TEXGEN_NONE) {
-            fxl_vec3_t tp[3];
             fxl_texcoord_t tc[3];
-            for (k = 0; k < 3; k++) {
-                if (p->texgen.space == FXL_TEXGEN_EYE) {
-                    if ((st = fxl_xform_eye(&xf, &m->pos[idx[k]], &tp[k])) != FXL_OK) return st;
-                } else {
-                    tp[k] = m->pos[idx[k]];
-                }
-            }
-            if ((st = fxl_texgen_triangle(&p->texgen, tp, tc)) != FXL_OK) return st;
+            fxl__texgen_finish(&p->texgen, (const int32_t(*)[3])vt, tc);
             for (k = 0; k < 3; k++) { cv[k].u = tc[k].u; cv[k].v = tc[k].v; }
         }
         if ((st = fxl_clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
@@ -639,8 +753,14 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
             if (stats) { stats->triangles++; stats->culled_outside++; }
             continue;
         }
-        for (k = 0; k < n; k++)
-            if ((st = fxl_xform_project(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
+        if (ncache && n == 3 && unclipped(cv, poly)) {
+            for (k = 0; k < 3; k++)
+                if ((st = project_cached(&xf, cache, ncache, idx3[k], &poly[k], &scr[k])) != FXL_OK)
+                    return st;
+        } else {
+            for (k = 0; k < n; k++)
+                if ((st = fxl_xform_project(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
+        }
         for (k = 1; k + 1 < n; k++) {
             fxl_vertex_t tri[3];
             int64_t area;

@@ -31,4 +31,13 @@ void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
  * |x|, |y| < 2^62. (0, 0) gives 0. */
 uint32_t fxl__atan2_q32(int64_t y, int64_t x);
 
+/* Texture-coordinate generation in two steps (fxl_texgen_triangle is the
+ * three calls of the first and one of the second). The per-vertex data
+ * out[3] is: planar (raw u, raw v, 0); cylindrical / spherical (raw u =
+ * theta q16 in [0, 65536], raw v, pole flag); cube (the position x, y, z);
+ * none (0, 0, 0). tg must be valid (fxl_texgen_triangle checks it). */
+void fxl__texgen_vertex(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3]);
+/* Seams, poles, cube face, then scale and offset, for one triangle. */
+void fxl__texgen_finish(const fxl_texgen_t *tg, const int32_t vt[3][3], fxl_texcoord_t out[3]);
+
 #endif

@@ -2,11 +2,14 @@
  * spherical, cube map (the "texture map shapes"). Conventions are in
  * pipeline.h and docs/pipeline.md.
  *
- * Work is per triangle, not per vertex, because two things need the other
- * vertices: the seam (u jumps from ~1 to ~0 where theta wraps: shifting u by
- * whole periods keeps the triangle from stretching the whole texture across
- * itself) and the poles (theta is undefined on the axis). The cube map also
- * picks one face per triangle so a triangle never spans two atlas tiles.
+ * The work is split in two: fxl__texgen_vertex() does what depends on one
+ * vertex alone (the atan2 and square roots of the polar maps, the planar
+ * pick), so the pipeline's vertex cache can keep it; fxl__texgen_finish()
+ * does per triangle what needs the other vertices: the seam (u jumps from
+ * ~1 to ~0 where theta wraps: shifting u by whole periods keeps the
+ * triangle from stretching the whole texture across itself) and the poles
+ * (theta is undefined on the axis). The cube map also picks one face per
+ * triangle so a triangle never spans two atlas tiles.
  */
 #include "pipeline_int.h"
 
@@ -31,26 +34,23 @@ static void axis_frame(int axis, const fxl_vec3_t *p, int64_t *a, int64_t *b, in
 
 static int64_t mag(int64_t x) { return x < 0 ? -x : x; }
 
-/* Cylindrical / spherical raw (u, v) in q16 plus the pole flag. */
-static void polar(const fxl_texgen_t *tg, const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3],
-                  int pole[3])
+/* Cylindrical / spherical raw (u, v) in q16 plus the pole flag of one
+ * vertex: u in [0, 65536], v in [0, 65536] (spherical) or h (cylindrical). */
+static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
 {
-    int i;
-    for (i = 0; i < 3; i++) {
-        int64_t a, b, h, r;
-        axis_frame(tg->axis, &pos[i], &a, &b, &h);
-        /* |a|, |b| < 2^31: a^2 + b^2 < 2^63 fits in uint64. */
-        r = (int64_t)fxl__isqrt64((uint64_t)(a * a) + (uint64_t)(b * b)); /* q16 */
-        /* On (or within 2^-10 of the distance from) the axis, theta is
-         * meaningless: a pole. */
-        pole[i] = r * 1024 <= mag(h);
-        u[i] = (int64_t)((fxl__atan2_q32(b, a) + 0x8000u) >> 16); /* [0, 65536] */
-        if (tg->mode == FXL_TEXGEN_SPHERICAL) {
-            /* phi in [0, 2^31] q32 turns; v = phi / half turn, q16. */
-            v[i] = (int64_t)((fxl__atan2_q32(r, h) + 0x4000u) >> 15);
-        } else {
-            v[i] = h;
-        }
+    int64_t a, b, h, r;
+    axis_frame(tg->axis, pos, &a, &b, &h);
+    /* |a|, |b| < 2^31: a^2 + b^2 < 2^63 fits in uint64. */
+    r = (int64_t)fxl__isqrt64((uint64_t)(a * a) + (uint64_t)(b * b)); /* q16 */
+    /* On (or within 2^-10 of the distance from) the axis, theta is
+     * meaningless: a pole. */
+    out[2] = r * 1024 <= mag(h);
+    out[0] = (int32_t)((fxl__atan2_q32(b, a) + 0x8000u) >> 16); /* [0, 65536] */
+    if (tg->mode == FXL_TEXGEN_SPHERICAL) {
+        /* phi in [0, 2^31] q32 turns; v = phi / half turn, q16. */
+        out[1] = (int32_t)((fxl__atan2_q32(r, h) + 0x4000u) >> 15);
+    } else {
+        out[1] = (int32_t)h; /* h is a q16 input coordinate */
     }
 }
 
@@ -113,38 +113,70 @@ static fxl_q16_t scale_offset(int64_t raw, fxl_q16_t scale, fxl_q16_t offset)
     return fxl__to_i32(r, NULL);
 }
 
-fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3],
-                                 fxl_texcoord_t out[3])
+void fxl__texgen_vertex(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
 {
-    int64_t u[3], v[3];
-    int pole[3], i;
-    if (!tg || !pos || !out) return FXL_ERR_ARG;
-    if (tg->axis > FXL_AXIS_Z || tg->plane > FXL_PLANE_XZ || tg->space > FXL_TEXGEN_EYE)
-        return FXL_ERR_ARG;
+    out[0] = out[1] = out[2] = 0;
     switch (tg->mode) {
-    case FXL_TEXGEN_NONE:
-        for (i = 0; i < 3; i++) u[i] = v[i] = 0;
-        break;
     case FXL_TEXGEN_PLANAR:
-        for (i = 0; i < 3; i++) {
-            u[i] = tg->plane == FXL_PLANE_YZ ? pos[i].y : pos[i].x;
-            v[i] = tg->plane == FXL_PLANE_XY ? pos[i].y : pos[i].z;
-        }
+        out[0] = tg->plane == FXL_PLANE_YZ ? pos->y : pos->x;
+        out[1] = tg->plane == FXL_PLANE_XY ? pos->y : pos->z;
         break;
     case FXL_TEXGEN_CYLINDRICAL:
     case FXL_TEXGEN_SPHERICAL:
-        polar(tg, pos, u, v, pole);
+        polar(tg, pos, out);
+        break;
+    case FXL_TEXGEN_CUBE: /* the face is chosen per triangle */
+        out[0] = pos->x;
+        out[1] = pos->y;
+        out[2] = pos->z;
+        break;
+    default:
+        break;
+    }
+}
+
+void fxl__texgen_finish(const fxl_texgen_t *tg, const int32_t vt[3][3], fxl_texcoord_t out[3])
+{
+    int64_t u[3], v[3];
+    int pole[3], i;
+    fxl_vec3_t pos[3];
+    for (i = 0; i < 3; i++) {
+        u[i] = vt[i][0];
+        v[i] = vt[i][1];
+        pole[i] = vt[i][2] != 0;
+    }
+    switch (tg->mode) {
+    case FXL_TEXGEN_CYLINDRICAL:
+    case FXL_TEXGEN_SPHERICAL:
         fix_seam_and_poles(u, pole);
         break;
     case FXL_TEXGEN_CUBE:
+        for (i = 0; i < 3; i++) {
+            pos[i].x = vt[i][0];
+            pos[i].y = vt[i][1];
+            pos[i].z = vt[i][2];
+        }
         cube(pos, u, v);
         break;
-    default:
-        return FXL_ERR_ARG;
+    default: /* planar: per vertex already; none: zeros */
+        break;
     }
     for (i = 0; i < 3; i++) {
         out[i].u = scale_offset(u[i], tg->scale_u, tg->offset_u);
         out[i].v = scale_offset(v[i], tg->scale_v, tg->offset_v);
     }
+}
+
+fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3],
+                                 fxl_texcoord_t out[3])
+{
+    int32_t vt[3][3];
+    int i;
+    if (!tg || !pos || !out) return FXL_ERR_ARG;
+    if (tg->axis > FXL_AXIS_Z || tg->plane > FXL_PLANE_XZ || tg->space > FXL_TEXGEN_EYE ||
+        tg->mode > FXL_TEXGEN_CUBE)
+        return FXL_ERR_ARG;
+    for (i = 0; i < 3; i++) fxl__texgen_vertex(tg, &pos[i], vt[i]);
+    fxl__texgen_finish(tg, (const int32_t(*)[3])vt, out);
     return FXL_OK;
 }

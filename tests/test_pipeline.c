@@ -12,6 +12,7 @@
 #include "unity.h"
 #include "fixel/pipeline.h"
 #include "meshes.h"
+#include "crc32.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -768,6 +769,197 @@ static void test_mesh_draw_clipped_wall_covers_each_pixel_once(void)
     TEST_ASSERT_TRUE(px == 0 || px2 == 0);
 }
 
+/* ---- the vertex cache ------------------------------------------------------ */
+
+/* Every emitted triangle, in order, for comparing draws vertex by vertex. */
+typedef struct emitted {
+    fxl_vertex_t v[6000][3];
+    uint32_t n;
+} emitted_t;
+
+static fxl_status_t emitted_fn(void *user, const fxl_vertex_t tri[3])
+{
+    emitted_t *e = (emitted_t *)user;
+    if (e->n >= 6000) return FXL_ERR_NOMEM;
+    memcpy(e->v[e->n++], tri, sizeof(fxl_vertex_t) * 3);
+    return FXL_OK;
+}
+
+enum { VC_W = 160, VC_H = 120, VC_CASES = 6 };
+
+/* Case c of the comparison: a mesh and a pipeline set-up covering every
+ * texgen mode (seams, poles and cube faces are per triangle), object and
+ * eye space, lighting, per-vertex colours and the near-plane clipper
+ * (the tunnel runs through the eye). */
+static void vc_case(int c, fxl_angle_t spin, fxl_mesh_t *m, fxl_pipeline_t *p)
+{
+    fxl_mat4_t r, tr;
+    int ok = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(p, VC_W, VC_H));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(p, FXL_ANGLE_DEG(60), dq16(4.0 / 3.0),
+                                                               dq16(0.1), 0));
+    fxl_mat4_rotate_y(&r, (fxl_angle_t)(FXL_ANGLE_DEG(25) + spin));
+    fxl_mat4_translate(&tr, 0, 0, FXL_Q16_INT(-4));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_mul(&p->model, &tr, &r));
+    p->light.dir.x = dq16(-0.48); p->light.dir.y = dq16(0.6); p->light.dir.z = dq16(0.64);
+    switch (c) {
+    case 0: /* UV sphere, spherical texgen: seam column and pole fans, lit */
+        ok = meshes_sphere(m, 1.3, 32, 16) == 0;
+        p->texgen.mode = FXL_TEXGEN_SPHERICAL;
+        p->texgen.scale_u = FXL_Q16_INT(2);
+        p->lighting = 1;
+        break;
+    case 1: /* tunnel through the eye: cylindrical, near clipping */
+        ok = meshes_cylinder(m, 1.0, -2.0, 30.0, 24, 32, 1) == 0;
+        fxl_mat4_rotate_x(&p->model, FXL_ANGLE_DEG(-90));
+        p->texgen.mode = FXL_TEXGEN_CYLINDRICAL;
+        p->texgen.scale_u = FXL_Q16_INT(4);
+        p->cull = FXL_CULL_NONE;
+        break;
+    case 2: /* cube, cube map in eye space, per-vertex colours, lit */
+        ok = meshes_cube(m, 1.0) == 0 && meshes_set_color(m, 0xF81Fu) == 0;
+        p->texgen.mode = FXL_TEXGEN_CUBE;
+        p->texgen.space = FXL_TEXGEN_EYE;
+        p->lighting = 1;
+        break;
+    case 3: /* floor grid, planar XZ texgen in eye space */
+        ok = meshes_floor(m, -1.0, -6.0, 6.0, -8.0, 3.0, 12, 11, 1.0) == 0;
+        p->texgen.mode = FXL_TEXGEN_PLANAR;
+        p->texgen.plane = FXL_PLANE_XZ;
+        p->texgen.space = FXL_TEXGEN_EYE;
+        break;
+    case 4: /* sphere with its own uv, lit, no texgen */
+        ok = meshes_sphere(m, 1.0, 20, 10) == 0;
+        p->lighting = 1;
+        break;
+    default: /* cube, mesh uv, material colour, nothing else */
+        ok = meshes_cube(m, 1.2) == 0;
+        p->material = 0x07E0u;
+        break;
+    }
+    TEST_ASSERT_TRUE_MESSAGE(ok, "mesh builder failed");
+}
+
+/* Draw case c with the given cache (NULL: none); emitted triangles to *e,
+ * returns the frame CRC. */
+static uint32_t vc_draw(int c, fxl_angle_t spin, fxl_vcache_entry_t *cache, uint32_t count,
+                        emitted_t *e, fxl_stats_t *st)
+{
+    static uint16_t pixels[VC_W * VC_H];
+    static const uint16_t texels[16] = {0xF800, 0x07E0, 0x001F, 0xFFFF, 0x0000, 0xFFE0, 0x07FF, 0xF81F,
+                                        0x8410, 0x4208, 0xC618, 0x2104, 0xA145, 0x18E3, 0x7BEF, 0xFD20};
+    fxl_texture_t tex;
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_target_t t;
+    fxl_draw_t d;
+    uint32_t crc;
+    vc_case(c, spin, &m, &p);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_vertex_cache(&p, cache, count));
+    e->n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, emitted_fn, e, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 4, 4, FXL_TEXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, VC_W, VC_H, VC_W, FXL_PIXFMT_RGB565));
+    (void)fxl_target_clear(&t, 0);
+    fxl_draw_defaults(&d);
+    d.depth = 0;
+    d.texture = &tex;
+    d.shade = FXL_SHADE_GOURAUD;
+    d.texenv = FXL_TEXENV_MODULATE;
+    memset(st, 0, sizeof *st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, st));
+    crc = fxl_host_crc_target(&t);
+    meshes_free(&m);
+    return crc;
+}
+
+/* Field by field (fxl_vertex_t has padding bytes memcmp would see):
+ * index of the first differing triangle, or -1. */
+static long first_difference(const emitted_t *a, const emitted_t *b)
+{
+    uint32_t i, k;
+    for (i = 0; i < a->n && i < b->n; i++)
+        for (k = 0; k < 3; k++) {
+            const fxl_vertex_t *p = &a->v[i][k], *q = &b->v[i][k];
+            if (p->x != q->x || p->y != q->y || p->inv_w != q->inv_w || p->u != q->u || p->v != q->v ||
+                p->color != q->color)
+                return (long)i;
+        }
+    return a->n == b->n ? -1 : (long)i;
+}
+
+static void test_vertex_cache_output_bit_identical(void)
+{
+    static emitted_t ref, got;
+    /* Full size, a size that forces evictions within triangles (7 entries:
+     * ring neighbours collide), a single entry, and an oversized cache. */
+    static fxl_vcache_entry_t cache[2000];
+    static const uint32_t sizes[4] = {2000, 7, 1, 600};
+    int c, k;
+    for (c = 0; c < VC_CASES; c++) {
+        fxl_stats_t s0, s1;
+        uint32_t crc0 = vc_draw(c, 0, NULL, 0, &ref, &s0);
+        TEST_ASSERT_GREATER_THAN(0, ref.n);
+        for (k = 0; k < 4; k++) {
+            uint32_t i, crc1;
+            /* Garbage left by an earlier draw must not matter: fill the
+             * cache with a pattern that looks like valid tags. */
+            for (i = 0; i < sizes[k]; i++) {
+                memset(&cache[i], 0x11 * (int)(i % 7), sizeof cache[i]);
+                cache[i].tag = i;
+            }
+            crc1 = vc_draw(c, 0, cache, sizes[k], &got, &s1);
+            snprintf(msg, sizeof msg, "case %d cache %u: %u triangles vs %u without", c, (unsigned)sizes[k],
+                     (unsigned)got.n, (unsigned)ref.n);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(ref.n, got.n, msg);
+            {
+                long d = first_difference(&ref, &got);
+                if (d >= 0) {
+                    snprintf(msg, sizeof msg,
+                             "case %d cache %u: triangle %ld differs (x0 %ld vs %ld, inv_w0 %lu vs %lu, u0 %ld vs %ld)",
+                             c, (unsigned)sizes[k], d, (long)ref.v[d][0].x, (long)got.v[d][0].x,
+                             (unsigned long)ref.v[d][0].inv_w, (unsigned long)got.v[d][0].inv_w,
+                             (long)ref.v[d][0].u, (long)got.v[d][0].u);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+            snprintf(msg, sizeof msg, "case %d cache %u: frame CRC", c, (unsigned)sizes[k]);
+            TEST_ASSERT_EQUAL_HEX32_MESSAGE(crc0, crc1, msg);
+            TEST_ASSERT_EQUAL_UINT32(s0.drawn, s1.drawn);
+            TEST_ASSERT_EQUAL_UINT32(s0.pixels, s1.pixels);
+            TEST_ASSERT_EQUAL_UINT32(s0.culled_backface, s1.culled_backface);
+            TEST_ASSERT_EQUAL_UINT32(s0.culled_outside, s1.culled_outside);
+        }
+        /* The same cache reused for a second draw with another model
+         * matrix: entries of the first draw must not leak into it. */
+        (void)vc_draw(c, FXL_ANGLE_DEG(40), cache, 2000, &got, &s1);
+        crc0 = vc_draw(c, FXL_ANGLE_DEG(40), NULL, 0, &ref, &s0);
+        (void)vc_draw(c, 0, cache, 2000, &got, &s1);
+        {
+            uint32_t crc1 = vc_draw(c, FXL_ANGLE_DEG(40), cache, 2000, &got, &s1);
+            snprintf(msg, sizeof msg, "case %d: reused cache, frame CRC", c);
+            TEST_ASSERT_EQUAL_HEX32_MESSAGE(crc0, crc1, msg);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(-1, (int)first_difference(&ref, &got), msg);
+        }
+    }
+}
+
+static void test_vertex_cache_arguments(void)
+{
+    fxl_pipeline_t p;
+    fxl_vcache_entry_t e[4];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 32, 32));
+    TEST_ASSERT_NULL(p.vcache);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_set_vertex_cache(NULL, e, 4));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_set_vertex_cache(&p, NULL, 4));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_vertex_cache(&p, e, 4));
+    TEST_ASSERT_EQUAL_UINT32(4, p.vcache_count);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_vertex_cache(&p, NULL, 0));
+    TEST_ASSERT_NULL(p.vcache);
+    /* the size macro sizes static arrays */
+    TEST_ASSERT_EQUAL_UINT32(sizeof e, FXL_VCACHE_BYTES(4));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -791,5 +983,7 @@ int main(void)
     RUN_TEST(test_host_meshes_wind_counter_clockwise_toward_normals);
     RUN_TEST(test_cube_mesh_shows_at_most_three_faces);
     RUN_TEST(test_mesh_draw_clipped_wall_covers_each_pixel_once);
+    RUN_TEST(test_vertex_cache_output_bit_identical);
+    RUN_TEST(test_vertex_cache_arguments);
     return UNITY_END();
 }

@@ -312,22 +312,55 @@ void pscene_part_draw(const pscene_t *s, int i, const fxl_draw_t *base, fxl_draw
     }
 }
 
+/* A vertex cache for the largest part (pipeline.h), so every mesh vertex
+ * is transformed, lit and texgen'd once per draw; the output is
+ * bit-identical to drawing without it. NULL (no cache) when out of
+ * memory. Released with free(). */
+static fxl_vcache_entry_t *part_cache(const pscene_t *s, uint32_t *count)
+{
+    uint32_t n = 0;
+    int i;
+    for (i = 0; i < s->parts; i++) {
+        if (s->part[i].mesh.vert_count > n) {
+            n = s->part[i].mesh.vert_count;
+        }
+    }
+    *count = n;
+    return n ? (fxl_vcache_entry_t *)malloc(FXL_VCACHE_BYTES(n)) : NULL;
+}
+
+/* The part's pipeline with the cache set (a copy: the stored pipeline never
+ * keeps a pointer to the temporary cache). */
+static void part_pipe(const pscene_t *s, int i, fxl_vcache_entry_t *cache, uint32_t count,
+                      fxl_pipeline_t *out)
+{
+    *out = s->part[i].pipe;
+    (void)fxl_pipeline_set_vertex_cache(out, cache, cache ? count : 0);
+}
+
 fxl_status_t pscene_draw(pscene_t *s, const fxl_draw_t *base, fxl_target_t *t,
                          fxl_stats_t *stats)
 {
+    fxl_vcache_entry_t *cache;
+    uint32_t count;
     int i;
     if (s == NULL || base == NULL || t == NULL) {
         return FXL_ERR_ARG;
     }
+    cache = part_cache(s, &count);
     for (i = 0; i < s->parts; i++) {
         fxl_draw_t d;
+        fxl_pipeline_t pipe;
         fxl_status_t st;
         pscene_part_draw(s, i, base, &d);
-        st = fxl_mesh_draw(&s->part[i].pipe, t, &d, &s->part[i].mesh, stats);
+        part_pipe(s, i, cache, count, &pipe);
+        st = fxl_mesh_draw(&pipe, t, &d, &s->part[i].mesh, stats);
         if (st != FXL_OK) {
+            free(cache);
             return st;
         }
     }
+    free(cache);
     return FXL_OK;
 }
 
@@ -361,23 +394,30 @@ fxl_status_t pscene_collect(pscene_t *s, const fxl_draw_t *base,
                             size_t *count)
 {
     collector_t c;
+    fxl_vcache_entry_t *cache;
+    uint32_t ncache;
     int i;
     if (s == NULL || base == NULL || draws == NULL || tris == NULL || count == NULL) {
         return FXL_ERR_ARG;
     }
     memset(&c, 0, sizeof(c));
+    cache = part_cache(s, &ncache);
     for (i = 0; i < s->parts; i++) {
+        fxl_pipeline_t pipe;
         fxl_status_t st;
         pscene_part_draw(s, i, base, &draws[i]);
         c.draw = &draws[i];
-        st = fxl_pipeline_emit(&s->part[i].pipe, &s->part[i].mesh, collect_one, &c, NULL);
+        part_pipe(s, i, cache, ncache, &pipe);
+        st = fxl_pipeline_emit(&pipe, &s->part[i].mesh, collect_one, &c, NULL);
         if (st != FXL_OK) {
+            free(cache);
             free(c.tris);
             *tris = NULL;
             *count = 0;
             return st;
         }
     }
+    free(cache);
     *tris = c.tris;
     *count = c.count;
     return FXL_OK;

@@ -3,8 +3,9 @@
 #
 #   FXL_BUILD_DIR=build FXL_BIN_DIR=build/bin bash host_sim/scripts/bench.sh
 #
-# Writes docs/bench/results.csv, docs/bench/*.png (gnuplot), and
-# docs/bench/footprint.txt; prints a summary table. Progress goes to stderr.
+# Writes docs/bench/results.csv, docs/bench/*.png (gnuplot),
+# docs/bench/footprint.txt and docs/bench/frontend.csv (instructions per
+# vertex of the 3D front end); prints summary tables. Progress goes to stderr.
 # Work files: build-bench-host/ (callgrind), build-bench-m4/, build-bench-m0/
 # (firmware), build-bench-size/ (footprint builds).
 # Optional tools, each skipped with a note when missing: valgrind (host
@@ -47,6 +48,8 @@ bench="$bin/fixel-bench"
 # ---- host instructions per pixel (callgrind), in the background ------------------
 host_ir=""
 cg_pid=""
+fe_ir=""
+fe_pid=""
 if have valgrind; then
     host_ir="$hostw/host_ir.txt"
     say "callgrind: every configuration, draw calls only (background)"
@@ -72,6 +75,22 @@ if have valgrind; then
         fi
     ) &
     cg_pid=$!
+    fe_ir="$hostw/fe_ir.txt"
+    say "callgrind: the 3D front end per vertex (background)"
+    (
+        rm -f "$hostw"/fe.out*
+        valgrind --tool=callgrind --collect-atstart=no --toggle-collect=fxl_pipeline_emit \
+            --callgrind-out-file="$hostw/fe.out" "$bench" frontend-run >"$hostw/fe_run.txt" 2>"$hostw/fe_valgrind.log"
+        : >"$fe_ir"
+        if grep -q '^# client requests: yes' "$hostw/fe_run.txt"; then
+            for f in "$hostw"/fe.out.*; do
+                name=$(sed -n 's/^desc: Trigger: Client Request: fe\///p' "$f")
+                tot=$(sed -n 's/^totals: //p;s/^summary: //p' "$f" | head -n 1)
+                [ -n "$name" ] && [ -n "$tot" ] && echo "${name//\// } $tot"
+            done >"$fe_ir"
+        fi
+    ) &
+    fe_pid=$!
 else
     say "valgrind not found (apt-get install valgrind): no host instruction counts"
 fi
@@ -90,8 +109,8 @@ qemu_run() { # elf fw_out [extra qemu args...]
 }
 if have arm-none-eabi-gcc; then
     say "firmware data from the host scenes"
-    "$bench" gen-fw "$m4w/data_all.c" --filters point,bilinear,trilinear
-    "$bench" gen-fw "$m0w/data_point.c" --filters point
+    "$bench" gen-fw "$m4w/data_all.c" --filters point,bilinear,trilinear --meshes 1
+    "$bench" gen-fw "$m0w/data_point.c" --filters point --meshes 1
     "$bench" gen-fw "$m4w/data_trace.c" --filters point,bilinear --scene floor --method subdiv16
     say "building the M4 (-O2) and M0+ (-O2) firmware"
     make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-O2 OUT="$root/$m4w/icount" DATA="$root/$m4w/data_all.c" >&2
@@ -198,6 +217,18 @@ if [ -n "$cg_pid" ]; then
     say "waiting for callgrind"
     wait "$cg_pid" || say "callgrind failed (see $hostw/valgrind.log)"
 fi
+if [ -n "$fe_pid" ]; then
+    wait "$fe_pid" || say "callgrind of the front end failed (see $hostw/fe_valgrind.log)"
+    [ -s "$fe_ir" ] || say "no host front-end counts (valgrind/callgrind.h missing at build time?)"
+fi
+
+# ---- the 3D front end per vertex (issue 7) ------------------------------------------
+say "front end per vertex: host callgrind, M4 and M0+ icount -> $out/frontend.csv"
+fe_args=(frontend --csv "$out/frontend.csv")
+[ -n "$fe_ir" ] && [ -s "$fe_ir" ] && fe_args+=(--host-ir "$fe_ir")
+[ -n "$m4_counts" ] && fe_args+=(--m4 "$m4w/icount/fw.txt")
+[ -n "$m0_counts" ] && fe_args+=(--m0 "$m0w/icount/fw.txt")
+"$bench" "${fe_args[@]}" >"$hostw/frontend.txt"
 
 # ---- accuracy, speed, CSV and the summary -------------------------------------------
 say "accuracy against the reference renderer and host timing (median of $runs runs)"
@@ -217,5 +248,7 @@ else
 fi
 
 cat "$hostw/summary.txt"
+echo
+cat "$hostw/frontend.txt"
 [ -f "$footprint" ] && { echo; cat "$footprint"; }
-say "done: $out/results.csv, $out/*.png, $footprint"
+say "done: $out/results.csv, $out/frontend.csv, $out/*.png, $footprint"

@@ -13,12 +13,24 @@
  *       client requests it dumps the counters after each configuration
  *       under the name "scene/method/filter" (run with --collect-atstart=no
  *       --toggle-collect=fxl_draw_triangle so only the draw calls count).
- *   fixel-bench gen-fw OUT.c [--filters point,bilinear,trilinear]
+ *   fixel-bench gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1]
  *       the scenes' triangles, textures and the configuration list as C
- *       arrays for the firmware in bench/ (both sides use the same data).
+ *       arrays for the firmware in bench/ (both sides use the same data);
+ *       --meshes 1 adds the front-end benchmark's meshes.
  *   fixel-bench ram
  *       the memory the caller provides per scene (frame, depth, bands,
  *       texture level 0 and whole chain, vertex data).
+ *   fixel-bench frontend-run
+ *       the front end alone (fxl_pipeline_emit into a callback that does
+ *       nothing) on each mesh x level (transform, + light, + texgen) x vertex
+ *       cache (off, on), for callgrind (--toggle-collect=fxl_pipeline_emit):
+ *       counters dumped per configuration as "fe/mesh/level/cache". The
+ *       set-up is bench/bench_frontend.h, shared with the firmware.
+ *   fixel-bench frontend [--host-ir FILE] [--m4 FW_OUT] [--m0 FW_OUT] [--csv FILE]
+ *       joins those host counts ("mesh level cache Ir" lines) and the
+ *       firmwares' "fe" lines (semihosting output, converted with its
+ *       "calib" line) into instructions per unique vertex and per triangle
+ *       corner; CSV (docs/bench/README.md) and a table on stdout.
  *   fixel-bench count-trace NM_FILE < trace
  *       count QEMU exec-trace instructions inside the functions listed by
  *       `arm-none-eabi-nm -S` (NM_FILE), one line per bench_begin ..
@@ -44,7 +56,9 @@
 #include "scene.h"
 #include "textures.h"
 #include "timing.h"
+#include "meshes.h"
 #include "../../src/raster_int.h"
+#include "../../bench/bench_frontend.h"
 
 #if defined(__has_include)
 #if __has_include(<valgrind/callgrind.h>)
@@ -90,11 +104,12 @@ typedef struct options {
     int runs;
     const char *host_ir, *m4, *m0, *csv, *plot_dir;
     const char *fw_filters;
+    int fw_meshes;
 } options_t;
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: fixel-bench accuracy|draw|gen-fw|ram|count-trace [options]\n"
+    fprintf(f, "usage: fixel-bench accuracy|draw|gen-fw|ram|count-trace|frontend|frontend-run [options]\n"
                "  (see the comment at the top of host_sim/tools/bench.c)\n");
 }
 
@@ -646,6 +661,199 @@ static int cmd_draw(const options_t *o)
     return 0;
 }
 
+/* ---- frontend: instructions per vertex of the 3D front end ----------------------- */
+
+typedef struct fe_mesh {
+    const char *name;
+    uint8_t texgen;
+} fe_mesh_t;
+
+/* The UV sphere of the gallery (32 x 16, spherical texgen, seam column
+ * and pole fans), the cube (24 vertices, cube map) and a tunnel (24 x 16
+ * cylinder seen from outside, cylindrical texgen). */
+static const fe_mesh_t fe_meshes[] = {{"sphere", FXL_TEXGEN_SPHERICAL},
+                                      {"cube", FXL_TEXGEN_CUBE},
+                                      {"tunnel", FXL_TEXGEN_CYLINDRICAL}};
+#define NFE_MESHES (sizeof fe_meshes / sizeof fe_meshes[0])
+
+static int fe_mesh_build(size_t i, fxl_mesh_t *m)
+{
+    switch (i) {
+    case 0: return meshes_sphere(m, 1.3, 32, 16);
+    case 1: return meshes_cube(m, 1.0);
+    default: return meshes_cylinder(m, 1.0, -1.5, 1.5, 24, 16, 1);
+    }
+}
+
+static int gen_fw_meshes(FILE *f)
+{
+    size_t mi;
+    for (mi = 0; mi < NFE_MESHES; mi++) {
+        fxl_mesh_t m;
+        uint32_t i;
+        const char *n = fe_meshes[mi].name;
+        if (fe_mesh_build(mi, &m) != 0)
+            return -1;
+        if (m.vert_count > BENCH_FE_CACHE) {
+            fprintf(stderr, "fixel-bench: mesh %s has more vertices than BENCH_FE_CACHE\n", n);
+            meshes_free(&m);
+            return -1;
+        }
+        fprintf(f, "\nstatic const fxl_vec3_t pos_%s[%u] = {", n, (unsigned)m.vert_count);
+        for (i = 0; i < m.vert_count; i++)
+            fprintf(f, "%s{%ld, %ld, %ld},", i % 4 ? " " : "\n    ", (long)m.pos[i].x, (long)m.pos[i].y,
+                    (long)m.pos[i].z);
+        fprintf(f, "\n};\nstatic const fxl_vec3_t nrm_%s[%u] = {", n, (unsigned)m.vert_count);
+        for (i = 0; i < m.vert_count; i++)
+            fprintf(f, "%s{%ld, %ld, %ld},", i % 4 ? " " : "\n    ", (long)m.normal[i].x, (long)m.normal[i].y,
+                    (long)m.normal[i].z);
+        fprintf(f, "\n};\nstatic const fxl_texcoord_t uv_%s[%u] = {", n, (unsigned)m.vert_count);
+        for (i = 0; i < m.vert_count; i++)
+            fprintf(f, "%s{%ld, %ld},", i % 6 ? " " : "\n    ", (long)m.uv[i].u, (long)m.uv[i].v);
+        fprintf(f, "\n};\nstatic const uint16_t idx_%s[%u] = {", n, 3u * m.tri_count);
+        for (i = 0; i < 3u * m.tri_count; i++)
+            fprintf(f, "%s%u,", i % 16 ? " " : "\n    ", (unsigned)m.idx[i]);
+        fprintf(f, "\n};\n");
+        meshes_free(&m);
+    }
+    fprintf(f, "\nconst bench_mesh_t bench_meshes[%u] = {\n", (unsigned)NFE_MESHES);
+    for (mi = 0; mi < NFE_MESHES; mi++) {
+        fxl_mesh_t m;
+        const char *n = fe_meshes[mi].name;
+        if (fe_mesh_build(mi, &m) != 0)
+            return -1;
+        fprintf(f, "    {\"%s\", %u, {pos_%s, uv_%s, 0, nrm_%s, %uu, idx_%s, %uu}},\n", n,
+                (unsigned)fe_meshes[mi].texgen, n, n, n, (unsigned)m.vert_count, n, (unsigned)m.tri_count);
+        meshes_free(&m);
+    }
+    fprintf(f, "};\nconst uint32_t bench_nmeshes = %u;\n", (unsigned)NFE_MESHES);
+    return 0;
+}
+
+static int cmd_frontend_run(void)
+{
+    static fxl_vcache_entry_t cache[BENCH_FE_CACHE];
+    size_t mi;
+    int lv, c;
+    printf("# client requests: %s\n", BENCH_HAVE_CALLGRIND ? "yes" : "no");
+    for (mi = 0; mi < NFE_MESHES; mi++) {
+        fxl_mesh_t m;
+        if (fe_mesh_build(mi, &m) != 0 || m.vert_count > BENCH_FE_CACHE)
+            return 1;
+        for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
+            for (c = 0; c < 2; c++) {
+                fxl_pipeline_t p;
+                uint32_t ntri = 0;
+                char name[96];
+                if (bench_fe_setup(&p, lv, fe_meshes[mi].texgen) != FXL_OK ||
+                    fxl_pipeline_set_vertex_cache(&p, c ? cache : NULL, c ? BENCH_FE_CACHE : 0) != FXL_OK ||
+                    fxl_pipeline_emit(&p, &m, bench_fe_sink, &ntri, NULL) != FXL_OK) {
+                    meshes_free(&m);
+                    return 1;
+                }
+                snprintf(name, sizeof name, "fe/%s/%s/%d", fe_meshes[mi].name, bench_fe_level_names[lv], c);
+                CALLGRIND_DUMP_STATS_AT(name);
+                printf("%s %u\n", name, (unsigned)ntri);
+            }
+        meshes_free(&m);
+    }
+    return 0;
+}
+
+/* counts[mesh][level][cache], NAN when absent. */
+static void fe_read(const char *path, int fw, double counts[NFE_MESHES][BENCH_FE_LEVELS][2])
+{
+    FILE *f = path ? fopen(path, "r") : NULL;
+    char line[256];
+    double per_tick = NAN;
+    if (!f) {
+        if (path)
+            fprintf(stderr, "fixel-bench: cannot read %s\n", path);
+        return;
+    }
+    while (fgets(line, sizeof line, f)) {
+        char a[64], b[64], st[16];
+        int c, lv;
+        size_t mi;
+        double v, calib_ticks, calib_instr;
+        if (fw) {
+            /* "calib <ticks> <instructions>", "fe <mesh> <level> <cache> <ticks> <ok|error>" */
+            if (sscanf(line, "calib %lf %lf", &calib_ticks, &calib_instr) == 2 && calib_ticks > 0) {
+                per_tick = calib_instr / calib_ticks;
+                continue;
+            }
+            if (sscanf(line, "fe %63s %63s %d %lf %15s", a, b, &c, &v, st) != 5 || strcmp(st, "ok") != 0)
+                continue;
+            v *= per_tick;
+        } else if (sscanf(line, "%63s %63s %d %lf", a, b, &c, &v) != 4) {
+            continue;
+        }
+        for (mi = 0; mi < NFE_MESHES; mi++)
+            for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
+                if (strcmp(a, fe_meshes[mi].name) == 0 && strcmp(b, bench_fe_level_names[lv]) == 0 &&
+                    (c == 0 || c == 1))
+                    counts[mi][lv][c] = v;
+    }
+    fclose(f);
+}
+
+static int cmd_frontend(const options_t *o)
+{
+    static double host[NFE_MESHES][BENCH_FE_LEVELS][2], m4[NFE_MESHES][BENCH_FE_LEVELS][2],
+        m0[NFE_MESHES][BENCH_FE_LEVELS][2];
+    FILE *csv = NULL;
+    size_t mi;
+    int lv, c;
+    for (mi = 0; mi < NFE_MESHES; mi++)
+        for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
+            for (c = 0; c < 2; c++)
+                host[mi][lv][c] = m4[mi][lv][c] = m0[mi][lv][c] = NAN;
+    fe_read(o->host_ir, 0, host);
+    fe_read(o->m4, 1, m4);
+    fe_read(o->m0, 1, m0);
+    if (o->csv) {
+        csv = fopen(o->csv, "w");
+        if (!csv) {
+            fprintf(stderr, "fixel-bench: cannot write %s\n", o->csv);
+            return 1;
+        }
+        fprintf(csv, "mesh,level,cache,vertices,corners,triangles,host_ir,host_per_vertex,host_per_corner,"
+                     "m4_instr,m4_per_vertex,m4_per_corner,m0_instr,m0_per_vertex,m0_per_corner\n");
+    }
+    printf("front end, instructions per unique vertex (per triangle corner); cache 0 = off, 1 = on\n");
+    printf("%-7s %-9s %5s %6s %7s %16s %16s %16s\n", "mesh", "level", "cache", "verts", "corners", "host x86-64",
+           "Cortex-M4", "Cortex-M0+");
+    for (mi = 0; mi < NFE_MESHES; mi++) {
+        fxl_mesh_t m;
+        if (fe_mesh_build(mi, &m) != 0) {
+            if (csv)
+                fclose(csv);
+            return 1;
+        }
+        for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
+            for (c = 0; c < 2; c++) {
+                double nv = m.vert_count, nc = 3.0 * m.tri_count, h = host[mi][lv][c], a = m4[mi][lv][c],
+                       z = m0[mi][lv][c];
+                char hs[32], as[32], zs[32];
+                snprintf(hs, sizeof hs, "%.0f (%.0f)", h / nv, h / nc);
+                snprintf(as, sizeof as, "%.0f (%.0f)", a / nv, a / nc);
+                snprintf(zs, sizeof zs, "%.0f (%.0f)", z / nv, z / nc);
+                printf("%-7s %-9s %5d %6u %7u %16s %16s %16s\n", fe_meshes[mi].name, bench_fe_level_names[lv], c,
+                       (unsigned)m.vert_count, 3u * m.tri_count, isnan(h) ? "-" : hs, isnan(a) ? "-" : as,
+                       isnan(z) ? "-" : zs);
+                if (csv)
+                    fprintf(csv, "%s,%s,%d,%u,%u,%u,%.0f,%.1f,%.1f,%.0f,%.1f,%.1f,%.0f,%.1f,%.1f\n",
+                            fe_meshes[mi].name, bench_fe_level_names[lv], c, (unsigned)m.vert_count,
+                            3u * m.tri_count, (unsigned)m.tri_count, h, h / nv, h / nc, a, a / nv, a / nc, z,
+                            z / nv, z / nc);
+            }
+        meshes_free(&m);
+    }
+    if (csv)
+        fclose(csv);
+    return 0;
+}
+
 /* ---- gen-fw: the firmware's data ---------------------------------------------- */
 
 static int cmd_gen_fw(const char *path, const options_t *o)
@@ -713,6 +921,14 @@ static int cmd_gen_fw(const char *path, const options_t *o)
                 ncfg++;
             }
     fprintf(f, "};\nconst uint32_t bench_ncfg = %u;\n", (unsigned)ncfg);
+    if (o->fw_meshes) {
+        if (gen_fw_meshes(f) != 0) {
+            fclose(f);
+            return 1;
+        }
+    } else {
+        fprintf(f, "\nconst bench_mesh_t bench_meshes[1] = {{0}};\nconst uint32_t bench_nmeshes = 0;\n");
+    }
     fclose(f);
     return 0;
 }
@@ -817,6 +1033,8 @@ int main(int argc, char **argv)
             dst = &o.plot_dir;
         else if (strcmp(a, "--filters") == 0)
             dst = &o.fw_filters;
+        else if (strcmp(a, "--meshes") == 0)
+            o.fw_meshes = atoi(argv[i + 1]);
         else if (strcmp(a, "--runs") == 0)
             o.runs = atoi(argv[i + 1]);
         else {
@@ -834,6 +1052,10 @@ int main(int argc, char **argv)
         return cmd_ram();
     if (strcmp(cmd, "draw") == 0)
         return cmd_draw(&o);
+    if (strcmp(cmd, "frontend-run") == 0)
+        return cmd_frontend_run();
+    if (strcmp(cmd, "frontend") == 0)
+        return cmd_frontend(&o);
     if (strcmp(cmd, "gen-fw") == 0) {
         if (argc < 3) {
             usage(stderr);

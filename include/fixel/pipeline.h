@@ -26,13 +26,15 @@
  * - Screen vertices: x, y q16 frame pixels (rounded to nearest; the
  *   rasterizer's sub-pixel snap is the only other quantisation),
  *   inv_w = round(near / w * 2^32) clamped to [1, 2^32 - 1] (u0.32), u, v q16.
- * Memory: everything is caller-owned; no function allocates or keeps
- * pointers. Status: FXL_ERR_ARG for NULL / bad enums, FXL_ERR_RANGE for
+ * Memory: everything is caller-owned; no function allocates. The only
+ * pointer kept is the optional vertex cache of a pipeline
+ * (fxl_pipeline_set_vertex_cache). Status: FXL_ERR_ARG for NULL / bad enums, FXL_ERR_RANGE for
  * numbers outside the documented ranges (matrix overflow, w == 0, ...).
  */
 #ifndef FIXEL_PIPELINE_H
 #define FIXEL_PIPELINE_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "fixel/status.h"
 #include "fixel/fixed.h"
@@ -220,6 +222,35 @@ uint16_t fxl_light_shade(const fxl_light_t *l, const fxl_vec3_t *n_eye, uint16_t
 /* Clip coordinates are int64 q32 and must stay below 2^52 (2^20 units). */
 #define FXL_CLIP_LIMIT_Q32 ((int64_t)1 << 52)
 
+/* Vertex cache: caller-owned scratch memory that lets a draw transform,
+ * light and texgen each mesh vertex once instead of once per triangle
+ * corner (a closed mesh has about 6 corners per vertex). One entry holds a
+ * vertex's clip position, lit colour, the per-vertex part of texgen and,
+ * once a triangle using it passed the clipper untouched, its projected
+ * screen position; what depends on the whole triangle (seams, poles, cube
+ * face, clipping, culling) stays per triangle, so the output is bit-identical
+ * with and without the cache. Direct-mapped: vertex i uses entry i % count,
+ * so count >= vert_count makes every vertex computed exactly once; fewer
+ * entries still work (a vertex evicted by another is recomputed), and
+ * meshes whose triangles use nearby indices (rings, grids) keep most of the
+ * saving with count of about two rings. Contents are private; the cache
+ * holds nothing between draws (each draw starts by emptying the entries it
+ * can use), so it may be shared by pipelines drawn one after another, never
+ * by two draws running at the same time. */
+typedef struct fxl_vcache_entry {
+    int64_t x, y, w;               /* clip space, q32 */
+    int32_t tex[3];                /* per-vertex texgen data */
+    fxl_q16_t sx, sy;              /* screen position, once projected */
+    uint32_t inv_w;
+    uint32_t tag;                  /* mesh vertex held, FXL_VCACHE_EMPTY if none */
+    uint16_t color;                /* lit RGB565 */
+    uint8_t projected;             /* sx, sy, inv_w are valid */
+} fxl_vcache_entry_t;
+
+#define FXL_VCACHE_EMPTY 0xFFFFFFFFu
+/* Bytes for n entries (56 per entry with 8-byte aligned int64). */
+#define FXL_VCACHE_BYTES(n) ((size_t)(n) * sizeof(fxl_vcache_entry_t))
+
 /* Plain data; start from fxl_pipeline_init(). */
 typedef struct fxl_pipeline {
     fxl_mat4_t model;              /* object -> world */
@@ -233,15 +264,24 @@ typedef struct fxl_pipeline {
     uint16_t material;             /* RGB565 base colour when the mesh has none */
     fxl_light_t light;
     fxl_texgen_t texgen;
+    fxl_vcache_entry_t *vcache;    /* optional, see fxl_pipeline_set_vertex_cache */
+    uint32_t vcache_count;
 } fxl_pipeline_t;
 
 /* Identity matrices, 60 degree perspective with near 1 and infinite far,
  * viewport (0, 0, width, height), cull CW, no lighting, white material,
- * texgen off. */
+ * texgen off, no vertex cache. */
 fxl_status_t fxl_pipeline_init(fxl_pipeline_t *p, int32_t width, int32_t height);
 /* proj = fxl_mat4_perspective(...) and the clip planes near, far. */
 fxl_status_t fxl_pipeline_set_perspective(fxl_pipeline_t *p, fxl_angle_t fovy, fxl_q16_t aspect,
                                           fxl_q16_t near_q16, fxl_q16_t far_q16);
+/* Use `count` caller-owned entries as the vertex cache of the draws of p
+ * (fxl_pipeline_emit, fxl_mesh_draw); entries == NULL with count == 0
+ * turns the cache off (the default). The memory must stay valid while p
+ * draws with it; its previous contents do not matter. FXL_ERR_ARG for
+ * p == NULL or entries == NULL with count > 0. */
+fxl_status_t fxl_pipeline_set_vertex_cache(fxl_pipeline_t *p, fxl_vcache_entry_t *entries,
+                                           uint32_t count);
 /* 1 <= w, h <= FXL_TARGET_MAX_DIM, |x|, |y| <= FXL_TARGET_MAX_ORIGIN. */
 fxl_status_t fxl_pipeline_set_viewport(fxl_pipeline_t *p, int32_t x, int32_t y, int32_t w, int32_t h);
 
@@ -286,7 +326,8 @@ typedef fxl_status_t (*fxl_emit_fn)(void *user, const fxl_vertex_t tri[3]);
 /* Transform, light, texgen, clip, project, cull a mesh and hand each
  * surviving triangle (a clipped polygon becomes a fan) to fn. stats (may be
  * NULL): triangles and culled_outside count mesh triangles rejected whole by
- * the clip planes, culled_backface the fan triangles culled here. */
+ * the clip planes, culled_backface the fan triangles culled here. With a
+ * vertex cache set, writes p->vcache (the pipeline itself is not changed). */
 fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl_emit_fn fn,
                                void *user, fxl_stats_t *stats);
 /* fxl_pipeline_emit into fxl_draw_triangle(t, d, ...). */
