@@ -12,8 +12,7 @@
  */
 #include "fw_app.h"
 
-void fw_semihost_write0(const char *s);
-void fw_semihost_exit(int code);
+#include "mps2.h"
 
 static fw_app_t app; /* ~110 KB: bands, depth band, triangle store, textures */
 

@@ -57,8 +57,8 @@ if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/
     # shellcheck disable=SC2086
     arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu=cortex-m4 -mthumb \
         -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
-        -T "$root/determinism/mps2_an386.ld" -Wl,--gc-sections \
-        "$root/determinism/startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m4.elf"
+        -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
+        "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m4.elf"
     rm -f "$out/m4-O2.txt"
     if timeout 600 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
         -semihosting-config enable=on,target=native,chardev=semi \

@@ -1,6 +1,9 @@
-/* startup.c - minimal Cortex-M4 start-up for qemu's mps2-an386: vector
- * table, .data copy and .bss clear, semihosting output and exit, and the
- * memcpy/memset the compiler may emit for struct copies (no libc here). */
+/* mps2_startup.c - the bare-metal start-up shared by every firmware image
+ * that runs on qemu's mps2-an386 (the example, bench/, determinism/):
+ * vector table, .data copy and .bss clear, semihosting output and exit, and
+ * the memcpy/memset the compiler may emit for struct copies (no libc here).
+ * ARMv6-M builds (the benchmark's M0+ code) use it unchanged: the FPU enable
+ * below is a plain store that the M4 model qemu runs them on accepts. */
 #include <stddef.h>
 #include <stdint.h>
 
@@ -9,8 +12,7 @@ int main(void);
 
 void *memcpy(void *dst, const void *src, size_t n);
 void *memset(void *dst, int c, size_t n);
-void fw_semihost_write0(const char *s);
-void fw_semihost_exit(int code);
+#include "mps2.h"
 void Reset_Handler(void);
 void Default_Handler(void);
 

@@ -1,0 +1,13 @@
+/* mps2.h - what the shared bare-metal start-up (mps2_startup.c) gives the
+ * firmware images that run on qemu-system-arm -M mps2-an386: the example,
+ * the benchmark firmware (bench/) and the determinism check (determinism/).
+ * main() returns the exit status; output goes through semihosting. */
+#ifndef FXL_EXAMPLES_MPS2_H
+#define FXL_EXAMPLES_MPS2_H
+
+/* SYS_WRITE0: a NUL-terminated string to the host's console. */
+void fw_semihost_write0(const char *s);
+/* SYS_EXIT_EXTENDED with the status; never returns. */
+void fw_semihost_exit(int code);
+
+#endif
