@@ -254,10 +254,11 @@ static int read_counts(const char *path, counts_t *c)
         return 0;
     }
     while (fgets(line, sizeof line, f)) {
-        char sc[64], me[64], fi[64], src[16] = "";
+        /* src fits the table's field (8 bytes): "trace" or "icount" */
+        char sc[64], me[64], fi[64], src[8] = "";
         double v;
         int a, b, d;
-        if (line[0] == '#' || sscanf(line, "%63s %63s %63s %lf %15s", sc, me, fi, &v, src) < 4)
+        if (line[0] == '#' || sscanf(line, "%63s %63s %63s %lf %7s", sc, me, fi, &v, src) < 4)
             continue;
         a = index_of(scenes, NSCENES, sizeof scenes[0], sc);
         b = index_of(&methods[0].name, NMETHODS, sizeof methods[0], me);
