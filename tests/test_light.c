@@ -6,25 +6,13 @@
 #include <stdio.h>
 #include <string.h>
 #include "unity.h"
+#include "test_rng.h"
 #include "fixel/pipeline.h"
 
 void setUp(void) {}
 void tearDown(void) {}
 
 static char msg[256];
-static uint64_t rng_state;
-static void rng_seed(uint64_t s) { rng_state = s; }
-static uint64_t rng_next(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ULL;
-}
-static double rng_range(double a, double b)
-{
-    return a + (b - a) * ((double)(rng_next() >> 11) / 9007199254740992.0);
-}
 static fxl_q16_t dq16(double v) { return (fxl_q16_t)lround(v * 65536.0); }
 
 static fxl_vec3_t random_unit(void)

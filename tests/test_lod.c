@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "test_vertex.h"
 #include "fixel/fixel.h"
 #include "reference.h"
 #include "../src/raster_int.h"
@@ -15,14 +16,7 @@ void tearDown(void) {}
 
 static fxl_vertex_t vtx(double x, double y, double inv_w, double u, double v)
 {
-    fxl_vertex_t r;
-    r.x = (fxl_q16_t)lround(x * 65536.0);
-    r.y = (fxl_q16_t)lround(y * 65536.0);
-    r.inv_w = (uint32_t)llround(inv_w * 4294967295.0);
-    r.u = (fxl_q16_t)lround(u * 65536.0);
-    r.v = (fxl_q16_t)lround(v * 65536.0);
-    r.color = 0xFFFF;
-    return r;
+    return test_vertex(x, y, inv_w, u, v, 0xFFFF);
 }
 
 static uint16_t texels[512 * 512 * 4 / 3 + 16];
@@ -72,12 +66,6 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
     return (uint32_t)s->n;
 }
 
-static fxl_vertex_t project(double x, double y, double z, double u, double v)
-{
-    double f = 1.0 / tan(3.14159265358979323846 / 6.0), w = -z;
-    double sx = (f * 0.75 * x / w * 0.5 + 0.5) * 320.0, sy = (0.5 - f * y / w * 0.5) * 240.0;
-    return vtx(sx, sy, 1.0 / w, u, v);
-}
 
 /* Per-segment LOD on the floor against the exact per-pixel LOD.
  * - At a correction point the core evaluates the exact derivatives, so the
@@ -99,10 +87,10 @@ void test_lod_per_segment_matches_exact_derivatives_on_floor(void)
     int k, x, y, n = 0;
     char msg[160];
     tex512(&t);
-    q[0] = project(-40, -0.577, -1, -20, -0.5);
-    q[1] = project(40, -0.577, -1, 20, -0.5);
-    q[2] = project(40, -0.577, -50, 20, -25);
-    q[3] = project(-40, -0.577, -50, -20, -25);
+    q[0] = test_project(-40, -0.577, -1, -20, -0.5);
+    q[1] = test_project(40, -0.577, -1, 20, -0.5);
+    q[2] = test_project(40, -0.577, -50, 20, -25);
+    q[3] = test_project(-40, -0.577, -50, -20, -25);
     tri[0][0] = q[0]; tri[0][1] = q[1]; tri[0][2] = q[2];
     tri[1][0] = q[0]; tri[1][1] = q[2]; tri[1][2] = q[3];
     fxl_draw_defaults(&d);

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "unity.h"
+#include "test_rng.h"
 #include "fixel/pipeline.h"
 #include "meshes.h"
 #include "crc32.h"
@@ -21,17 +22,6 @@ static const double TWO_PI = 6.283185307179586476925286766559;
 static char msg[256];
 
 /* Deterministic generator (xorshift64*), seed fixed per test. */
-static uint64_t rng_state;
-static void rng_seed(uint64_t s) { rng_state = s ? s : 1; }
-static uint64_t rng_next(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ULL;
-}
-static double rng_unit(void) { return (double)(rng_next() >> 11) / 9007199254740992.0; }
-static double rng_range(double a, double b) { return a + (b - a) * rng_unit(); }
 
 static double q16d(fxl_q16_t v) { return v / 65536.0; }
 static fxl_q16_t dq16(double v) { return (fxl_q16_t)lround(v * 65536.0); }

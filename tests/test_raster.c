@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "test_vertex.h"
 #include "fixel/fixel.h"
 #include "../src/raster_int.h"
 
@@ -83,16 +84,7 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
 
 static fxl_vertex_t vtx(double x, double y, double inv_w, double u, double v)
 {
-    fxl_vertex_t r;
-    r.x = (fxl_q16_t)lround(x * 65536.0);
-    r.y = (fxl_q16_t)lround(y * 65536.0);
-    r.inv_w = (uint32_t)llround(inv_w * 4294967295.0);
-    if (r.inv_w == 0)
-        r.inv_w = 1;
-    r.u = (fxl_q16_t)lround(u * 65536.0);
-    r.v = (fxl_q16_t)lround(v * 65536.0);
-    r.color = 0xFFFF;
-    return r;
+    return test_vertex(x, y, inv_w, u, v, 0xFFFF);
 }
 
 static uint16_t pix[W * H];
@@ -472,12 +464,6 @@ static double wrap_err(double got, double want, double period)
 }
 
 /* View-space point -> vertex, 60 degree vertical fov, 320x240, near 1. */
-static fxl_vertex_t project(double x, double y, double z, double u, double v)
-{
-    double f = 1.0 / tan(FXL_TEST_PI / 6.0), w = -z;
-    double sx = (f * 0.75 * x / w * 0.5 + 0.5) * 320.0, sy = (0.5 - f * y / w * 0.5) * 240.0;
-    return vtx(sx, sy, 1.0 / w, u, v);
-}
 
 typedef struct { fxl_vertex_t v[3]; } tri_t;
 
@@ -485,8 +471,8 @@ static int floor_scene(tri_t *out)
 {
     /* The core issue's floor: x = +-40, y = -0.577, z -1 .. -50; u = x / 2,
      * v = z / 2 periods of the texture. */
-    fxl_vertex_t a = project(-40, -0.577, -1, -20, -0.5), b = project(40, -0.577, -1, 20, -0.5);
-    fxl_vertex_t c = project(40, -0.577, -50, 20, -25), d = project(-40, -0.577, -50, -20, -25);
+    fxl_vertex_t a = test_project(-40, -0.577, -1, -20, -0.5), b = test_project(40, -0.577, -1, 20, -0.5);
+    fxl_vertex_t c = test_project(40, -0.577, -50, 20, -25), d = test_project(-40, -0.577, -50, -20, -25);
     out[0].v[0] = a; out[0].v[1] = b; out[0].v[2] = c;
     out[1].v[0] = a; out[1].v[1] = c; out[1].v[2] = d;
     return 2;
@@ -507,7 +493,7 @@ static int cube_scene(tri_t *out)
         fxl_vertex_t q[4];
         static const double uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
         for (i = 0; i < 4; i++)
-            q[i] = project(P[faces[f][i]][0], P[faces[f][i]][1], P[faces[f][i]][2], uv[i][0], uv[i][1]);
+            q[i] = test_project(P[faces[f][i]][0], P[faces[f][i]][1], P[faces[f][i]][2], uv[i][0], uv[i][1]);
         out[n].v[0] = q[0]; out[n].v[1] = q[1]; out[n].v[2] = q[2]; n++;
         out[n].v[0] = q[0]; out[n].v[1] = q[2]; out[n].v[2] = q[3]; n++;
     }
@@ -654,7 +640,7 @@ static int rolled_floor_scene(tri_t *out, double roll_deg)
     int i;
     for (i = 0; i < 4; i++) {
         double x = P[i][0] * c - P[i][1] * sn, y = P[i][0] * sn + P[i][1] * c;
-        q[i] = project(x, y, P[i][2], uv[i][0], uv[i][1]);
+        q[i] = test_project(x, y, P[i][2], uv[i][0], uv[i][1]);
     }
     out[0].v[0] = q[0]; out[0].v[1] = q[1]; out[0].v[2] = q[2];
     out[1].v[0] = q[0]; out[1].v[1] = q[2]; out[1].v[2] = q[3];

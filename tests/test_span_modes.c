@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "test_vertex.h"
 #include "fixel/fixel.h"
 #include "reference.h"
 
@@ -24,17 +25,6 @@ static uint32_t rnd(void)
     return seed >> 8;
 }
 
-static fxl_vertex_t vtx(double x, double y, double inv_w, double u, double v, uint16_t c)
-{
-    fxl_vertex_t r;
-    r.x = (fxl_q16_t)lround(x * 65536.0);
-    r.y = (fxl_q16_t)lround(y * 65536.0);
-    r.inv_w = (uint32_t)llround(inv_w * 4294967295.0);
-    r.u = (fxl_q16_t)lround(u * 65536.0);
-    r.v = (fxl_q16_t)lround(v * 65536.0);
-    r.color = c;
-    return r;
-}
 
 static uint16_t rgb_to_565(const double *rgb)
 {
@@ -78,7 +68,7 @@ static void random_tri(fxl_vertex_t v[3])
 {
     int i;
     for (i = 0; i < 3; i++)
-        v[i] = vtx((rnd() % 7000) / 100.0 - 11, (rnd() % 6000) / 100.0 - 10, 0.05 + (rnd() % 950) / 1000.0,
+        v[i] = test_vertex((rnd() % 7000) / 100.0 - 11, (rnd() % 6000) / 100.0 - 10, 0.05 + (rnd() % 950) / 1000.0,
                    ((int)(rnd() % 6001) - 2000) / 1000.0, ((int)(rnd() % 6001) - 2000) / 1000.0,
                    (uint16_t)(rnd() & 0xFFFF));
 }
@@ -208,9 +198,9 @@ void test_modulate_and_decal_follow_their_formulas(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, tex565, 8, 8, FXL_TEXFMT_RGB565, 1));
     tex.flags = FXL_TEXF_KEY;
     tex.key = 0x1234;
-    v[0] = vtx(2, 2, 0.5, -1, -1, 0);
-    v[1] = vtx(46, 5, 0.9, 2, -1, 0);
-    v[2] = vtx(8, 38, 0.2, -1, 2.5, 0);
+    v[0] = test_vertex(2, 2, 0.5, -1, -1, 0);
+    v[1] = test_vertex(46, 5, 0.9, 2, -1, 0);
+    v[2] = test_vertex(8, 38, 0.2, -1, 2.5, 0);
     for (mode = 0; mode < 2; mode++) {
         fxl_draw_defaults(&d);
         d.texture = &tex;
@@ -286,12 +276,12 @@ void test_point_and_bilinear_against_hand_computed_texels(void)
     fxl_draw_t d;
     fxl_vertex_t a[3], b[3];
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, t2, 2, 2, FXL_TEXFMT_RGB565, 1));
-    a[0] = vtx(0, 0, 0.5, 0, 0, 0);
-    a[1] = vtx(10, 0, 0.5, 1, 0, 0);
-    a[2] = vtx(10, 10, 0.5, 1, 1, 0);
+    a[0] = test_vertex(0, 0, 0.5, 0, 0, 0);
+    a[1] = test_vertex(10, 0, 0.5, 1, 0, 0);
+    a[2] = test_vertex(10, 10, 0.5, 1, 1, 0);
     b[0] = a[0];
     b[1] = a[2];
-    b[2] = vtx(0, 10, 0.5, 0, 1, 0);
+    b[2] = test_vertex(0, 10, 0.5, 0, 1, 0);
     fxl_draw_defaults(&d);
     d.texture = &tex;
     d.depth = 0;
