@@ -6,6 +6,7 @@
  * with exact edges (edge.c), hand each clipped span to span.c.
  */
 #include "raster_int.h"
+#include "persp.h"
 
 void fxl_draw_defaults(fxl_draw_t *d)
 {
@@ -27,8 +28,7 @@ void fxl_draw_defaults(fxl_draw_t *d)
 int32_t fxl_snap_subpx(fxl_q16_t x)
 {
     /* floor((x + half grid step) / grid step); int64 so INT32_MAX cannot wrap. */
-    int64_t t = (int64_t)x + ((int64_t)1 << (15 - FXL__S));
-    return (int32_t)(t < 0 ? ~((uint64_t)~t >> (16 - FXL__S)) : ((uint64_t)t >> (16 - FXL__S)));
+    return (int32_t)fxl__asr64((int64_t)x + ((int64_t)1 << (15 - FXL__S)), 16 - FXL__S);
 }
 
 static int is_pow2_persp(int32_t p)

@@ -76,7 +76,6 @@ typedef struct fxl__tri {
     int seg_log2;                /* log2 of the segment length; -1: whole span */
     uint8_t affine;              /* q constant: no perspective */
     uint8_t depth_test, depth_write;
-    uint8_t fast;                /* RGB565 repeat without key: the specialised loops */
     uint8_t swap;                /* target stores byte-swapped RGB565 */
 
     /* mip state */
@@ -127,8 +126,8 @@ fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri);
 fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                      fxl_stats_t *stats, fxl__seg_fn probe);
 
-/* Setup (setup.c): planes and per-triangle scaling. Returns FXL_OK or an
- * error; *culled set when the triangle has zero area. */
+/* Setup (setup.c): planes and per-triangle scaling of a triangle with
+ * det != 0 (the caller culls zero area). Returns FXL_OK. */
 fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
                         const int32_t Y[3], int64_t det);
 int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y);

@@ -16,7 +16,7 @@
  * makes invisible, so large but narrow UV ranges keep their precision.
  */
 #include "raster_int.h"
-#include "texel.h"
+#include "persp.h"
 
 /* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, by long division
  * in 16-bit chunks so no intermediate exceeds 2^63. */
@@ -109,11 +109,6 @@ static int fit_shift(const int64_t a[3], int bits)
     return k;
 }
 
-static int64_t shr_floor(int64_t x, int k)
-{
-    return x < 0 ? ~(int64_t)((uint64_t)~x >> k) : (int64_t)((uint64_t)x >> k);
-}
-
 /* Rebase three normalised q16 coordinates by whole periods (repeat) or
  * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2). */
 static void rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
@@ -127,9 +122,9 @@ static void rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
     if (c[2] < mn)
         mn = c[2];
     if (wrap == FXL_WRAP_REPEAT)
-        base = shr_floor(mn, 16) * 65536;
+        base = fxl__asr64(mn, 16) * 65536;
     else if (wrap == FXL_WRAP_MIRROR)
-        base = shr_floor(mn, 17) * 131072;
+        base = fxl__asr64(mn, 17) * 131072;
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
 }
@@ -145,7 +140,7 @@ static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int6
         s[i] = a[i] * q[i];   /* |a| < 2^32, q < 2^31: |s| < 2^63 */
     k = fit_shift(s, 30);
     for (i = 0; i < 3; i++)
-        s[i] = shr_floor(s[i], k);
+        s[i] = fxl__asr64(s[i], k);
     tri->a_shift[idx] = k;
     make_plane(&tri->a[idx], s, X, Y, det);
 }
