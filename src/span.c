@@ -446,37 +446,47 @@ static inline void fl_init(fl_t *f, const fxl__level_t *lv)
     f->mv16 = (lv->mask_v << f->lw) << 16;
 }
 
-/* fast_correct: FXL__ALWAYS_INLINE (persp.h), it runs twice per walk. */
-
 typedef struct fxl__pt {
     uint32_t u, v;               /* level-0 texel q16, modular */
-    uint32_t z;                  /* inv_w, u0.32 */
+    uint32_t z;                  /* inv_w, u0.32 (set by the walk) */
 #if FXL_HAVE_MIPMAP
     int64_t u64, v64;            /* before wrapping, for the LOD */
 #endif
 } fxl__pt_t;
 
-/* pv: q, z, u, v plane values at the correction point. */
-static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, const int64_t pv[4], fxl__pt_t *pt)
+/* Segments per batch of the specialised walks (span_fast.h): its arrays
+ * take 12 bytes a segment on the stack (16 with depth). */
+#ifndef FXL__BATCH
+#define FXL__BATCH 16
+#endif
+
+/* u, v at a correction point from the q, u, v plane values: correct() for
+ * the fast case, inline (it is most of a segment's cost). The walk counts
+ * the divisions and computes z (fast_z) only where it has a depth buffer. */
+static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
+                                            fxl__pt_t *pt)
 {
     fxl__recip_t rc;
-    int64_t u, v, q = pv[0];
+    int64_t u, v;
 
-    /* sat_u32(z >> PF): a negative value (rounding at a sliver) gives 0 */
-    pt->z = pv[1] < 0 ? 0u : sat_u32((int64_t)((uint64_t)pv[1] >> FXL__PF));
     if (q < tri->q_min)
         q = tri->q_min;
     fxl__recip(q, &rc);
-    if (tri->stats)
-        tri->stats->divisions++;
-    u = fxl__persp_e(pv[2], &rc, tri->persp_eb[0]);
-    v = fxl__persp_e(pv[3], &rc, tri->persp_eb[1]);
+    u = fxl__persp_e(su, &rc, tri->persp_eb[0]);
+    v = fxl__persp_e(sv, &rc, tri->persp_eb[1]);
     pt->u = (uint32_t)(uint64_t)u;
     pt->v = (uint32_t)(uint64_t)v;
 #if FXL_HAVE_MIPMAP
     pt->u64 = u;
     pt->v64 = v;
 #endif
+}
+
+/* sat_u32(z >> PF) of correct(): a negative value (rounding at a sliver)
+ * gives 0. */
+static inline uint32_t fast_z(int64_t sz)
+{
+    return sz < 0 ? 0u : sat_u32((int64_t)((uint64_t)sz >> FXL__PF));
 }
 
 /* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the

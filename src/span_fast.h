@@ -192,9 +192,14 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
 
 #if FXL__FAST_SPANS
 /* The whole span [xl, xr) of `row` clipped to [cl, cr): the segment walk of
- * fxl__draw_span (see there for the rules) restricted to the fast case, with
- * the pixel loop inlined so the per-segment values stay in registers. Every
- * value is computed exactly as the generic walk computes it. */
+ * fxl__draw_span (see there for the rules) restricted to the fast case.
+ * Every value is computed exactly as the generic walk computes it; only
+ * what this variant uses is computed (no z without a depth buffer).
+ * The walk runs in batches of up to FXL__BATCH segments, in two phases:
+ * first the correction points of the batch (plane steps and divisions: a
+ * loop with few live values, so they stay in registers), then the pixel
+ * loops between them. Interleaved, the two phases competed for registers
+ * and each segment spilled and reloaded most of its state. */
 static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
@@ -205,9 +210,20 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     /* index of frame pixel (0, row) in the buffer; a pointer is only formed
      * for pixels inside the clip rectangle */
     const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
-    fxl__pt_t p0, p1;
-    int64_t pv[4];
-    uint32_t written = 0;
+    /* plane values (modular int64) at the latest correction point */
+    uint64_t sq, su, sv;
+    /* the batch's correction points: cu[i], cv[i] (and cz[i]) start
+     * segment i, cu[i + 1] ends it */
+    uint32_t cu[FXL__BATCH + 1], cv[FXL__BATCH + 1];
+#if FXL_T_DEPTH
+    uint64_t sz;
+    uint32_t cz[FXL__BATCH + 1];
+#endif
+#if FXL_HAVE_MIPMAP
+    int32_t clod[FXL__BATCH];   /* each segment's LOD, q8, clamped */
+#endif
+    fxl__pt_t pt;
+    uint32_t written = 0, segments = 0;
     /* the prepared level(s), redone only when a segment's level changes */
     const fxl__level_t *cur = &tri->level[0];
     FXL_T_LV L;
@@ -220,76 +236,125 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 
     {
         const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
-        pv[0] = fxl__plane_eval(&tri->q, dX, dY);
-        pv[1] = fxl__plane_eval(&tri->z, dX, dY);
-        pv[2] = fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
-        pv[3] = fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
+        sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
+        su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
+        sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
+#if FXL_T_DEPTH
+        sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
+        cz[0] = fast_z((int64_t)sz);
+#endif
     }
-    fast_correct(tri, pv, &p0);
+    fast_correct(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
+    cu[0] = pt.u;
+    cv[0] = pt.v;
+#if FXL_HAVE_MIPMAP
+    clod[0] = 0;   /* written before it is read; this tells the compiler */
+#endif
 
     while (x < cr) {
-        int32_t n, a, b;
-        uint32_t off, du, dv, dz, u, v;
-        int full = xr - x > N;
-#if FXL_HAVE_MIPMAP
-        int64_t q0 = pv[0];
-#endif
-        const fxl__level_t *lv = &tri->level[0];
+        int32_t cnt = 0, i, xe = x;
 
-        if (full) {
-            n = N;
-            pv[0] = (int64_t)((uint64_t)pv[0] + (uint64_t)tri->gpxN[FXL__PQ]);
-            pv[1] = (int64_t)((uint64_t)pv[1] + (uint64_t)tri->gpxN[FXL__PZ]);
-            pv[2] = (int64_t)((uint64_t)pv[2] + (uint64_t)tri->gpxN[FXL__PA + FXL__AU]);
-            pv[3] = (int64_t)((uint64_t)pv[3] + (uint64_t)tri->gpxN[FXL__PA + FXL__AV]);
-            fast_correct(tri, pv, &p1);
-            du = step_pow2_u32(p1.u - p0.u, k);
-            dv = step_pow2_u32(p1.v - p0.v, k);
-            dz = step_z_pow2(p1.z, p0.z, k);
-        } else {
-            /* the last segment ends on the last pixel of the span */
-            const uint64_t div = (uint64_t)(int64_t)(xr - x - 1);
-            n = xr - x;
-            pv[0] = (int64_t)((uint64_t)pv[0] + (uint64_t)tri->gpx[FXL__PQ] * div);
-            pv[1] = (int64_t)((uint64_t)pv[1] + (uint64_t)tri->gpx[FXL__PZ] * div);
-            pv[2] = (int64_t)((uint64_t)pv[2] + (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div);
-            pv[3] = (int64_t)((uint64_t)pv[3] + (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div);
-            fast_correct(tri, pv, &p1);
-            du = step_div_u32(p1.u - p0.u, (uint32_t)div);
-            dv = step_div_u32(p1.v - p0.v, (uint32_t)div);
-            dz = step_z_div(p1.z, p0.z, (uint32_t)div);
-        }
-
-        a = x > cl ? x : cl;
-        b = x + n < cr ? x + n : cr;
-        off = (uint32_t)(a - x);
-        u = p0.u;
-        v = p0.v;
+        /* phase 1: the batch's correction points */
+        do {
 #if FXL_HAVE_MIPMAP
-        if (tri->nlevels > 1) {
-            int32_t lod = tri->lod_q8_tri;
-            int level;
-            if (tri->lod_per_segment) {
-                lod = fast_lod(tri, q0, &p0) + tri->draw->lod_bias_q8;
-                if (lod < 0)
-                    lod = 0;
-                if (lod > tri->lod_max_q8)
-                    lod = tri->lod_max_q8;
+            if (tri->nlevels > 1) {
+                int32_t lod = tri->lod_q8_tri;
+                if (tri->lod_per_segment) {
+                    lod = fast_lod(tri, (int64_t)sq, &pt) + tri->draw->lod_bias_q8;
+                    if (lod < 0)
+                        lod = 0;
+                    if (lod > tri->lod_max_q8)
+                        lod = tri->lod_max_q8;
+                }
+                clod[cnt] = lod;
             }
+#endif
+            if (xr - xe > N) {
+                xe += N;
+                sq += (uint64_t)tri->gpxN[FXL__PQ];
+                su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
+                sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
+#if FXL_T_DEPTH
+                sz += (uint64_t)tri->gpxN[FXL__PZ];
+#endif
+            } else {
+                /* the last segment ends on the last pixel of the span */
+                const uint64_t div = (uint64_t)(int64_t)(xr - xe - 1);
+                xe = xr;
+                sq += (uint64_t)tri->gpx[FXL__PQ] * div;
+                su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
+                sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
+#if FXL_T_DEPTH
+                sz += (uint64_t)tri->gpx[FXL__PZ] * div;
+#endif
+            }
+            fast_correct(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
+            cnt++;
+            cu[cnt] = pt.u;
+            cv[cnt] = pt.v;
+#if FXL_T_DEPTH
+            cz[cnt] = fast_z((int64_t)sz);
+#endif
+        } while (cnt < FXL__BATCH && xe < cr);
+        segments += (uint32_t)cnt;
+
+        /* phase 2: the pixels between them */
+        for (i = 0; i < cnt; i++) {
+            int32_t n, a = x, b;
+            uint32_t du, dv, dz = 0, u = cu[i], v = cv[i], z = 0;
+            const fxl__level_t *lv = &tri->level[0];
+
+            if (xr - x > N) {
+                n = N;
+                du = step_pow2_u32(cu[i + 1] - u, k);
+                dv = step_pow2_u32(cv[i + 1] - v, k);
+#if FXL_T_DEPTH
+                dz = step_z_pow2(cz[i + 1], cz[i], k);
+#endif
+            } else {
+                const uint32_t div = (uint32_t)(xr - x - 1);
+                n = xr - x;
+                du = step_div_u32(cu[i + 1] - u, div);
+                dv = step_div_u32(cv[i + 1] - v, div);
+#if FXL_T_DEPTH
+                dz = step_z_div(cz[i + 1], cz[i], div);
+#endif
+            }
+#if FXL_T_DEPTH
+            z = cz[i];
+#endif
+            b = x + n < cr ? x + n : cr;
+#if FXL_HAVE_MIPMAP
+            if (tri->nlevels > 1) {
+                const int32_t lod = clod[i];
+                int level;
 #if FXL_T_MIPLIN
-            level = lod >> 8;
-            {
                 /* The blend weight is lod_frac >> 3; with weight 0 the blend
                  * is the identity ((a * 32 + 16) >> 5 = a per channel), so
                  * such segments run the one-level loop. The top level has
                  * weight 0 (the LOD is clamped to it). */
-                uint32_t f = ((uint32_t)lod & 255u) >> 3;
+                const uint32_t f = ((uint32_t)lod & 255u) >> 3;
+                level = lod >> 8;
                 if (f != 0u && level + 1 < tri->nlevels) {
                     const fxl__level_t *lv2 = &tri->level[level + 1];
                     uint32_t du2 = shift_step_u32(du, level + 1), dv2 = shift_step_u32(dv, level + 1);
+                    uint32_t u2 = u >> (level + 1), v2 = v >> (level + 1);
                     lv = &tri->level[level];
                     du = shift_step_u32(du, level);
                     dv = shift_step_u32(dv, level);
+                    u >>= level;
+                    v >>= level;
+                    /* Only the first segment can start left of the clip:
+                     * there the pixel loop starts `off` pixels in. */
+                    if (x < cl) {
+                        const uint32_t off = (uint32_t)(cl - x);
+                        a = cl;
+                        u += du * off;
+                        v += dv * off;
+                        u2 += du2 * off;
+                        v2 += dv2 * off;
+                        z += dz * off;
+                    }
                     if (a < b) {
                         int32_t idx = rowidx + a;
                         if (lv != cur) {
@@ -300,46 +365,54 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
                             cur2 = lv2;
                             FXL_T_LV_INIT(&L2, lv2);
                         }
-                        written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a,
-                                              p0.z + dz * off, dz, &L, (u >> level) + du * off,
-                                              (v >> level) + dv * off, du, dv, &L2,
-                                              (u >> (level + 1)) + du2 * off, (v >> (level + 1)) + dv2 * off,
-                                              du2, dv2, f);
+                        written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz,
+                                              &L, u, v, du, dv, &L2, u2, v2, du2, dv2, f);
                     }
                     x += n;
-                    p0 = p1;
                     continue;
                 }
-            }
 #else
-            level = (lod + 128) >> 8;
+                level = (lod + 128) >> 8;
 #endif
-            lv = &tri->level[level];
-            du = shift_step_u32(du, level);
-            dv = shift_step_u32(dv, level);
-            u >>= level;
-            v >>= level;
-        }
-#endif
-        if (a < b) {
-            int32_t idx = rowidx + a;
-            if (lv != cur) {
-                cur = lv;
-                FXL_T_LV_INIT(&L, lv);
+                lv = &tri->level[level];
+                du = shift_step_u32(du, level);
+                dv = shift_step_u32(dv, level);
+                u >>= level;
+                v >>= level;
             }
+#endif
+            if (x < cl) {
+                const uint32_t off = (uint32_t)(cl - x);
+                a = cl;
+                u += du * off;
+                v += dv * off;
+                z += dz * off;
+            }
+            if (a < b) {
+                int32_t idx = rowidx + a;
+                if (lv != cur) {
+                    cur = lv;
+                    FXL_T_LV_INIT(&L, lv);
+                }
 #if FXL_T_MIPLIN
 #define FXL_T_LOOP_ONE FXL_T_LOOP1
 #else
 #define FXL_T_LOOP_ONE FXL_T_LOOP
 #endif
-            written += FXL_T_LOOP_ONE(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, p0.z + dz * off,
-                                      dz, &L, u + du * off, v + dv * off, du, dv);
+                written += FXL_T_LOOP_ONE(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L,
+                                          u, v, du, dv);
 #undef FXL_T_LOOP_ONE
+            }
+            x += n;
         }
-        x += n;
-        p0 = p1;
+        cu[0] = cu[cnt];
+        cv[0] = cv[cnt];
+#if FXL_T_DEPTH
+        cz[0] = cz[cnt];
+#endif
     }
     if (tri->stats) {
+        tri->stats->divisions += segments + 1u;
         tri->stats->pixels += written;
         tri->stats->spans++;
     }
