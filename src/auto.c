@@ -45,11 +45,16 @@ static int32_t seg_max_ratio(fxl__sf_t NA, fxl__sf_t NB, fxl__sf_t qA, fxl__sf_t
     return best;
 }
 
-/* log2(2^hi + 2^lo) <= max + 1 step: combine the u and v bounds. */
-static int32_t log2_sum_bound(int32_t x, int32_t y)
+/* Upper bound of log2 sqrt(2^2x + 2^2y) (q8): the u and v error bounds
+ * combined as the Euclidean length the metric uses, hi + 1/2 at most
+ * (a plain sum would cost a whole octave, i.e. half the segment length).
+ * 2^-2d is rounded up to a power of two and the table's 1/256 rounding
+ * gets one step of margin. */
+static int32_t log2_hypot_bound(int32_t x, int32_t y)
 {
-    int32_t hi = x > y ? x : y, lo = x > y ? y : x;
-    return hi - lo > 8 * 256 ? hi : hi + 256;
+    int32_t hi = x > y ? x : y, d2 = (x > y ? x - y : y - x) / 128;   /* floor(2 d) octaves */
+    uint64_t t = d2 >= 16 ? 1u : (uint64_t)65536u >> d2;                /* >= 2^-2d in q16 */
+    return hi + (fxl__log2_q8(65536u + t) - 16 * 256 + 2) / 2;
 }
 
 /* N_u, N_v (texel-scaled) and q at frame point (X, Y) in subpx. */
@@ -144,7 +149,7 @@ int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t 
             ru = a > ru ? a : ru;
             rv = b > rv ? b : rv;
         }
-        lg = fxl__sf_log2_q8(qx) + log2_sum_bound(ru, rv);
+        lg = fxl__sf_log2_q8(qx) + log2_hypot_bound(ru, rv);
         k = fit_log2(lg, lb, cap);
     }
     /* Spans are refined chunk by chunk (fxl__auto_span_log2) only on wide
@@ -172,7 +177,7 @@ int fxl__auto_span_log2(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t 
      * the choice, like every pixel value, never depends on the clip). */
     n_at(tri, xl * FXL__ONE + FXL__HALF, Yc, &nua, &nva, &qa);
     n_at(tri, (xr - 1) * FXL__ONE + FXL__HALF, Yc, &nub, &nvb, &qb);
-    lg = fxl__sf_log2_q8(qx) + log2_sum_bound(seg_max_ratio(nua, nub, qa, qb), seg_max_ratio(nva, nvb, qa, qb));
+    lg = fxl__sf_log2_q8(qx) + log2_hypot_bound(seg_max_ratio(nua, nub, qa, qb), seg_max_ratio(nva, nvb, qa, qb));
     lb = fxl__log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
     k = fit_log2(lg, lb, cap);
     return k > floor_k ? k : floor_k;
