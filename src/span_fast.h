@@ -252,7 +252,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #endif
 
     while (x < cr) {
-        int32_t cnt = 0, i, xe = x;
+        int32_t cnt = 0, cnt_done = 0, i, xe = x;
 
         /* phase 1: the batch's correction points */
         do {
@@ -299,7 +299,24 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
         segments += (uint32_t)cnt;
 
         /* phase 2: the pixels between them */
-        for (i = 0; i < cnt; i++) {
+#if !FXL_T_MIPLIN
+        if (k == 0 && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
+            /* Exact mode: every segment is one pixel whose u, v (and z)
+             * are the correction point itself; no steps to take. */
+            const int32_t i0 = x < cl ? cl - x : 0, i1 = cnt < cr - x ? cnt : cr - x;
+            for (i = i0; i < i1; i++) {
+                const int32_t idx = rowidx + x + i;
+#if FXL_T_DEPTH
+                written += FXL_T_LOOP(tg->pixels + idx, tg->depth + idx, 1, cz[i], 0u, &L, cu[i], cv[i], 0u, 0u);
+#else
+                written += FXL_T_LOOP(tg->pixels + idx, 0, 1, 0u, 0u, &L, cu[i], cv[i], 0u, 0u);
+#endif
+            }
+            x += cnt;
+            cnt_done = cnt;
+        }
+#endif
+        for (i = cnt_done; i < cnt; i++) {
             int32_t n, a = x, b;
             uint32_t du, dv, dz = 0, u = cu[i], v = cv[i], z = 0;
             const fxl__level_t *lv = &tri->level[0];
