@@ -192,30 +192,6 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 #endif
 }
 
-#if FXL_HAVE_AUTO
-/* FXL_PERSP_AUTO where the triangle-wide bound was not enough: the span is
- * cut into chunks of FXL__AUTO_CHUNK pixels anchored at its unclipped start
- * (so the cut, like every value, never depends on the clip rectangle), and
- * each chunk that reaches the clip gets the longest segment its own error
- * bound allows: a receding row pays for short segments only where it is
- * strongly minified. */
-static void auto_span(fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                      int32_t cr, int floor_k)
-{
-    int32_t c0 = xl + ((cl - xl) >> FXL__AUTO_CHUNK_LOG2 << FXL__AUTO_CHUNK_LOG2);
-    while (c0 < cr) {
-        int32_t c1 = xr - c0 > (1 << FXL__AUTO_CHUNK_LOG2) ? c0 + (1 << FXL__AUTO_CHUNK_LOG2) : xr;
-        int k = fxl__auto_span_log2(tri, row, c0, c1, floor_k);
-        if (k != tri->seg_log2) {
-            tri->seg_log2 = k;
-            fxl__span_setup(tri);
-        }
-        fxl__draw_span(tri, fn, row, c0, c1, cl > c0 ? cl : c0, cr < c1 ? cr : c1);
-        c0 = c1;
-    }
-}
-#endif
-
 fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                fxl_stats_t *stats)
 {
@@ -232,7 +208,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int32_t X[3], Y[3], ord[3], i, t;
     int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
     int64_t det, cross;
-    int mid_left, auto_floor;
+    int mid_left;
 
     if (!target || !draw || !v)
         return FXL_ERR_ARG;
@@ -305,17 +281,9 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     st = fxl__setup(&tri, v, X, Y, det);
     if (st != FXL_OK)
         return st;
-    auto_floor = 8;
-    (void)auto_floor;   /* used only with FXL_HAVE_AUTO */
 #if FXL_HAVE_AUTO
-    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv) {
-        int k = fxl__auto_seg_log2(&tri, X, Y);
-        if (k < 0) {
-            auto_floor = -1 - k;   /* refine per span, never below this */
-            k = auto_floor;
-        }
-        tri.seg_log2 = k;
-    }
+    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv)
+        tri.seg_log2 = fxl__auto_seg_log2(&tri, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);
@@ -343,14 +311,8 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         xr = mid_left ? el.x : es.x;
         cl = xl > target->clip.x0 ? xl : target->clip.x0;
         cr = xr < target->clip.x1 ? xr : target->clip.x1;
-        if (cl < cr) {
-#if FXL_HAVE_AUTO
-            if (auto_floor < 8)
-                auto_span(&tri, fn, row, xl, xr, cl, cr, auto_floor);
-            else
-#endif
-                fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
-        }
+        if (cl < cr)
+            fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
         fxl__edge_step(&el);
         fxl__edge_step(&es);
     }

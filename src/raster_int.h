@@ -146,13 +146,9 @@ typedef struct fxl__recip {
 void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row);
 void fxl__edge_step(fxl__edge_t *e);
 
-/* FXL_PERSP_AUTO (auto.c), after fxl__setup; X, Y are the snapped vertices.
- * fxl__auto_seg_log2: log2 of the segment length for the whole triangle
- * (0..8), or -1 - k when spans must be refined one by one with
- * fxl__auto_span_log2, never going below k. */
+/* FXL_PERSP_AUTO (auto.c), after fxl__setup; X, Y are the snapped vertices:
+ * log2 of the segment length for the whole triangle (0..8). */
 int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
-#define FXL__AUTO_CHUNK_LOG2 7   /* chunks of 128 pixels per refined span */
-int fxl__auto_span_log2(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int floor_k);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);
