@@ -93,29 +93,24 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     /* bits 50..63 of av: all equal (0 or 0x3FFF) when av >> (PF - 1) fits
      * int32, which setup's scaling makes the rule */
     const uint32_t top = (uint32_t)(ua >> (FXL__PF + 30));
-    const int32_t m32 = fxl__i32_of_bits((uint32_t)(ua >> (FXL__PF - 1)));
     const int e = rc->n + eb;
-    int64_t m, prod;
+    int32_t m = fxl__i32_of_bits((uint32_t)(ua >> (FXL__PF - 1)));
+    int64_t prod;
 
-    if ((top == 0u || (top == 0x3FFFu && m32 != INT32_MIN)) && e < 0 && e >= -62) {
-        /* The common case, in 32-bit operands: one SMULL on a Cortex-M.
-         * r <= 2^31 - 2 (checked exhaustively over all 2^31 values of qn),
-         * so both factors fit int32 and |prod| < 2^62. Rounding half up,
-         * floor shift by k = -e: floor((p + 2^(k-1)) / 2^k) equals
-         * floor((floor(p / 2^(k-1)) + 1) / 2), which needs no 2^(k-1). */
-        prod = (int64_t)m32 * (int32_t)rc->r;
+    if (!(top == 0u || (top == 0x3FFFu && m != INT32_MIN))) {
+        /* Setup scales each attribute below 2^30 plane units, i.e. |m| <
+         * 2^31; evaluation error can overshoot by a unit, so saturate. */
+        m = fxl__asr64(av, FXL__PF - 1) > 0 ? INT32_MAX : -INT32_MAX;
+    }
+    /* r <= 2^31 - 2 (checked exhaustively over all 2^31 values of qn), so
+     * both factors fit int32: one SMULL on a Cortex-M, |prod| < 2^62. */
+    prod = (int64_t)m * (int32_t)rc->r;
+    if (e < 0 && e >= -62) {
+        /* The common case. Rounding half up, floor shift by k = -e:
+         * floor((p + 2^(k-1)) / 2^k) equals floor((floor(p / 2^(k-1)) + 1) / 2),
+         * which needs no 2^(k-1). */
         return fxl__asr64(fxl__asr64(prod, -e - 1) + 1, 1);
     }
-    m = fxl__asr64(av, FXL__PF - 1);
-    /* Setup scales each attribute below 2^30 plane units, i.e. |m| < 2^31;
-     * evaluation error can overshoot by a unit, so saturate. */
-    if (m > INT32_MAX)
-        m = INT32_MAX;
-    else if (m < -INT32_MAX)
-        m = -INT32_MAX;
-    prod = (int64_t)(int32_t)m * (int32_t)rc->r;
-    if (e < 0 && e >= -62)
-        return fxl__asr64(fxl__asr64(prod, -e - 1) + 1, 1);
     if (e == 0)
         return prod;
     if (e < 0)
