@@ -47,6 +47,15 @@ static inline int fxl__clz64_inline(uint64_t x)
 #endif
 }
 
+static inline int fxl__clz32_inline(uint32_t x)
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
+    return x ? __builtin_clz(x) : 32;
+#else
+    return fxl_clz32(x);
+#endif
+}
+
 /* Floor shift of a signed 64-bit value (0 <= k < 64). */
 static inline int64_t fxl__asr64(int64_t x, int k)
 {

@@ -263,6 +263,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.stats = stats;
     tri.affine = draw->persp == FXL_PERSP_AFFINE;
     tri.seg_log2 = seg_log2_for(draw);
+    tri.auto_seg = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
 #if !FXL_HAVE_DEPTH
@@ -283,7 +284,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         return st;
 #if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv)
-        tri.seg_log2 = fxl__auto_seg_log2(&tri, X, Y);
+        fxl__auto_setup(&tri, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

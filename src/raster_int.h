@@ -74,6 +74,14 @@ typedef struct fxl__tri {
     int64_t q_min;               /* smallest vertex q in plane units (clamp floor) */
 
     int seg_log2;                /* log2 of the segment length; -1: whole span */
+    /* FXL_PERSP_AUTO per segment (auto.c, auto.h): with auto_seg set, each
+     * segment's length comes from the error bound at its correction point */
+    uint8_t auto_seg;
+    int8_t auto_cap;             /* longest log2 length: the widest span */
+    uint32_t auto_gx32;          /* ceil(|q_x| per pixel >> PF), saturated at 2^31 */
+    int32_t auto_t0;             /* q8 log2 terms of the bound common to all rows */
+    int64_t auto_n[2];           /* N_u, N_v at Y0, units of 2^-29 of their largest value */
+    int64_t auto_ns[2];          /* their change per subpx of Y, q16 of those units */
     uint8_t affine;              /* q constant: no perspective */
     uint8_t depth_test, depth_write;
     uint8_t swap;                /* target stores byte-swapped RGB565 */
@@ -147,8 +155,9 @@ void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t 
 void fxl__edge_step(fxl__edge_t *e);
 
 /* FXL_PERSP_AUTO (auto.c), after fxl__setup; X, Y are the snapped vertices:
- * log2 of the segment length for the whole triangle (0..8). */
-int fxl__auto_seg_log2(const fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
+ * sets seg_log2 (0..8) when one length suits the whole triangle, else
+ * auto_seg and the per-row terms of auto.h. */
+void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);
@@ -160,5 +169,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
 
 /* log2 of x > 0 in q8 (8 fraction bits), error < 2^-8 + table error. */
 int32_t fxl__log2_q8(uint64_t x);
+/* its table: round(256 log2(1 + i / 256)), i = 0..255 (persp.c) */
+extern const uint8_t fxl__log2_frac_q8[256];
 
 #endif

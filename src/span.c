@@ -13,6 +13,7 @@
 #include "texel.h"
 #include "persp.h"
 #include "sfloat.h"
+#include "auto.h"
 
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
  * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
@@ -454,6 +455,27 @@ typedef struct fxl__pt {
 #endif
 } fxl__pt_t;
 
+/* The walk's position in plane space: q, u, v (and z) plane values, modular
+ * int64, at the latest correction point, and its u, v. */
+typedef struct fxl__walk {
+    uint64_t sq, su, sv, sz;
+    fxl__pt_t pt;
+} fxl__walk_t;
+
+/* Forced inline where code size allows: a function called twice with a
+ * constant argument becomes two copies specialised for it. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__UNSWITCH inline __attribute__((always_inline))
+#else
+#define FXL__UNSWITCH inline
+#endif
+
+#if defined(__GNUC__)
+#define FXL__NOINLINE __attribute__((noinline))
+#else
+#define FXL__NOINLINE
+#endif
+
 /* Segments per batch of the specialised walks (span_fast.h): its arrays
  * take 12 bytes a segment on the stack (16 with depth). */
 #ifndef FXL__BATCH
@@ -462,9 +484,12 @@ typedef struct fxl__pt {
 
 /* u, v at a correction point from the q, u, v plane values: correct() for
  * the fast case, inline (it is most of a segment's cost). The walk counts
- * the divisions and computes z (fast_z) only where it has a depth buffer. */
-static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
-                                            fxl__pt_t *pt)
+ * the divisions and computes z (fast_z) only where it has a depth buffer.
+ * fast_correct_batch is the copy the batch loops use, forced inline where
+ * code size allows (the adaptive batch is out of line: a call there cost
+ * ~25 Cortex-M4 instructions a segment). */
+static FXL__UNSWITCH void fast_correct_batch(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
+                                             fxl__pt_t *pt)
 {
     fxl__recip_t rc;
     int64_t u, v;
@@ -480,6 +505,12 @@ static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, int64_t q, in
     pt->u64 = u;
     pt->v64 = v;
 #endif
+}
+
+static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
+                                            fxl__pt_t *pt)
+{
+    fast_correct_batch(tri, q, su, sv, pt);
 }
 
 /* sat_u32(z >> PF) of correct(): a negative value (rounding at a sliver)
@@ -795,13 +826,19 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     const int np = tri->np;
     /* Affine spans are cut every FXL_PERSP_MAX pixels too (see raster.c). */
     const int k = tri->seg_log2;
-    const int32_t N = (int32_t)1 << k;
     int32_t x, i;
     point_t p0, p1;
     fxl__seg_t seg;
     uint32_t written = 0;
+#if FXL_HAVE_AUTO
+    const int32_t t_row = tri->auto_seg ? fxl__auto_row(tri, Yc - tri->Y0) : 0;
+#endif
 
     x = xl + ((cl - xl) >> k << k);      /* first segment that reaches the clip */
+#if FXL_HAVE_AUTO
+    if (tri->auto_seg && cl > xl)
+        x = fxl__auto_first(tri, t_row, xl, xr, cl, Yc - tri->Y0);
+#endif
     for (i = 0; i < np; i++)
         pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
     correct(tri, pv, &p0);
@@ -820,7 +857,12 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     while (x < cr) {
         int32_t n, div, a, b, off;
         int64_t du0 = 0, dv0 = 0;
-        int level = 0, full = xr - x > N;
+        int level = 0, full, ki = k;
+#if FXL_HAVE_AUTO
+        if (tri->auto_seg)
+            ki = fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
+#endif
+        full = xr - x > ((int32_t)1 << ki);
 
 #if FXL_HAVE_MIPMAP
         int64_t pv0[NPLANES];
@@ -829,10 +871,10 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
                 pv0[i] = pv[i];
 #endif
         if (full) {
-            n = N;
-            div = N;
+            n = (int32_t)1 << ki;
+            div = n;
             for (i = 0; i < np; i++)
-                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpxN[i]);
+                pv[i] = (int64_t)((uint64_t)pv[i] + (ki == k ? (uint64_t)tri->gpxN[i] : (uint64_t)tri->gpx[i] * (uint32_t)n));
         } else {
             n = xr - x;
             div = n - 1;   /* the last segment ends on the last pixel */
@@ -840,7 +882,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
                 pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div);
         }
         correct(tri, pv, &p1);
-#define STEP(d) (full ? step_pow2((d), k) : step_of((d), div))
+#define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
         a = x > cl ? x : cl;
         b = x + n < cr ? x + n : cr;

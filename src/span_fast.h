@@ -24,6 +24,13 @@
  * never matter, even after wrap-around.
  */
 
+#ifndef FXL__CAT
+#define FXL__CAT2(a, b) a##b
+#define FXL__CAT(a, b) FXL__CAT2(a, b)
+#endif
+#define FXL_T_BATCH FXL__CAT(FXL_T_SPAN, _batch)
+#define FXL_T_BATCH_AUTO FXL__CAT(FXL_T_SPAN, _batch_auto)
+
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
 #define FXL_T_LV bl_t
@@ -191,6 +198,103 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
 #endif
 
 #if FXL__FAST_SPANS
+/* Phase 1 of FXL_T_SPAN: the correction points of one batch, from xe on
+ * (segment lengths 2^k, or from the error bound when autoseg); returns their
+ * count and leaves xe at the last. Forced inline where speed counts, and
+ * called with a constant autoseg: one copy per kind of walk. */
+static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autoseg, int32_t t_row, int32_t *xe_io,
+                                         int32_t xl, int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu,
+                                         uint32_t *cv, uint32_t *cz, int32_t *clod, uint8_t *ck)
+{
+    const int k = tri->seg_log2;
+    const int32_t N = (int32_t)1 << k;
+    int32_t cnt = 0, xe = *xe_io, len;
+    (void)autoseg;
+    (void)t_row;
+    (void)xl;
+    (void)cz;
+    (void)clod;
+    (void)ck;
+    do {
+#if FXL_HAVE_MIPMAP
+        if (tri->nlevels > 1) {
+            int32_t lod = tri->lod_q8_tri;
+            if (tri->lod_per_segment) {
+                lod = fast_lod(tri, (int64_t)w->sq, &w->pt) + tri->draw->lod_bias_q8;
+                if (lod < 0)
+                    lod = 0;
+                if (lod > tri->lod_max_q8)
+                    lod = tri->lod_max_q8;
+            }
+            clod[cnt] = lod;
+        }
+#endif
+        len = N;
+#if FXL_HAVE_AUTO
+        if (autoseg) {
+            const int ki = fxl__auto_next(tri, t_row, xe, xl, xr, (int64_t)w->sq);
+            ck[cnt] = (uint8_t)ki;
+            len = (int32_t)1 << ki;
+        }
+#endif
+        if (xr - xe > len) {
+            xe += len;
+#if FXL_HAVE_AUTO
+            if (autoseg) {
+                /* a 64 x 32 multiply: cheaper than a 64-bit shift by a
+                 * variable on 32-bit cores */
+                w->sq += (uint64_t)tri->gpx[FXL__PQ] * (uint32_t)len;
+                w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * (uint32_t)len;
+                w->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * (uint32_t)len;
+#if FXL_T_DEPTH
+                w->sz += (uint64_t)tri->gpx[FXL__PZ] * (uint32_t)len;
+#endif
+            } else
+#endif
+            {
+                w->sq += (uint64_t)tri->gpxN[FXL__PQ];
+                w->su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
+                w->sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
+#if FXL_T_DEPTH
+                w->sz += (uint64_t)tri->gpxN[FXL__PZ];
+#endif
+            }
+        } else {
+            /* the last segment ends on the last pixel of the span */
+            const uint64_t div = (uint64_t)(int64_t)(xr - xe - 1);
+            xe = xr;
+            w->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
+            w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
+            w->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
+#if FXL_T_DEPTH
+            w->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
+#endif
+        }
+        fast_correct_batch(tri, (int64_t)w->sq, (int64_t)w->su, (int64_t)w->sv, &w->pt);
+        cnt++;
+        cu[cnt] = w->pt.u;
+        cv[cnt] = w->pt.v;
+#if FXL_T_DEPTH
+        cz[cnt] = fast_z((int64_t)w->sz);
+#endif
+    } while (cnt < FXL__BATCH && xe < cr);
+    *xe_io = xe;
+    return cnt;
+}
+
+#if FXL_HAVE_AUTO
+/* The adaptive copy out of line: the walk copies its state in and out once
+ * per batch, and the fixed-length copy keeps its registers. (Both copies
+ * inline, or one loop serving both kinds, cost the fixed walk 2-7
+ * Cortex-M4 instructions a segment in spills.) */
+static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_row, int32_t *xe_io, int32_t xl,
+                                              int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu, uint32_t *cv,
+                                              uint32_t *cz, int32_t *clod, uint8_t *ck)
+{
+    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, clod, ck);
+}
+#endif
+
 /* The whole span [xl, xr) of `row` clipped to [cl, cr): the segment walk of
  * fxl__draw_span (see there for the rules) restricted to the fast case.
  * Every value is computed exactly as the generic walk computes it; only
@@ -204,25 +308,42 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 {
     const fxl_target_t *tg = tri->target;
     const int k = tri->seg_log2;
-    const int32_t N = (int32_t)1 << k;
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+#if FXL_HAVE_AUTO
+    /* FXL_PERSP_AUTO per segment: lengths from the error bound (auto.h) */
+    const int autoseg = tri->auto_seg;
+    const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
+#endif
     /* index of frame pixel (0, row) in the buffer; a pointer is only formed
      * for pixels inside the clip rectangle */
     const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
-    /* plane values (modular int64) at the latest correction point */
-    uint64_t sq, su, sv;
+    /* plane values (modular int64) at the latest correction point, and
+     * its u, v */
+    fxl__walk_t w;
     /* the batch's correction points: cu[i], cv[i] (and cz[i]) start
      * segment i, cu[i + 1] ends it */
     uint32_t cu[FXL__BATCH + 1], cv[FXL__BATCH + 1];
+#if FXL_HAVE_AUTO
+    uint8_t ck[FXL__BATCH];   /* each segment's log2 length (AUTO per segment) */
+#endif
 #if FXL_T_DEPTH
-    uint64_t sz;
     uint32_t cz[FXL__BATCH + 1];
+#define FXL_T_CZ cz
+#else
+#define FXL_T_CZ 0
 #endif
 #if FXL_HAVE_MIPMAP
     int32_t clod[FXL__BATCH];   /* each segment's LOD, q8, clamped */
+#define FXL_T_CLOD clod
+#else
+#define FXL_T_CLOD 0
 #endif
-    fxl__pt_t pt;
+#if FXL_HAVE_AUTO
+#define FXL_T_CK ck
+#else
+#define FXL_T_CK 0
+#endif
     uint32_t written = 0, segments = 0;
     /* the prepared level(s), redone only when a segment's level changes */
     const fxl__level_t *cur = &tri->level[0];
@@ -233,74 +354,49 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     FXL_T_LV_INIT(&L2, cur2);
 #endif
     FXL_T_LV_INIT(&L, cur);
+#if FXL_HAVE_AUTO
+    if (autoseg && cl > xl)
+        x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
+#endif
 
     {
         const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
-        sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
-        su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
-        sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
+        w.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
+        w.su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
+        w.sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
 #if FXL_T_DEPTH
-        sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
-        cz[0] = fast_z((int64_t)sz);
+        w.sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
+        cz[0] = fast_z((int64_t)w.sz);
+#else
+        w.sz = 0;
 #endif
     }
-    fast_correct(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
-    cu[0] = pt.u;
-    cv[0] = pt.v;
+    fast_correct(tri, (int64_t)w.sq, (int64_t)w.su, (int64_t)w.sv, &w.pt);
+    cu[0] = w.pt.u;
+    cv[0] = w.pt.v;
 #if FXL_HAVE_MIPMAP
     clod[0] = 0;   /* written before it is read; this tells the compiler */
 #endif
 
     while (x < cr) {
-        int32_t cnt = 0, cnt_done = 0, i, xe = x;
+        int32_t cnt, cnt_done = 0, i, xe = x;
 
         /* phase 1: the batch's correction points */
-        do {
-#if FXL_HAVE_MIPMAP
-            if (tri->nlevels > 1) {
-                int32_t lod = tri->lod_q8_tri;
-                if (tri->lod_per_segment) {
-                    lod = fast_lod(tri, (int64_t)sq, &pt) + tri->draw->lod_bias_q8;
-                    if (lod < 0)
-                        lod = 0;
-                    if (lod > tri->lod_max_q8)
-                        lod = tri->lod_max_q8;
-                }
-                clod[cnt] = lod;
-            }
+#if FXL_HAVE_AUTO
+        if (autoseg) {
+            fxl__walk_t wa = w;
+            int32_t xa = xe;
+            cnt = FXL_T_BATCH_AUTO(tri, t_row, &xa, xl, xr, cr, &wa, cu, cv, FXL_T_CZ, FXL_T_CLOD, ck);
+            w = wa;
+            xe = xa;
+        } else
 #endif
-            if (xr - xe > N) {
-                xe += N;
-                sq += (uint64_t)tri->gpxN[FXL__PQ];
-                su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
-                sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
-#if FXL_T_DEPTH
-                sz += (uint64_t)tri->gpxN[FXL__PZ];
-#endif
-            } else {
-                /* the last segment ends on the last pixel of the span */
-                const uint64_t div = (uint64_t)(int64_t)(xr - xe - 1);
-                xe = xr;
-                sq += (uint64_t)tri->gpx[FXL__PQ] * div;
-                su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
-                sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
-#if FXL_T_DEPTH
-                sz += (uint64_t)tri->gpx[FXL__PZ] * div;
-#endif
-            }
-            fast_correct(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
-            cnt++;
-            cu[cnt] = pt.u;
-            cv[cnt] = pt.v;
-#if FXL_T_DEPTH
-            cz[cnt] = fast_z((int64_t)sz);
-#endif
-        } while (cnt < FXL__BATCH && xe < cr);
+            cnt = FXL_T_BATCH(tri, 0, 0, &xe, xl, xr, cr, &w, cu, cv, FXL_T_CZ, FXL_T_CLOD, FXL_T_CK);
         segments += (uint32_t)cnt;
 
         /* phase 2: the pixels between them */
 #if !FXL_T_MIPLIN
-        if (k == 0 && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
+        if (k == 0 && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {   /* (AUTO per segment has k >= 1) */
             /* Exact mode: every segment is one pixel whose u, v (and z)
              * are the correction point itself; no steps to take. */
             const int32_t i0 = x < cl ? cl - x : 0, i1 = cnt < cr - x ? cnt : cr - x;
@@ -317,16 +413,21 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
         }
 #endif
         for (i = cnt_done; i < cnt; i++) {
+#if FXL_HAVE_AUTO
+            const int ki = autoseg ? ck[i] : k;
+#else
+            const int ki = k;
+#endif
             int32_t n, a = x, b;
             uint32_t du, dv, dz = 0, u = cu[i], v = cv[i], z = 0;
             const fxl__level_t *lv = &tri->level[0];
 
-            if (xr - x > N) {
-                n = N;
-                du = step_pow2_u32(cu[i + 1] - u, k);
-                dv = step_pow2_u32(cv[i + 1] - v, k);
+            if (xr - x > ((int32_t)1 << ki)) {
+                n = (int32_t)1 << ki;
+                du = step_pow2_u32(cu[i + 1] - u, ki);
+                dv = step_pow2_u32(cv[i + 1] - v, ki);
 #if FXL_T_DEPTH
-                dz = step_z_pow2(cz[i + 1], cz[i], k);
+                dz = step_z_pow2(cz[i + 1], cz[i], ki);
 #endif
             } else {
                 const uint32_t div = (uint32_t)(xr - x - 1);
@@ -428,6 +529,9 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
         cz[0] = cz[cnt];
 #endif
     }
+#undef FXL_T_CZ
+#undef FXL_T_CLOD
+#undef FXL_T_CK
     if (tri->stats) {
         tri->stats->divisions += segments + 1u;
         tri->stats->pixels += written;
@@ -444,6 +548,8 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #undef FXL_T_LOOP1
 #endif
 #undef FXL_T_SPAN
+#undef FXL_T_BATCH
+#undef FXL_T_BATCH_AUTO
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif
