@@ -820,14 +820,14 @@ void fxl__span_setup(fxl__tri_t *tri)
 static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                               int32_t cl, int32_t cr)
 {
-    int64_t pv[NPLANES];
+    int64_t pv[NPLANES] = {0};   /* planes past np stay 0 (and -O3 sees them set) */
     const int32_t Yc = row * FXL__ONE + FXL__HALF;
     const fxl_target_t *tg = tri->target;
     const int np = tri->np;
     /* Affine spans are cut every FXL_PERSP_MAX pixels too (see raster.c). */
     const int k = tri->seg_log2;
     int32_t x, i;
-    point_t p0, p1;
+    point_t p0 = {0}, p1 = {0};
     fxl__seg_t seg;
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
