@@ -116,13 +116,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
         /* Per segment pays ~40-70 Cortex-M4 instructions a segment for
          * the bound; it only wins where q varies enough that the longest
          * allowed length (at the largest vertex q) is 4x the shortest. */
-        int64_t qmax = tri->q_min;
-        int32_t lg;
-        for (i = 0; i < 3; i++) {
-            int64_t qi = fxl__plane_at(&tri->q, tri->X0, tri->Y0, X[i], Y[i]);
-            qmax = qi > qmax ? qi : qmax;
-        }
-        lg = fxl__sf_log2_q8(qx) + fxl__sf_log2_q8(nmax) / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(qmax, 0));
+        const int32_t lg =
+            fxl__sf_log2_q8(qx) + fxl__sf_log2_q8(nmax) / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
         if (fit_log2(lg, lb, cap) < k + 2)
             return;
     }

@@ -29,11 +29,11 @@
 
 #if FXL_HAVE_AUTO
 
-/* log2 of q >> FXL__PF in q8, q >> FXL__PF >= 256: within (-1.94, +0.5)
- * q8 steps of the truth (8-bit mantissa truncated, table rounded). q is at
- * most the largest vertex q, < 2^(31 + PF) plane units (setup.c), so
- * q >> PF fits 32 bits; below 256 it is too small to matter (1-pixel
- * segments long before: a depth ratio of 2^23). */
+/* fxl__log2_q8_inline (persp.h) of q >> FXL__PF >= 256, in 32 bits: a
+ * 64-bit CLZ and shift cost the per-segment test ~15 Cortex-M4
+ * instructions more. q is at most the largest vertex q, < 2^(31 + PF)
+ * plane units (setup.c), so q >> PF fits 32 bits; below 256 it is too small
+ * to matter (1-pixel segments long before: a depth ratio of 2^23). */
 static inline int32_t fxl__auto_log2_q8(uint32_t q32)
 {
     const int msb = 31 - fxl__clz32_inline(q32);
@@ -49,7 +49,7 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
     const uint64_t ady = dY < 0 ? (uint64_t)0 - (uint64_t)(int64_t)dY : (uint64_t)dY;
     const uint64_t pad = 512u + (ady >> 16);
     uint64_t a[2], s;
-    int i, msb;
+    int i;
     for (i = 0; i < 2; i++) {
         const int64_t n = fxl__asr64((int64_t)((uint64_t)tri->auto_ns[i] * (uint64_t)(int64_t)dY), 16) +
                           tri->auto_n[i];
@@ -58,10 +58,8 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
             return INT32_MIN / 2;   /* outside the triangle's rows: 1-pixel segments */
     }
     s = a[0] * a[0] + a[1] * a[1];   /* in [2^18, 2^63) */
-    msb = 63 - fxl__clz64_inline(s);
     /* log2 |N| rounded up: (log2 s + 2) / 2, ceiling */
-    return tri->auto_t0 -
-           (((int32_t)msb * 256 + fxl__log2_frac_q8[(uint32_t)(s >> (msb - 8)) & 0xFFu] + 3) >> 1);
+    return tri->auto_t0 - ((fxl__log2_q8_inline(s) + 3) >> 1);
 }
 
 /* Longest log2 length <= cap that the bound allows with q_min >= q32

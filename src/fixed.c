@@ -139,18 +139,26 @@ fxl_q16_t fxl_q16_mul_sat(fxl_q16_t a, fxl_q16_t b)
     return v;
 }
 
-fxl_status_t fxl_q16_mul_chk(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out)
+/* The status and store of the _chk variants: ok is the operation's
+ * result, v its value. */
+static fxl_status_t q16_chk_store(int ok, fxl_q16_t v, fxl_q16_t *out)
 {
-    fxl_q16_t v;
-    int negative;
     if (out == NULL) { /* not in the header's contract: a NULL out is an ARG error */
         return FXL_ERR_ARG;
     }
-    if (!q16_mul(a, b, &v, &negative)) {
+    if (!ok) {
         return FXL_ERR_RANGE;
     }
     *out = v;
     return FXL_OK;
+}
+
+fxl_status_t fxl_q16_mul_chk(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out)
+{
+    fxl_q16_t v = 0;
+    int negative;
+    const int ok = q16_mul(a, b, &v, &negative);
+    return q16_chk_store(ok, v, out);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -192,16 +200,10 @@ fxl_q16_t fxl_q16_div_sat(fxl_q16_t a, fxl_q16_t b)
 
 fxl_status_t fxl_q16_div_chk(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out)
 {
-    fxl_q16_t v;
+    fxl_q16_t v = 0;
     int negative;
-    if (out == NULL) { /* not in the header's contract: a NULL out is an ARG error */
-        return FXL_ERR_ARG;
-    }
-    if (!q16_div(a, b, &v, &negative)) {
-        return FXL_ERR_RANGE;
-    }
-    *out = v;
-    return FXL_OK;
+    const int ok = q16_div(a, b, &v, &negative);
+    return q16_chk_store(ok, v, out);
 }
 
 fxl_q16_t fxl_q16_recip_sat(fxl_q16_t a)

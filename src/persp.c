@@ -13,6 +13,7 @@
  * attribute; on an M0+ the division and multiplies are library calls.
  */
 #include "raster_int.h"
+#include "persp.h"
 
 #if FXL_HAVE_MIPMAP || FXL_HAVE_AUTO
 /* round(256 * log2(1 + i / 256)), i = 0..255. */
@@ -37,14 +38,6 @@ const uint8_t fxl__log2_frac_q8[256] = {
 
 int32_t fxl__log2_q8(uint64_t x)
 {
-    int msb;
-    uint32_t frac;
-
-    if (x == 0)
-        return INT32_MIN / 2;
-    msb = 63 - fxl_clz64(x);
-    /* The 8 bits after the leading one index the table: error < 1/256. */
-    frac = (uint32_t)(msb >= 8 ? (x >> (msb - 8)) : (x << (8 - msb))) & 0xFFu;
-    return msb * 256 + fxl__log2_frac_q8[frac];
+    return x ? fxl__log2_q8_inline(x) : INT32_MIN / 2;
 }
 #endif

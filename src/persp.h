@@ -56,6 +56,16 @@ static inline int fxl__clz32_inline(uint32_t x)
 #endif
 }
 
+/* log2 of x > 0 in q8: the position of the leading one, and the 8 bits
+ * after it looked up in fxl__log2_frac_q8. Within (-1.94, +0.5) q8 steps of
+ * the truth (the mantissa is truncated, the table rounded). */
+static inline int32_t fxl__log2_q8_inline(uint64_t x)
+{
+    const int msb = 63 - fxl__clz64_inline(x);
+    const uint32_t frac = (uint32_t)(msb >= 8 ? (x >> (msb - 8)) : (x << (8 - msb))) & 0xFFu;
+    return (int32_t)msb * 256 + fxl__log2_frac_q8[frac];
+}
+
 /* Floor shift of a signed 64-bit value (0 <= k < 64). */
 static inline int64_t fxl__asr64(int64_t x, int k)
 {

@@ -72,6 +72,7 @@ typedef struct fxl__tri {
     uint8_t has_color;           /* Gouraud: planes r, g, b in use */
     uint8_t signed_u, signed_v;  /* clamp/border axes hold saturated int32 coordinates */
     int64_t q_min;               /* smallest vertex q in plane units (clamp floor) */
+    int64_t q_max;               /* largest vertex q in plane units */
 
     int seg_log2;                /* log2 of the segment length; -1: whole span */
     /* FXL_PERSP_AUTO per segment (auto.c, auto.h): with auto_seg set, each

@@ -174,11 +174,15 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         }
     }
     make_plane(&tri->q, q, X, Y, det);
-    tri->q_min = q[0];
-    for (i = 1; i < 3; i++)
+    tri->q_min = tri->q_max = q[0];
+    for (i = 1; i < 3; i++) {
         if (q[i] < tri->q_min)
             tri->q_min = q[i];
+        if (q[i] > tri->q_max)
+            tri->q_max = q[i];
+    }
     tri->q_min *= (int64_t)1 << FXL__PF;
+    tri->q_max *= (int64_t)1 << FXL__PF;
 
     for (i = 0; i < 3; i++)
         z[i] = (int64_t)v[i].inv_w;

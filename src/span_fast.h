@@ -339,11 +339,6 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #else
 #define FXL_T_CLOD 0
 #endif
-#if FXL_HAVE_AUTO
-#define FXL_T_CK ck
-#else
-#define FXL_T_CK 0
-#endif
     uint32_t written = 0, segments = 0;
     /* the prepared level(s), redone only when a segment's level changes */
     const fxl__level_t *cur = &tri->level[0];
@@ -391,7 +386,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
             xe = xa;
         } else
 #endif
-            cnt = FXL_T_BATCH(tri, 0, 0, &xe, xl, xr, cr, &w, cu, cv, FXL_T_CZ, FXL_T_CLOD, FXL_T_CK);
+            cnt = FXL_T_BATCH(tri, 0, 0, &xe, xl, xr, cr, &w, cu, cv, FXL_T_CZ, FXL_T_CLOD, 0);
         segments += (uint32_t)cnt;
 
         /* phase 2: the pixels between them */
@@ -531,7 +526,6 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     }
 #undef FXL_T_CZ
 #undef FXL_T_CLOD
-#undef FXL_T_CK
     if (tri->stats) {
         tri->stats->divisions += segments + 1u;
         tri->stats->pixels += written;

@@ -658,8 +658,8 @@ static const fxl__tri_t *probe_last_tri;
 static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     int32_t i;
-    if (tri != probe_last_tri || tri->auto_seg) {
-        probe_auto_seg_tris += tri->auto_seg && tri != probe_last_tri;
+    if (tri != probe_last_tri) {   /* the first segment of a draw */
+        probe_auto_seg_tris += tri->auto_seg;
         probe_last_tri = tri;
     }
     for (i = 0; i < s->n; i++) {
