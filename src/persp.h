@@ -74,6 +74,26 @@ static inline int64_t fxl__asr64(int64_t x, int k)
     return x < 0 ? ~(int64_t)((uint64_t)~x >> k) : (int64_t)((uint64_t)x >> k);
 }
 
+/* Floor shift of a signed 32-bit value (0 <= k < 32). */
+static inline int32_t fxl__asr32(int32_t x, int k)
+{
+    if (FXL__SAR_IS_ARITHMETIC)
+        return x >> k;
+    return x < 0 ? -(int32_t)(~(uint32_t)x >> k) - 1 : (int32_t)((uint32_t)x >> k);
+}
+
+/* (int64)a * b, one SMULL on a Cortex-M. The empty asm (GCC, 32-bit ARM)
+ * hides where a came from: GCC otherwise rebuilds fxl__persp_e's m from the
+ * 64-bit plane value it was cut from and multiplies 64 x 32 bits (MUL, MLA,
+ * UMULL). */
+static inline int64_t fxl__mul_s32(int32_t a, int32_t b)
+{
+#if defined(__GNUC__) && defined(__arm__)
+    __asm__("" : "+r"(a));
+#endif
+    return (int64_t)a * b;
+}
+
 /* The int32 whose two's-complement bit pattern is b (no conversion of an
  * out-of-range value: the compiler folds this to nothing). */
 static inline int32_t fxl__i32_of_bits(uint32_t b)
@@ -123,7 +143,17 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     }
     /* r <= 2^31 - 2 (checked exhaustively over all 2^31 values of qn), so
      * both factors fit int32: one SMULL on a Cortex-M, |prod| < 2^62. */
-    prod = (int64_t)m * (int32_t)rc->r;
+    prod = fxl__mul_s32(m, (int32_t)rc->r);
+    if (e <= -33 && e >= -62) {
+        /* Shifts of 33 and more (|a| < 2^29: u, v within 2^13 texels of
+         * the rebased origin), on 32-bit words only: floor(p / 2^(k-1)) = floor(hi / 2^(k-33)) with
+         * hi = floor(p / 2^32), and floor((t + 1) / 2) = (t >> 1) + (t & 1).
+         * Bit for bit the value of the general case below, without its
+         * 64-bit shift by a variable (~16 Cortex-M4 instructions). */
+        const int32_t hi = (int32_t)fxl__asr64(prod, 32);
+        const int32_t t = fxl__asr32(hi, -e - 33);
+        return (int64_t)fxl__asr32(t, 1) + (int64_t)((uint32_t)t & 1u);
+    }
     if (e < 0 && e >= -62) {
         /* The common case. Rounding half up, floor shift by k = -e:
          * floor((p + 2^(k-1)) / 2^k) equals floor((floor(p / 2^(k-1)) + 1) / 2),
