@@ -520,6 +520,64 @@ static inline uint32_t fast_z(int64_t sz)
     return sz < 0 ? 0u : sat_u32((int64_t)((uint64_t)sz >> FXL__PF));
 }
 
+/* The lean walks' position: plane values (modular int64) at the latest
+ * correction point, and u, v, z there. */
+typedef struct fxl__lean {
+    uint64_t sq, su, sv, sz;
+    uint32_t u, v, z;
+} fxl__lean_t;
+
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__FLATTEN __attribute__((flatten))
+#else
+#define FXL__FLATTEN
+#endif
+
+/* The lean walks' correction point: the planes advanced by 2^k pixels
+ * (div == 0) or by div pixels, and u, v (and z when with_z) there, as the
+ * batch walk computes them. One copy out of line serves every variant: the
+ * division and its 64-bit arithmetic (flattened in) get all the registers,
+ * and the span functions keep theirs for the pixel loop. */
+static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div, const int with_z)
+{
+    fxl__recip_t rc;
+    int64_t q;
+
+    if (div == 0u) {
+        s->sq += (uint64_t)tri->gpxN[FXL__PQ];
+        s->su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
+        s->sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
+        if (with_z)
+            s->sz += (uint64_t)tri->gpxN[FXL__PZ];
+    } else {
+        s->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
+        s->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
+        s->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
+        if (with_z)
+            s->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
+    }
+    q = (int64_t)s->sq;
+    if (q < tri->q_min)
+        q = tri->q_min;
+    fxl__recip(q, &rc);
+    s->u = (uint32_t)(uint64_t)fxl__persp_e((int64_t)s->su, &rc, tri->persp_eb[0]);
+    s->v = (uint32_t)(uint64_t)fxl__persp_e((int64_t)s->sv, &rc, tri->persp_eb[1]);
+    if (with_z)
+        s->z = fast_z((int64_t)s->sz);
+}
+
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div)
+{
+    lean_next(tri, s, div, 0);
+}
+
+#if FXL_HAVE_DEPTH
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div)
+{
+    lean_next(tri, s, div, 1);
+}
+#endif
+
 /* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the
  * result is the int32 bit pattern. A negative d has magnitude 0 - d <= 2^31. */
 static inline uint32_t step_pow2_u32(uint32_t d, int k)

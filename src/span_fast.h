@@ -30,6 +30,7 @@
 #endif
 #define FXL_T_BATCH FXL__CAT(FXL_T_SPAN, _batch)
 #define FXL_T_BATCH_AUTO FXL__CAT(FXL_T_SPAN, _batch_auto)
+#define FXL_T_LEAN FXL__CAT(FXL_T_SPAN, _lean)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
@@ -295,6 +296,100 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
 }
 #endif
 
+#if !FXL_T_MIPLIN
+/* The common case in one loop: fixed segments of 2^k >= 2 pixels on one
+ * level (no LOD per segment, no adaptive lengths). The same values as the
+ * batch walk below, bit for bit; without its arrays, its per-segment level
+ * and LOD bookkeeping and its walk state in memory it costs about half as
+ * many instructions a segment. The plane values live in locals the compiler
+ * may spill around the pixel loop: a dozen loads and stores a segment. */
+static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                     int32_t cr)
+{
+    const fxl_target_t *tg = tri->target;
+    const int k = tri->seg_log2;
+    const int32_t N = (int32_t)1 << k;
+    int32_t x = xl + ((cl - xl) >> k << k);
+    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+    const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
+    uint16_t *const prow = tg->pixels + ((row - tg->origin_y) * tg->stride - tg->origin_x);
+#if FXL_T_DEPTH
+    uint16_t *const zrow = tg->depth + ((row - tg->origin_y) * tg->stride - tg->origin_x);
+#endif
+    fxl__lean_t s;
+    uint32_t written = 0, segments = 1;
+    FXL_T_LV L;
+
+    FXL_T_LV_INIT(&L, &tri->level[0]);
+    s.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
+    s.su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
+    s.sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
+#if FXL_T_DEPTH
+    s.sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
+    s.z = fast_z((int64_t)s.sz);
+#else
+    s.sz = 0;
+    s.z = 0;
+#endif
+    {
+        fxl__pt_t pt;
+        fast_correct(tri, (int64_t)s.sq, (int64_t)s.su, (int64_t)s.sv, &pt);
+        s.u = pt.u;
+        s.v = pt.v;
+    }
+    while (x < cr) {
+        const uint32_t u0 = s.u, v0 = s.v;
+        const uint32_t div = xr - x > N ? 0u : (uint32_t)(xr - x - 1);
+        const int32_t n = div ? (int32_t)div + 1 : N;
+        int32_t a = x, b = x + n < cr ? x + n : cr;
+        uint32_t du, dv, u = u0, v = v0;
+#if FXL_T_DEPTH
+        const uint32_t z0 = s.z;
+        uint32_t dz, zz = z0;
+        lean_next_uvz(tri, &s, div);
+#else
+        lean_next_uv(tri, &s, div);
+#endif
+        if (div == 0u) {
+            du = step_pow2_u32(s.u - u0, k);
+            dv = step_pow2_u32(s.v - v0, k);
+#if FXL_T_DEPTH
+            dz = step_z_pow2(s.z, z0, k);
+#endif
+        } else {
+            /* the last segment ends on the last pixel of the span */
+            du = step_div_u32(s.u - u0, div);
+            dv = step_div_u32(s.v - v0, div);
+#if FXL_T_DEPTH
+            dz = step_z_div(s.z, z0, div);
+#endif
+        }
+        segments++;
+        if (x < cl) {
+            /* only the first segment starts left of the clip */
+            const uint32_t off = (uint32_t)(cl - x);
+            a = cl;
+            u += du * off;
+            v += dv * off;
+#if FXL_T_DEPTH
+            zz += dz * off;
+#endif
+        }
+#if FXL_T_DEPTH
+        written += FXL_T_LOOP(prow + a, zrow + a, b - a, zz, dz, &L, u, v, du, dv);
+#else
+        written += FXL_T_LOOP(prow + a, 0, b - a, 0u, 0u, &L, u, v, du, dv);
+#endif
+        x += n;
+    }
+    if (tri->stats) {
+        tri->stats->divisions += segments;
+        tri->stats->pixels += written;
+        tri->stats->spans++;
+    }
+}
+#endif
+
 /* The whole span [xl, xr) of `row` clipped to [cl, cr): the segment walk of
  * fxl__draw_span (see there for the rules) restricted to the fast case.
  * Every value is computed exactly as the generic walk computes it; only
@@ -310,6 +405,12 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     const int k = tri->seg_log2;
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+#if !FXL_T_MIPLIN
+    if (k > 0 && !(FXL_HAVE_AUTO && tri->auto_seg) && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
+        FXL_T_LEAN(tri, row, xl, xr, cl, cr);
+        return;
+    }
+#endif
 #if FXL_HAVE_AUTO
     /* FXL_PERSP_AUTO per segment: lengths from the error bound (auto.h) */
     const int autoseg = tri->auto_seg;
@@ -544,6 +645,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #undef FXL_T_SPAN
 #undef FXL_T_BATCH
 #undef FXL_T_BATCH_AUTO
+#undef FXL_T_LEAN
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif
