@@ -786,6 +786,87 @@ void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
     }
 }
 
+/* FXL_PERSP_AUTO's vertex test (auto.c) draws a triangle affine span by
+ * span when (range u + range v) (q_max - q_min) / (4 q_min) is within the
+ * budget. Small random triangles whose vertex bound lies from 1/8 to 8
+ * times the budget: every pixel stays within the budget, and the test
+ * accepts a fair share of them (each accepted triangle has spans of up to
+ * 24 px drawn as one affine segment: its error is the bound's to keep). */
+void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
+{
+    static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
+    static uint16_t buf[320 * 240];
+    static uint16_t texels[64 * 64];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    int b, i, j, x, y, accepted = 0, drawn = 0;
+    double worst = 0;
+    char msg[200];
+    lcg_state = 777u;
+    fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.persp = FXL_PERSP_AUTO;
+    for (b = 0; b < 3; b++) {
+        d.auto_budget = budgets[b];
+        for (i = 0; i < 200; i++) {
+            fxl_vertex_t v[3];
+            const double cx = rnd_range(40, 280), cy = rnd_range(40, 200);
+            /* vertex bound / budget from 1/8 to 8, log-uniform */
+            const double rho = pow(2.0, rnd_range(-3000, 3000) / 1000.0);
+            double px[3], py[3], iw[3], tu[3], tv[3], qlo = 1e9, qhi = 0, ulo = 1e9, uhi = -1e9, vlo = 1e9,
+                                                     vhi = -1e9, bound, scale, e_max = 0;
+            for (j = 0; j < 3; j++) {
+                px[j] = cx + rnd_range(-12, 12);
+                py[j] = cy + rnd_range(-12, 12);
+                iw[j] = 0.3 * (1.0 + rnd_range(0, 500) / 1000.0);
+                tu[j] = rnd_range(-1000, 1000) / 1000.0;
+                tv[j] = rnd_range(-1000, 1000) / 1000.0;
+                qlo = iw[j] < qlo ? iw[j] : qlo;
+                qhi = iw[j] > qhi ? iw[j] : qhi;
+                ulo = tu[j] < ulo ? tu[j] : ulo;
+                uhi = tu[j] > uhi ? tu[j] : uhi;
+                vlo = tv[j] < vlo ? tv[j] : vlo;
+                vhi = tv[j] > vhi ? tv[j] : vhi;
+            }
+            bound = (uhi - ulo + vhi - vlo) * (qhi - qlo) / (4 * qlo);
+            if (bound <= 0)
+                continue;
+            /* texel coordinates scaled to put the bound at rho * budget */
+            scale = rho * budgets[b] / 65536.0 / bound;
+            bound *= scale;
+            for (j = 0; j < 3; j++)
+                v[j] = vtx(px[j], py[j], iw[j], 0.5 + tu[j] * scale / 64, 0.5 + tv[j] * scale / 64);
+            probe_target(&t, buf, 320, 240);
+            probe_seg_len_max = -1;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_len));
+            if (probe_seg_len_max < 0)
+                continue;   /* nothing covered */
+            drawn++;
+            accepted += bound <= budgets[b] / 65536.0 * 0.9;
+            for (y = 0; y < 240; y++)
+                for (x = 0; x < 320; x++)
+                    if (probe_count[y * 320 + x]) {
+                        double eu, ev, e;
+                        exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
+                        e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
+                        e_max = e > e_max ? e : e_max;
+                    }
+            if (e_max / (budgets[b] / 65536.0) > worst)
+                worst = e_max / (budgets[b] / 65536.0);
+            snprintf(msg, sizeof msg, "budget %.4f tri %d: max error %.4f texels, vertex bound %.4f, log2 length %d",
+                     budgets[b] / 65536.0, i, e_max, bound, probe_seg_len_max);
+            TEST_ASSERT_TRUE_MESSAGE(e_max <= budgets[b] / 65536.0, msg);
+        }
+    }
+    snprintf(msg, sizeof msg, "%d triangles drawn, %d within the vertex bound; worst error / budget %.3f", drawn,
+             accepted, worst);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(drawn >= 450 && accepted >= drawn / 4, msg);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -867,6 +948,7 @@ int main(void)
     RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
+    RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();
