@@ -534,27 +534,29 @@ typedef struct fxl__lean {
 #endif
 
 /* The lean walks' correction point: the planes advanced by 2^k pixels
- * (div == 0) or by div pixels, and u, v (and z when with_z) there, as the
+ * (mult == 0) or by mult pixels, and u, v (and z when with_z) there, as the
  * batch walk computes them. One copy out of line serves every variant: the
  * division and its 64-bit arithmetic (flattened in) get all the registers,
  * and the span functions keep theirs for the pixel loop. */
-static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div, const int with_z)
+static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z)
 {
     fxl__recip_t rc;
     int64_t q;
 
-    if (div == 0u) {
+    if (mult == 0u) {
         s->sq += (uint64_t)tri->gpxN[FXL__PQ];
         s->su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
         s->sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
         if (with_z)
             s->sz += (uint64_t)tri->gpxN[FXL__PZ];
     } else {
-        s->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
-        s->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
-        s->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
+        /* a 64 x 32 multiply: cheaper than a 64-bit shift by a variable on
+         * 32-bit cores */
+        s->sq += (uint64_t)tri->gpx[FXL__PQ] * mult;
+        s->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * mult;
+        s->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * mult;
         if (with_z)
-            s->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
+            s->sz += (uint64_t)tri->gpx[FXL__PZ] * mult;
     }
     q = (int64_t)s->sq;
     if (q < tri->q_min)
@@ -566,15 +568,15 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
         s->z = fast_z((int64_t)s->sz);
 }
 
-static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div)
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, div, 0);
+    lean_next(tri, s, mult, 0);
 }
 
 #if FXL_HAVE_DEPTH
-static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t div)
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, div, 1);
+    lean_next(tri, s, mult, 1);
 }
 #endif
 

@@ -297,21 +297,24 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
 #endif
 
 #if !FXL_T_MIPLIN
-/* The common case in one loop: fixed segments of 2^k >= 2 pixels on one
- * level (no LOD per segment, no adaptive lengths). The same values as the
- * batch walk below, bit for bit; without its arrays, its per-segment level
- * and LOD bookkeeping and its walk state in memory it costs about half as
- * many instructions a segment. The plane values live in locals the compiler
- * may spill around the pixel loop: a dozen loads and stores a segment. */
-static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                     int32_t cr)
+/* The common cases in one loop: segments on one level (no LOD per
+ * segment), of 2^k >= 2 pixels or of adaptive lengths (autoseg, a constant:
+ * one copy each). The same values as the batch walk below, bit for bit;
+ * without its arrays, its per-segment level and LOD bookkeeping and its
+ * walk state in memory it costs about half as many instructions a
+ * segment. The correction is one call (lean_next_uv/_uvz) shared by all
+ * variants. */
+static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, int32_t row, int32_t xl, int32_t xr,
+                                     int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
     const int k = tri->seg_log2;
-    const int32_t N = (int32_t)1 << k;
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-    const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
+#if FXL_HAVE_AUTO
+    const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
+#endif
+    int32_t dX;
     uint16_t *const prow = tg->pixels + ((row - tg->origin_y) * tg->stride - tg->origin_x);
 #if FXL_T_DEPTH
     uint16_t *const zrow = tg->depth + ((row - tg->origin_y) * tg->stride - tg->origin_x);
@@ -320,6 +323,12 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, int32_t row, int32_t
     uint32_t written = 0, segments = 1;
     FXL_T_LV L;
 
+    (void)autoseg;
+#if FXL_HAVE_AUTO
+    if (autoseg && cl > xl)
+        x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
+#endif
+    dX = x * FXL__ONE + FXL__HALF - tri->X0;
     FXL_T_LV_INIT(&L, &tri->level[0]);
     s.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
     s.su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
@@ -339,22 +348,31 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, int32_t row, int32_t
     }
     while (x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
+#if FXL_HAVE_AUTO
+        const int ki = autoseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k;
+#else
+        const int ki = k;
+#endif
+        const int32_t N = (int32_t)1 << ki;
         const uint32_t div = xr - x > N ? 0u : (uint32_t)(xr - x - 1);
         const int32_t n = div ? (int32_t)div + 1 : N;
+        /* planes advance by gpxN (fixed), gpx * 2^ki (adaptive) or
+         * gpx * div (the last segment, which ends on the last pixel) */
+        const uint32_t mult = div ? div : (autoseg ? (uint32_t)N : 0u);
         int32_t a = x, b = x + n < cr ? x + n : cr;
         uint32_t du, dv, u = u0, v = v0;
 #if FXL_T_DEPTH
         const uint32_t z0 = s.z;
         uint32_t dz, zz = z0;
-        lean_next_uvz(tri, &s, div);
+        lean_next_uvz(tri, &s, mult);
 #else
-        lean_next_uv(tri, &s, div);
+        lean_next_uv(tri, &s, mult);
 #endif
         if (div == 0u) {
-            du = step_pow2_u32(s.u - u0, k);
-            dv = step_pow2_u32(s.v - v0, k);
+            du = step_pow2_u32(s.u - u0, ki);
+            dv = step_pow2_u32(s.v - v0, ki);
 #if FXL_T_DEPTH
-            dz = step_z_pow2(s.z, z0, k);
+            dz = step_z_pow2(s.z, z0, ki);
 #endif
         } else {
             /* the last segment ends on the last pixel of the span */
@@ -406,9 +424,17 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
 #if !FXL_T_MIPLIN
-    if (k > 0 && !(FXL_HAVE_AUTO && tri->auto_seg) && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
-        FXL_T_LEAN(tri, row, xl, xr, cl, cr);
-        return;
+    if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
+#if FXL_HAVE_AUTO
+        if (tri->auto_seg) {
+            FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
+            return;
+        }
+#endif
+        if (k > 0) {
+            FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
+            return;
+        }
     }
 #endif
 #if FXL_HAVE_AUTO
