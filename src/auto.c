@@ -92,8 +92,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
     const int es[2] = {tri->a_shift[FXL__AU] + (int)tri->tex->log2_w - 16,
                        tri->a_shift[FXL__AV] + (int)tri->tex->log2_h - 16};
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
-    fxl__sf_t qx, q0, qy, A[2], B[2], nmax = {0, 0};
-    int32_t lb, lmax = INT32_MIN / 4, minx = X[0], maxx = X[0], w;
+    fxl__sf_t qx, q0, qy, A[2], B[2], n[3][2];
+    int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, minx = X[0], maxx = X[0], w;
     int i, j, cap = 0, k, E;
 
     tri->auto_seg = 0;
@@ -124,26 +124,20 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
         B[j] = fxl__sf_addsub(fxl__sf_mul(sx, qy), fxl__sf_mul(fxl__sf_make(p->gy, es[j]), qx), -1);
     }
     for (i = 0; i < 3; i++) {
-        fxl__sf_t dy = fxl__sf_make((int64_t)Y[i] - tri->Y0, 0), n[2], n2;
-        for (j = 0; j < 2; j++) {
-            int32_t l;
-            n[j] = fxl__sf_addsub(A[j], fxl__sf_mul(B[j], dy), 1);
-            l = fxl__sf_log2_q8(n[j]);
-            lmax = l > lmax ? l : lmax;
-        }
+        fxl__sf_t dy = fxl__sf_make((int64_t)Y[i] - tri->Y0, 0), n2;
+        int32_t l;
+        for (j = 0; j < 2; j++)
+            n[i][j] = fxl__sf_addsub(A[j], fxl__sf_mul(B[j], dy), 1);
         /* |(nu, nv)|^2, compared as squares */
-        n2 = fxl__sf_addsub(fxl__sf_mul(n[0], n[0]), fxl__sf_mul(n[1], n[1]), 1);
-        if (fxl__sf_log2_q8(n2) > fxl__sf_log2_q8(nmax))
-            nmax = n2;
+        n2 = fxl__sf_addsub(fxl__sf_mul(n[i][0], n[i][0]), fxl__sf_mul(n[i][1], n[i][1]), 1);
+        l = fxl__sf_log2_q8(n2);
+        lnmax = l > lnmax ? l : lnmax;
     }
-    if (nmax.m == 0)
+    if (lnmax == INT32_MIN / 4)
         return;
-    {
-        /* Cheap bound first: max |N| with min q, each over the vertices. */
-        fxl__sf_t qmin = fxl__sf_make(tri->q_min, 0);
-        int32_t lg = fxl__sf_log2_q8(qx) + fxl__sf_log2_q8(nmax) / 2 - 3 * fxl__sf_log2_q8(qmin);
-        k = fit_log2(lg, lb, cap);
-    }
+    /* Cheap bound first: max |N| with min q, each over the vertices. */
+    lqx = fxl__sf_log2_q8(qx);
+    k = fit_log2(lqx + lnmax / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0)), lb, cap);
     tri->seg_log2 = k;
     if (k >= cap)
         return;
@@ -151,14 +145,18 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
         /* Per segment pays ~40-70 Cortex-M4 instructions a segment for
          * the bound; it only wins where q varies enough that the longest
          * allowed length (at the largest vertex q) is 4x the shortest. */
-        const int32_t lg =
-            fxl__sf_log2_q8(qx) + fxl__sf_log2_q8(nmax) / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
+        const int32_t lg = lqx + lnmax / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
         if (fit_log2(lg, lb, cap) < k + 2)
             return;
     }
     /* Per segment. N is linear in Y, so inside the triangle |N_u|, |N_v| <=
      * their largest vertex value < 2^(lmax + 2 steps): units of 2^E put them
      * below 2^29. The slope keeps 16 more bits (|dN/dY| * height <= 2 max). */
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 2; j++) {
+            const int32_t l = fxl__sf_log2_q8(n[i][j]);
+            lmax = l > lmax ? l : lmax;
+        }
     E = floor_div256(lmax + 2 + 255) - 29;
     for (j = 0; j < 2; j++) {
         tri->auto_n[j] = sf_fixed(A[j], E);
@@ -171,7 +169,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
      * within (-1.94, +0.5), so -1 makes it a lower bound; log2 |q_x| +2 an
      * upper one; 3 log2 q_min -3 a lower one (auto.h); the row's |N| is
      * rounded up in fxl__auto_row. */
-    tri->auto_t0 = lb - 1 + 2 * 256 - (fxl__sf_log2_q8(qx) + 2) - 256 * E - 3 + 3 * 256 * FXL__PF;
+    tri->auto_t0 = lb - 1 + 2 * 256 - (lqx + 2) - 256 * E - 3 + 3 * 256 * FXL__PF;
     {
         /* auto.h works on q >> PF: log2 q = log2 (q >> PF) + PF (floor: a
          * lower bound), and q_x per pixel rounded up */

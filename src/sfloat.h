@@ -13,7 +13,7 @@
 #include "persp.h"
 
 typedef struct fxl__sf {
-    int64_t m;
+    int32_t m;   /* |m| <= 2^31: int32, so a product is one SMULL on a Cortex-M */
     int e;
 } fxl__sf_t;
 
@@ -21,34 +21,40 @@ static inline fxl__sf_t fxl__sf_make(int64_t m, int e)
 {
     fxl__sf_t r;
     uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
-    int bits = 64 - fxl__clz64_inline(a), sh = bits > 31 ? bits - 31 : 0;
-    r.m = fxl__asr64(m, sh);
+    int sh = 0;
+    if (a >> 31) {
+        const int bits = 64 - fxl__clz64_inline(a);
+        sh = bits - 31;
+    }
+    /* floor(m / 2^sh) has magnitude <= 2^31: INT32_MIN at worst */
+    r.m = (int32_t)fxl__asr64(m, sh);
     r.e = e + sh;
     return r;
 }
 
 static inline fxl__sf_t fxl__sf_mul(fxl__sf_t a, fxl__sf_t b)
 {
-    return fxl__sf_make(a.m * b.m, a.e + b.e);   /* |a.m * b.m| < 2^62 */
+    return fxl__sf_make((int64_t)a.m * b.m, a.e + b.e);   /* |a.m * b.m| <= 2^62 */
 }
 
 /* a + sign * b, sign = +1 or -1 */
 static inline fxl__sf_t fxl__sf_addsub(fxl__sf_t a, fxl__sf_t b, int sign)
 {
+    const int64_t sb = sign < 0 ? -(int64_t)b.m : (int64_t)b.m;
     int d = a.e - b.e;
     if (b.m == 0 || d > 31)
         return a;
     if (a.m == 0 || d < -31)
-        return fxl__sf_make(sign * b.m, b.e);
+        return fxl__sf_make(sb, b.e);
     if (d >= 0)
-        return fxl__sf_make(a.m * ((int64_t)1 << d) + sign * b.m, b.e);
-    return fxl__sf_make(a.m + sign * b.m * ((int64_t)1 << -d), a.e);
+        return fxl__sf_make((int64_t)a.m * ((int64_t)1 << d) + sb, b.e);
+    return fxl__sf_make((int64_t)a.m + sb * ((int64_t)1 << -d), a.e);
 }
 
-/* a / b (b != 0): |a.m| < 2^31 so a.m * 2^31 fits; 31 quotient bits. */
+/* a / b (b != 0): |a.m| <= 2^31 so a.m * 2^31 fits; 31 quotient bits. */
 static inline fxl__sf_t fxl__sf_div(fxl__sf_t a, fxl__sf_t b)
 {
-    return fxl__sf_make(a.m * ((int64_t)1 << 31) / b.m, a.e - b.e - 31);
+    return fxl__sf_make((int64_t)a.m * ((int64_t)1 << 31) / b.m, a.e - b.e - 31);
 }
 
 static inline int fxl__sf_is_zero(fxl__sf_t a)
