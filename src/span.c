@@ -520,6 +520,7 @@ static inline uint32_t fast_z(int64_t sz)
     return sz < 0 ? 0u : sat_u32((int64_t)((uint64_t)sz >> FXL__PF));
 }
 
+#if FXL__FAST_SPANS
 /* The lean walks' position: plane values (modular int64) at the latest
  * correction point, and u, v, z there. */
 typedef struct fxl__lean {
@@ -579,6 +580,7 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
     lean_next(tri, s, mult, 1);
 }
 #endif
+#endif /* FXL__FAST_SPANS */
 
 /* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the
  * result is the int32 bit pattern. A negative d has magnitude 0 - d <= 2^31. */
