@@ -29,6 +29,9 @@
 #define FXL__ALWAYS_INLINE inline
 #endif
 
+/* 32-bit cores: where 64-bit shifts by a variable are long sequences. */
+#define FXL__WORD32 (UINTPTR_MAX <= 0xFFFFFFFFu)
+
 /* Does >> of a negative value shift in sign bits? C99 leaves it to the
  * implementation (GCC and Clang document that it does); the constant
  * expression is folded, and where it is false the portable form is used. */
@@ -144,9 +147,10 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     /* r <= 2^31 - 2 (checked exhaustively over all 2^31 values of qn), so
      * both factors fit int32: one SMULL on a Cortex-M, |prod| < 2^62. */
     prod = fxl__mul_s32(m, (int32_t)rc->r);
-    if (e <= -33 && e >= -62) {
+    if (FXL__WORD32 && e <= -33 && e >= -62) {
         /* Shifts of 33 and more (|a| < 2^29: u, v within 2^13 texels of
-         * the rebased origin), on 32-bit words only: floor(p / 2^(k-1)) = floor(hi / 2^(k-33)) with
+         * the rebased origin) on 32-bit cores (on 64-bit ones the general
+         * case is as short), on 32-bit words only: floor(p / 2^(k-1)) = floor(hi / 2^(k-33)) with
          * hi = floor(p / 2^32), and floor((t + 1) / 2) = (t >> 1) + (t & 1).
          * Bit for bit the value of the general case below, without its
          * 64-bit shift by a variable (~16 Cortex-M4 instructions). */
