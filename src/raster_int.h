@@ -30,6 +30,12 @@
 /* Perspective-interpolated attributes: u, v and (Gouraud) r, g, b. */
 enum { FXL__AU = 0, FXL__AV = 1, FXL__AR = 2, FXL__AG = 3, FXL__AB = 4, FXL__NATTR = 5 };
 
+/* A soft float, value = m * 2^e with |m| <= 2^31 (operations in sfloat.h). */
+typedef struct fxl__sf {
+    int32_t m;   /* int32, so a product is one SMULL on a Cortex-M */
+    int e;
+} fxl__sf_t;
+
 typedef struct fxl__plane {
     int64_t c;   /* value at the reference vertex, FXL__PF fraction bits */
     int64_t gx;  /* per subpx along x */
@@ -94,6 +100,9 @@ typedef struct fxl__tri {
     fxl__level_t level[FXL_TEX_MAX_LEVELS];
     uint8_t mip_linear;          /* blend two levels */
     int32_t lod_max_q8;          /* (levels - 1) * 256 */
+    /* per-segment LOD's constant factors (fxl__span_setup, sfloat.h):
+     * the u, v gradients along x and y, texel-scaled, and q's */
+    fxl__sf_t lod_sux, lod_svx, lod_suy, lod_svy, lod_qx, lod_qy;
 
     /* derived once per triangle for the span walk (fxl__span_setup) */
     int np;                             /* planes in use: 2, 4 or 7 */

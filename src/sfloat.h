@@ -12,10 +12,7 @@
 
 #include "persp.h"
 
-typedef struct fxl__sf {
-    int32_t m;   /* |m| <= 2^31: int32, so a product is one SMULL on a Cortex-M */
-    int e;
-} fxl__sf_t;
+/* fxl__sf_t is declared in raster_int.h (the triangle keeps some). */
 
 static inline fxl__sf_t fxl__sf_make(int64_t m, int e)
 {

@@ -348,11 +348,11 @@ static inline int32_t shift_step(int64_t d, int level)
  * carried as m * 2^e with |m| < 2^31: a few integer operations, no floats,
  * ~2^-30 relative precision - far more than the 1/256 level LOD needs. */
 /* (S_g 2^sh - u q_g) / q for one gradient g, in q16 texels per pixel. */
-static inline fxl__sf_t deriv(int64_t s_g, int sh, int64_t u, int64_t q_g, const fxl__recip_t *rc)
+/* d(S/q)/dx = (S_x - (S/q) q_x) / q from the gradient s (texel-scaled,
+ * fxl__span_setup), the value a = S/q and q's gradient; rq = 1/q. */
+static inline fxl__sf_t deriv(fxl__sf_t s, fxl__sf_t a, fxl__sf_t q_g, fxl__sf_t rq)
 {
-    fxl__sf_t num = fxl__sf_addsub(fxl__sf_make(s_g, sh), fxl__sf_mul(fxl__sf_make(u, 0), fxl__sf_make(q_g, 0)), -1);
-    /* 1 / q = r * 2^-62 * 2^-(32 - n) */
-    return fxl__sf_mul(num, fxl__sf_make((int64_t)rc->r, rc->n - 94));
+    return fxl__sf_mul(fxl__sf_addsub(s, fxl__sf_mul(a, q_g), -1), rq);
 }
 
 /* log2 of |(a, b)| in q8 for a, b in q16 texels per pixel. */
@@ -365,26 +365,35 @@ static inline int32_t log2_len_q8(fxl__sf_t a, fxl__sf_t b)
     return (fxl__log2_q8((uint64_t)sq.m) + sq.e * 256 - 32 * 256) / 2;
 }
 
-/* LOD (q8) at a correction point: log2 of the longer of the texel-space
- * derivative vectors along x and y, at level 0. */
+/* lod_at's per-triangle factors (fxl__span_setup). */
+static void lod_setup(fxl__tri_t *tri)
+{
+    const int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
+    const int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
+    tri->lod_sux = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
+    tri->lod_svx = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
+    tri->lod_suy = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
+    tri->lod_svy = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
+    tri->lod_qx = fxl__sf_make(tri->gpx[PQ], 0);
+    tri->lod_qy = fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0);
+}
+
 #if defined(__GNUC__)
 __attribute__((noinline))   /* once per segment; inlined into every walk it is ~2 KB each */
 #endif
 static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     fxl__recip_t rc;
-    int64_t q = qv < tri->q_min ? tri->q_min : qv;
-    int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
-    int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
-    int64_t qx = tri->gpx[PQ], qy = (int64_t)((uint64_t)tri->q.gy * FXL__ONE);
-    int64_t sux = tri->gpx[PA + FXL__AU], svx = tri->gpx[PA + FXL__AV];
-    int64_t suy = (int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE);
-    int64_t svy = (int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE);
+    fxl__sf_t u, v, rq;
     int32_t lx, ly;
 
-    fxl__recip(q, &rc);
-    lx = log2_len_q8(deriv(sux, shu, u64, qx, &rc), deriv(svx, shv, v64, qx, &rc));
-    ly = log2_len_q8(deriv(suy, shu, u64, qy, &rc), deriv(svy, shv, v64, qy, &rc));
+    fxl__recip(qv < tri->q_min ? tri->q_min : qv, &rc);
+    /* 1 / q = r * 2^-62 * 2^-(32 - n) */
+    rq = fxl__sf_make((int64_t)rc.r, rc.n - 94);
+    u = fxl__sf_make(u64, 0);
+    v = fxl__sf_make(v64, 0);
+    lx = log2_len_q8(deriv(tri->lod_sux, u, tri->lod_qx, rq), deriv(tri->lod_svx, v, tri->lod_qx, rq));
+    ly = log2_len_q8(deriv(tri->lod_suy, u, tri->lod_qy, rq), deriv(tri->lod_svy, v, tri->lod_qy, rq));
     return lx > ly ? lx : ly;
 }
 #endif
@@ -875,6 +884,10 @@ void fxl__span_setup(fxl__tri_t *tri)
         tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         tri->persp_eb[1] = fxl__persp_eb(tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
         tri->fast_id = (uint8_t)fast_id_of(tri);
+#if FXL_HAVE_MIPMAP
+        if (tri->lod_per_segment && tri->nlevels > 1)
+            lod_setup(tri);
+#endif
     }
 }
 
