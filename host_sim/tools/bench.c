@@ -8,8 +8,10 @@
  *       joins the instruction counts gathered by bench.sh and writes the CSV
  *       (docs/bench/README.md documents the columns), the gnuplot data files
  *       and a summary table on stdout.
- *   fixel-bench draw [--scene S] [--method M] [--filter F]
- *       one frame of each configuration, for callgrind: with valgrind's
+ *   fixel-bench draw [--scene S] [--method M] [--filter F] [--mip none|nearest|linear]
+ *       one frame of each configuration (--mip overrides the filter's mip
+ *       mode: bilinear --mip nearest is per-segment LOD on the nearest
+ *       level, issue 3's figure), for callgrind: with valgrind's
  *       client requests it dumps the counters after each configuration
  *       under the name "scene/method/filter" (run with --collect-atstart=no
  *       --toggle-collect=fxl_draw_triangle so only the draw calls count).
@@ -105,6 +107,7 @@ typedef struct options {
     const char *host_ir, *m4, *m0, *csv, *plot_dir;
     const char *fw_filters;
     int fw_meshes;
+    const char *mip;   /* draw: none|nearest|linear overrides the filter's mip mode */
 } options_t;
 
 static void usage(FILE *f)
@@ -647,6 +650,9 @@ static int cmd_draw(const options_t *o)
                 if (!selected(o->method, methods[mi].name) || !selected(o->filter, filters[fi].name))
                     continue;
                 draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
+                if (o->mip)
+                    d.mip = strcmp(o->mip, "nearest") == 0 ? FXL_MIP_NEAREST
+                                                           : (strcmp(o->mip, "linear") == 0 ? FXL_MIP_LINEAR : FXL_MIP_NONE);
                 (void)fxl_target_clear(&fr.target, 0);
                 (void)fxl_target_clear_depth(&fr.target);
                 if (draw_scene(&s, &d, &fr.target) != FXL_OK)
@@ -1034,6 +1040,8 @@ int main(int argc, char **argv)
             dst = &o.plot_dir;
         else if (strcmp(a, "--filters") == 0)
             dst = &o.fw_filters;
+        else if (strcmp(a, "--mip") == 0)
+            dst = &o.mip;
         else if (strcmp(a, "--meshes") == 0)
             o.fw_meshes = atoi(argv[i + 1]);
         else if (strcmp(a, "--runs") == 0)
