@@ -173,7 +173,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
 void fxl__span_setup(fxl__tri_t *tri);
 
 /* Rows (span.c): draw the span [xl, xr) of frame row `row` clipped to
- * [cl, cr). */
+ * [cl, cr), where xl <= cl < cr <= xr (anything else draws nothing). */
 void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                     int32_t cl, int32_t cr);
 

@@ -1026,6 +1026,10 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
 void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                     int32_t cl, int32_t cr)
 {
+    /* Every walk relies on xl <= cl < cr <= xr (raster.c clips so): with it
+     * no segment's pixel count is negative. Checked here, once a span. */
+    if (!(xl <= cl && cl < cr && cr <= xr))
+        return;
     /* the caller's seg function is the one fxl__pick_seg_fn chose for this
      * triangle: take the specialised walk */
     if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].span)

@@ -325,10 +325,9 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
     const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
 #endif
     int32_t dX;
-    uint16_t *const prow = tg->pixels + ((row - tg->origin_y) * tg->stride - tg->origin_x);
-#if FXL_T_DEPTH
-    uint16_t *const zrow = tg->depth + ((row - tg->origin_y) * tg->stride - tg->origin_x);
-#endif
+    /* index of frame pixel (0, row) in the buffer; a pointer is only formed
+     * for pixels inside the clip rectangle */
+    const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
     fxl__lean_t s;
     uint32_t written = 0, segments = 1;
     FXL_T_LV L;
@@ -403,10 +402,12 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
             zz += dz * off;
 #endif
         }
+        /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
+         * test keeps a broken caller from writing a negative count */
 #if FXL_T_DEPTH
-        written += FXL_T_LOOP(prow + a, zrow + a, b - a, zz, dz, &L, u, v, du, dv);
+        written += FXL_T_LOOP(tg->pixels + (rowidx + a), tg->depth + (rowidx + a), b - a, zz, dz, &L, u, v, du, dv);
 #else
-        written += FXL_T_LOOP(prow + a, 0, b - a, 0u, 0u, &L, u, v, du, dv);
+        written += FXL_T_LOOP(tg->pixels + (rowidx + a), 0, b - a, 0u, 0u, &L, u, v, du, dv);
 #endif
         x += n;
     }
