@@ -93,7 +93,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
                        tri->a_shift[FXL__AV] + (int)tri->tex->log2_h - 16};
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
     fxl__sf_t qx, q0, qy, A[2], B[2], n[3][2];
-    int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, minx = X[0], maxx = X[0], w;
+    int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, w;
     int i, j, cap = 0, k, E;
 
     tri->auto_seg = 0;
@@ -101,11 +101,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
     if (!tri->has_uv || qx_g == 0)
         return;   /* constant depth along every span: affine is exact */
     /* No span is longer than the bounding box: a longer L changes nothing. */
-    for (i = 1; i < 3; i++) {
-        minx = X[i] < minx ? X[i] : minx;
-        maxx = X[i] > maxx ? X[i] : maxx;
-    }
-    w = (int32_t)(((int64_t)maxx - minx) >> FXL__S) + 1;   /* widest span, px */
+    w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px */
     while (cap < 8 && ((int32_t)1 << cap) < w)
         cap++;
     if (vertex_test(tri, v)) {

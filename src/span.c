@@ -550,8 +550,7 @@ typedef struct fxl__lean {
  * and the span functions keep theirs for the pixel loop. */
 static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z)
 {
-    fxl__recip_t rc;
-    int64_t q;
+    fxl__pt_t pt;
 
     if (mult == 0u) {
         s->sq += (uint64_t)tri->gpxN[FXL__PQ];
@@ -568,12 +567,11 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
         if (with_z)
             s->sz += (uint64_t)tri->gpx[FXL__PZ] * mult;
     }
-    q = (int64_t)s->sq;
-    if (q < tri->q_min)
-        q = tri->q_min;
-    fxl__recip(q, &rc);
-    s->u = (uint32_t)(uint64_t)fxl__persp_e((int64_t)s->su, &rc, tri->persp_eb[0]);
-    s->v = (uint32_t)(uint64_t)fxl__persp_e((int64_t)s->sv, &rc, tri->persp_eb[1]);
+    /* the batch walk's correction; its 64-bit copies for the LOD are
+     * dead here and optimised away */
+    fast_correct_batch(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
+    s->u = pt.u;
+    s->v = pt.v;
     if (with_z)
         s->z = fast_z((int64_t)s->sz);
 }
