@@ -14,6 +14,7 @@
  * the plane (w = near, x = G w, ...) so later stages can rely on it.
  */
 #include "pipeline_int.h"
+#include "div64.h"
 
 #define CLIP_SCRATCH 16 /* > FXL_CLIP_MAX_VERTS, see the capacity check */
 
@@ -59,7 +60,7 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
         num >>= (top - 31);
         den >>= (top - 31);
     }
-    t = (uint32_t)(((num << 31) + den / 2u) / den); /* <= 2^31 */
+    t = (uint32_t)fxl__udiv64((num << 31) + den / 2u, den); /* <= 2^31 */
     res->x = lerp64(in->x, out->x, t);
     res->y = lerp64(in->y, out->y, t);
     res->w = lerp64(in->w, out->w, t);

@@ -15,6 +15,15 @@
  * den <= 2^28 and every per-row quantity fits int32; num needs int64.
  */
 #include "raster_int.h"
+#include "div64.h"
+
+/* floor(n / d) for d > 0: C's division truncates, which rounds a negative
+ * inexact quotient up; |q d| <= |n|, so q * d cannot overflow. */
+static int64_t floor_div(int64_t n, int64_t d)
+{
+    const int64_t q = fxl__sdiv64(n, d);
+    return q * d > n ? q - 1 : q;
+}
 
 void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row)
 {
@@ -23,8 +32,8 @@ void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t 
     int64_t den = dy * FXL__ONE;
     int64_t yc = (int64_t)row * FXL__ONE + FXL__HALF;
     int64_t num = ((int64_t)Xa - FXL__HALF) * dy + (yc - Ya) * dx;
-    int64_t x = fxl_div64_floor(num + den - 1, den);       /* ceil(num / den) */
-    int64_t step = fxl_div64_floor(dx, dy);                 /* floor(ONE*dx / ONE*dy) */
+    int64_t x = floor_div(num + den - 1, den);       /* ceil(num / den) */
+    int64_t step = floor_div(dx, dy);                 /* floor(ONE*dx / ONE*dy) */
 
     e->x = (int32_t)x;
     e->err = (int32_t)(x * den - num);

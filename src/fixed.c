@@ -8,12 +8,13 @@
  * arguments (INT32_MIN and INT64_MIN included: their magnitude 2^31 / 2^63 is
  * representable in the unsigned type of the same width).
  *
- * Division by a 64-bit value is left to the compiler; on 32-bit cores that
- * becomes a call to the runtime helper (__aeabi_uldivmod on ARM).
+ * Division by a 64-bit value goes through div64.h: the compiler's runtime
+ * helper, or in size-optimised builds a short loop of our own.
  */
 #include <stddef.h>
 
 #include "fixel/fixed.h"
+#include "div64.h"
 
 /* |v| as an unsigned number; exact for INT32_MIN (2^31) and INT64_MIN (2^63)
  * because the negation happens in unsigned arithmetic (modulo 2^N). */
@@ -297,6 +298,36 @@ int fxl_clz64(uint64_t x)
     return 32 + fxl_clz32((uint32_t)x);
 }
 
+uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
+{
+    uint64_t q = 0;
+    int s;
+
+    if (d == 0 || n < d)
+        return 0;
+    /* align d's leading one with n's: d << s <= n < d << (s + 1), so the
+     * quotient has s + 1 bits, one per iteration */
+    s = fxl_clz64(d) - fxl_clz64(n);
+    d <<= s;
+    for (;;) {
+        if (n >= d) {
+            n -= d;
+            q |= 1u;
+        }
+        if (s-- == 0)
+            return q;
+        q <<= 1;
+        d >>= 1;
+    }
+}
+
+int64_t fxl__sdiv64_loop(int64_t n, int64_t d)
+{
+    const uint64_t q = fxl__udiv64_loop(abs_u64(n), abs_u64(d));
+    /* q <= 2^63 - 1 outside INT64_MIN / -1: the negation is in range */
+    return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
+}
+
 /* ------------------------------------------------------------------------ */
 /* 64-bit rounded and floored division                                      */
 
@@ -359,7 +390,7 @@ int64_t fxl_div64_floor(int64_t num, int64_t den)
     }
     n = abs_u64(num);
     d = abs_u64(den);
-    q = n / d;
+    q = fxl__udiv64(n, d);
     r = n - q * d; /* n % d without a second runtime division call */
     negative = (num < 0) != (den < 0);
     /* A negative inexact quotient floors one further away from zero. The

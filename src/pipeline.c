@@ -10,6 +10,7 @@
  * would lose 1/16 px already at near = 0.05.
  */
 #include "pipeline_int.h"
+#include "div64.h"
 
 /* ---- 64-bit helpers ------------------------------------------------------ */
 
@@ -132,7 +133,7 @@ uint64_t fxl__isqrt64(uint64_t x)
 static int64_t div_round(int64_t num, int64_t den)
 {
     uint64_t n = mag64(num), d = mag64(den);
-    uint64_t q = (n + d / 2u) / d;
+    uint64_t q = fxl__udiv64(n + d / 2u, d);
     return apply_sign(q, (num < 0) != (den < 0), NULL);
 }
 
@@ -447,7 +448,7 @@ fxl_status_t fxl_pipeline_prepare(const fxl_pipeline_t *p, fxl_xform_t *xf)
     /* G = FXL_GUARD_PX / max half size, rounded down so that G * half size
      * never exceeds FXL_GUARD_PX. */
     maxdim = p->vp_w > p->vp_h ? p->vp_w : p->vp_h;
-    g = ((int64_t)FXL_GUARD_PX << 17) / maxdim;
+    g = fxl__sdiv64((int64_t)FXL_GUARD_PX << 17, maxdim);
     if (g > ((int64_t)FXL_GUARD_MAX << 16)) g = (int64_t)FXL_GUARD_MAX << 16;
     xf->guard_q16 = (fxl_q16_t)g;
     xf->cx_q16 = ((int64_t)2 * p->vp_x + p->vp_w) * 32768;
@@ -499,9 +500,9 @@ fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec
 static uint16_t pack_q8(int32_t r, int32_t g, int32_t b)
 {
     /* channel (0..255 in q8) -> 5 or 6 bits: round(c * 31 / 65280). */
-    uint32_t r5 = (uint32_t)(((int64_t)r * 31 + 32640) / 65280);
-    uint32_t g6 = (uint32_t)(((int64_t)g * 63 + 32640) / 65280);
-    uint32_t b5 = (uint32_t)(((int64_t)b * 31 + 32640) / 65280);
+    uint32_t r5 = (uint32_t)fxl__sdiv64((int64_t)r * 31 + 32640, 65280);
+    uint32_t g6 = (uint32_t)fxl__sdiv64((int64_t)g * 63 + 32640, 65280);
+    uint32_t b5 = (uint32_t)fxl__sdiv64((int64_t)b * 31 + 32640, 65280);
     if (r5 > 31) r5 = 31;
     if (g6 > 63) g6 = 63;
     if (b5 > 31) b5 = 31;
@@ -539,7 +540,7 @@ static fxl_status_t project_pos(const fxl_xform_t *xf, const fxl_clipvert_t *c, 
      * 1/w = rec * 2^(-31 - s). */
     s = 63 - fxl__clz64((uint64_t)c->w);
     wn = s >= 31 ? (uint64_t)c->w >> (s - 31) : (uint64_t)c->w << (31 - s);
-    rec = (((uint64_t)1 << 62) + wn / 2u) / wn;
+    rec = fxl__udiv64(((uint64_t)1 << 62) + wn / 2u, wn);
     /* x / w in q30 = x * rec * 2^(-1 - s); s >= 16 since w >= near >= 2^-16. */
     ndc_x = fxl__mul_shr(c->x, (uint32_t)rec, (unsigned)(s + 1), NULL);
     ndc_y = fxl__mul_shr(c->y, (uint32_t)rec, (unsigned)(s + 1), NULL);

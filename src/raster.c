@@ -91,7 +91,8 @@ static fxl_status_t check_target(const fxl_target_t *t)
 /* ceil((Y - HALF) / ONE): the first row whose centre is at or below Y. */
 static int32_t first_row_at(int32_t Y)
 {
-    return (int32_t)fxl_div64_floor((int64_t)Y - FXL__HALF + FXL__ONE - 1, FXL__ONE);
+    /* floor division by ONE = 2^S: a floor shift (no 64-bit division) */
+    return (int32_t)fxl__asr64((int64_t)Y - FXL__HALF + FXL__ONE - 1, FXL__S);
 }
 
 static int32_t seg_log2_for(const fxl_draw_t *d)

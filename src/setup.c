@@ -17,6 +17,7 @@
  */
 #include "raster_int.h"
 #include "persp.h"
+#include "div64.h"
 
 /* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, by long division
  * in 16-bit chunks so no intermediate exceeds 2^63. */
@@ -26,13 +27,28 @@ static int64_t div_frac(int64_t r, int64_t den, int bits)
     uint64_t d = (uint64_t)den;
     uint64_t q = 0;
 
+#if FXL_SMALL_DIV64
+    /* one quotient bit a step (ur < d < 2^47: the shift cannot wrap) */
+    while (bits-- > 0) {
+        ur <<= 1;
+        q <<= 1;
+        if (ur >= d) {
+            ur -= d;
+            q |= 1u;
+        }
+    }
+#else
     while (bits > 0) {
         int c = bits > 16 ? 16 : bits;
         ur <<= c;
-        q = (q << c) + ur / d;
-        ur %= d;
+        {
+            const uint64_t qc = fxl__udiv64(ur, d);
+            q = (q << c) + qc;
+            ur -= qc * d;
+        }
         bits -= c;
     }
+#endif
     if (2u * ur >= d)
         q++;
     return r < 0 ? -(int64_t)q : (int64_t)q;
@@ -49,15 +65,16 @@ static int64_t gradient(int64_t N, int64_t den)
     /* The value is sign(N) * round_half_up(|N| 2^PF / den). When |N| 2^PF
      * fits 63 bits (the usual case) one division with its remainder gives it
      * exactly - the same number the chunked path below computes with three,
-     * which matters on Cortex-M where each is a library call. */
-    if (N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
+     * which matters on Cortex-M where each is a library call. (Size-
+     * optimised builds take the general path alone: one division.) */
+    if (!FXL_SMALL_DIV64 && N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
         uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;
-        uint64_t q = a / (uint64_t)den, rem = a - q * (uint64_t)den;
+        uint64_t q = fxl__udiv64(a, (uint64_t)den), rem = a - q * (uint64_t)den;
         if (2u * rem >= (uint64_t)den)
             q++;
         return N < 0 ? -(int64_t)q : (int64_t)q;
     }
-    qi = N / den;
+    qi = fxl__sdiv64(N, den);
     r = N - qi * den;
     if (qi >= lim)
         return INT64_MAX / 2;

@@ -13,6 +13,7 @@
 #include "texel.h"
 #include "persp.h"
 #include "sfloat.h"
+#include "div64.h"
 #include "auto.h"
 
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
@@ -322,7 +323,7 @@ static inline int64_t step_of(int64_t diff, int32_t div)
 {
     if (div <= 0)
         return 0;
-    return diff / div;   /* truncation: stepping never overshoots the endpoint */
+    return fxl__sdiv64(diff, div);   /* truncation: stepping never overshoots the endpoint */
 }
 
 static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)

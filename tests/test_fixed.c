@@ -17,6 +17,7 @@
 
 #include "unity.h"
 #include "fixel/fixed.h"
+#include "../src/div64.h"
 
 #define RANDOM_ITERS 200000
 
@@ -745,6 +746,63 @@ static void test_div64_match_int128_reference_on_random_values(void)
 }
 #endif
 
+/* The core's own 64-bit division (div64.h: size-optimised builds use it in
+ * place of the compiler's runtime helper) must be the exact truncated
+ * quotient: checked against C's division at the edges and on random values
+ * whose magnitudes spread over every bit length. */
+static void check_udiv64_loop(uint64_t n, uint64_t d)
+{
+    snprintf(msg, sizeof msg, "n=%llu d=%llu", (unsigned long long)n, (unsigned long long)d);
+    TEST_ASSERT_TRUE_MESSAGE(fxl__udiv64_loop(n, d) == n / d, msg);
+}
+
+static void test_udiv64_loop_matches_c_division(void)
+{
+    static const uint64_t edge[] = {1u, 2u, 3u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu, (uint64_t)1 << 32,
+                                    ((uint64_t)1 << 32) + 1u, (uint64_t)1 << 62, (uint64_t)INT64_MAX,
+                                    (uint64_t)1 << 63, UINT64_MAX - 1u, UINT64_MAX};
+    const int ne = (int)(sizeof edge / sizeof edge[0]);
+    int i, j;
+    for (i = 0; i < ne; i++)
+        for (j = 0; j < ne; j++)
+            check_udiv64_loop(edge[i], edge[j]);
+    TEST_ASSERT_TRUE(fxl__udiv64_loop(0u, 7u) == 0u);
+    TEST_ASSERT_TRUE(fxl__udiv64_loop(6u, 7u) == 0u);
+    TEST_ASSERT_TRUE(fxl__udiv64_loop(7u, 7u) == 1u);
+    TEST_ASSERT_TRUE(fxl__udiv64_loop(UINT64_MAX, 1u) == UINT64_MAX);
+    lcg_seed(0xD1F64u);
+    for (i = 0; i < RANDOM_ITERS; i++) {
+        const uint64_t n = rand64() >> (lcg_next() >> 26), d = rand64() >> (lcg_next() >> 26);
+        if (d != 0u)
+            check_udiv64_loop(n, d);
+    }
+}
+
+static void check_sdiv64_loop(int64_t n, int64_t d)
+{
+    snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
+    TEST_ASSERT_TRUE_MESSAGE(fxl__sdiv64_loop(n, d) == n / d, msg);
+}
+
+static void test_sdiv64_loop_truncates_like_c_division(void)
+{
+    static const int64_t edge[] = {1, -1, 2, -2, 7, -7, INT32_MAX, INT32_MIN, INT64_MAX, -INT64_MAX, INT64_MIN};
+    const int ne = (int)(sizeof edge / sizeof edge[0]);
+    int i, j;
+    for (i = 0; i < ne; i++)
+        for (j = 0; j < ne; j++)
+            if (!(edge[i] == INT64_MIN && edge[j] == -1))
+                check_sdiv64_loop(edge[i], edge[j]);
+    check_sdiv64_loop(-6, 7);   /* truncation toward zero, not floor */
+    check_sdiv64_loop(6, -7);
+    lcg_seed(0x5D1F64u);
+    for (i = 0; i < RANDOM_ITERS; i++) {
+        const int64_t n = rand_i64_wide(), d = rand_i64_wide();
+        if (d != 0 && !(n == INT64_MIN && d == -1))
+            check_sdiv64_loop(n, d);
+    }
+}
+
 static void test_div64_by_zero_saturates_instead_of_trapping(void)
 {
     /* Outside the contract (den != 0), but must not trap: saturate toward
@@ -793,5 +851,7 @@ int main(void)
     RUN_TEST(test_div64_match_int128_reference_on_random_values);
 #endif
     RUN_TEST(test_div64_by_zero_saturates_instead_of_trapping);
+    RUN_TEST(test_udiv64_loop_matches_c_division);
+    RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }

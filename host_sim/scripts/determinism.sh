@@ -2,7 +2,7 @@
 # determinism.sh - the gallery CRCs must be bit-identical across builds.
 #
 # Renders the list in determinism/det_entries.h (every gallery scene x 7 draw
-# variants, 320x240) with the core built by: gcc -O0, gcc -O2, clang -O2 (when
+# variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
 # -M mps2-an386 with semihosting (when both exist), and compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data
@@ -46,6 +46,9 @@ run_host() {   # name compiler flags...
 
 run_host gcc-O0 gcc -O0
 run_host gcc-O2 gcc -O2
+# -Os selects the size-optimised code: the generic span walk instead of the
+# specialised ones, fixel's own 64-bit division (FXL_SMALL_DIV64)
+run_host gcc-Os gcc -Os
 if command -v clang >/dev/null 2>&1; then
     run_host clang-O2 clang -O2
 else

@@ -761,10 +761,11 @@ int main(int argc, char **argv)
         return 1;
     }
     /* The summary goes to stderr so that stdout carries only the CRC. */
-    fprintf(stderr, "%s %s %s %dx%d: %lu triangles, %lu drawn, %lu pixels, %.3f ms/frame\n",
+    fprintf(stderr,
+            "%s %s %s %dx%d: %lu triangles, %lu drawn, %lu pixels, %lu divisions, %.3f ms/frame\n",
             j.scene.name, name_of(persp_names, d.persp), filter_label(&d), (int)o.width,
             (int)o.height, (unsigned long)s.triangles, (unsigned long)s.drawn,
-            (unsigned long)s.pixels, ms);
+            (unsigned long)s.pixels, (unsigned long)s.divisions, ms);
     if (o.crc) {
         printf("0x%08lX\n", (unsigned long)fxl_host_crc_target(&j.frame.target));
     }

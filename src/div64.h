@@ -1,0 +1,47 @@
+/* div64.h - every 64-bit division of the core goes through here.
+ *
+ * On 32-bit cores `n / d` with 64-bit operands is a call into the compiler's
+ * runtime (__aeabi_uldivmod and __udivmoddi4: 0.7 KB of Cortex-M4 code; on a
+ * Cortex-M0+ __divdi3 too, 1.2 KB), larger than fixel's whole span walk in a
+ * small build. With FXL_SMALL_DIV64 (config.h; on by default in -Os builds)
+ * the core uses fxl__udiv64_loop instead: a shift-subtract loop of ~60 bytes,
+ * one iteration per quotient bit. Both give the exact truncated quotient, so
+ * output is bit-identical either way; the loop is slower, and the core
+ * divides 64-bit values only per triangle (set-up, edges) and once per span
+ * (the generic walk's last segment).
+ */
+#ifndef FIXEL_DIV64_H
+#define FIXEL_DIV64_H
+
+#include <stdint.h>
+#include "fixel/config.h"
+
+/* floor(n / d) for d != 0 by restoring long division (d == 0 gives 0: the
+ * callers never pass it). Compiled in every build so tests check it against
+ * the compiler's division on hosts. */
+uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d);
+/* n / d truncated toward zero by the same loop, for d != 0 and not
+ * INT64_MIN / -1 (one out-of-line call: smaller than the signs inline) */
+int64_t fxl__sdiv64_loop(int64_t n, int64_t d);
+
+/* n / d, d != 0 */
+static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
+{
+#if FXL_SMALL_DIV64
+    return fxl__udiv64_loop(n, d);
+#else
+    return n / d;
+#endif
+}
+
+/* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */
+static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
+{
+#if FXL_SMALL_DIV64
+    return fxl__sdiv64_loop(n, d);
+#else
+    return n / d;
+#endif
+}
+
+#endif
