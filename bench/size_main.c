@@ -21,6 +21,5 @@ int main(void)
     d.texture = &tex;
     d.mip = FXL_MIP_NONE;
     d.depth = 0;
-    (void)fxl_target_clear(&t, 0);
     return fxl_draw_triangle(&t, &d, v, 0) != FXL_OK;
 }

@@ -159,10 +159,11 @@ EOF
     {
         echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size of libfixel.a"
         echo "# (every src/*.c module, the 3D front end included); linked: the core code + const data"
-        echo "# that one textured fxl_draw_triangle program keeps after --gc-sections (bench/size_main.c)."
+        echo "# that one textured fxl_draw_triangle program keeps after --gc-sections (bench/size_main.c),"
+        echo "# including runtime: the compiler's helpers (libgcc shifts, multiplies, divisions) it pulls in."
         echo "# min = point + bilinear, subdivided, RGB565: FXL_HAVE_MIPMAP/GENERIC/DEPTH/AUTO 0."
         echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
-        printf '%-14s %-4s %-5s %9s %6s %6s %9s\n' cpu opt cfg archive data bss linked
+        printf '%-14s %-4s %-5s %9s %6s %6s %9s %8s\n' cpu opt cfg archive data bss linked runtime
         for cpu in cortex-m0plus cortex-m4; do
             for opt in -Os -O2; do
                 for cfg in full min; do
@@ -184,14 +185,16 @@ EOF
                     # A link failure (a symbol missing in this configuration) is
                     # reported in the table, not fatal.
                     if make -s -C bench core CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" >"$d/link.log" 2>&1; then
-                        linked=$(python3 "$scripts/m4_count.py" linked "$d/size.nm" "$d/lib.nm" | cut -d' ' -f1)
+                        arm-none-eabi-nm "$d"/app/*.o >"$d/app.nm" 2>/dev/null
+                        read -r linked _ _ runtime < <(python3 "$scripts/m4_count.py" linked "$d/size.nm" "$d/lib.nm" "$d/app.nm")
                     else
                         linked=-1
+                        runtime=-1
                         say "footprint: $cpu $opt $cfg does not link: $(grep -m1 'undefined reference' "$d/link.log" || tail -n 1 "$d/link.log")"
                     fi
                     arm-none-eabi-size -t "$d/libfixel.a" | tail -n 1 |
-                        awk -v c=$cpu -v o=$opt -v g=$cfg -v l="$linked" \
-                            '{printf "%-14s %-4s %-5s %9d %6d %6d %9d\n", c, o, g, $1, $2, $3, l}'
+                        awk -v c=$cpu -v o=$opt -v g=$cfg -v l="$linked" -v r="$runtime" \
+                            '{printf "%-14s %-4s %-5s %9d %6d %6d %9d %8d\n", c, o, g, $1, $2, $3, l, r}'
                 done
             done
         done

@@ -16,9 +16,12 @@
   m4_count.py trace FW_OUT COUNTS
       Pair the firmware's configuration lines with the per-segment counts of
       `fixel-bench count-trace` -> "scene method filter instructions trace".
-  m4_count.py linked ELF_NM LIB_NM
+  m4_count.py linked ELF_NM LIB_NM [APP_NM]
       Bytes of the core that a program actually linked: the sizes of the
-      ELF's symbols (code and constant data) that the core archive defines.
+      ELF's symbols (code and constant data) that the core archive defines,
+      plus the compiler runtime helpers they pulled in (every other symbol
+      not defined by the program's own objects, APP_NM). Prints
+      "total code data runtime" (total = code + runtime).
   m4_count.py stack CI_DIR ROOT_FUNCTION
       Worst-case stack of ROOT_FUNCTION from gcc -fcallgraph-info=su files:
       the largest sum of frame sizes along any call chain. An indirect call
@@ -155,23 +158,34 @@ def cmd_stack(ci_dir, root):
     print("%d %s" % (total, " > ".join("%s(%d)" % (c.split("@")[0], frames.get(c, 0)) for c in chain)))
 
 
-def cmd_linked(elf_nm, lib_nm):
-    core = set()
-    with open(lib_nm) as f:
-        for line in f:
-            p = line.split()
-            if len(p) >= 3 and p[-2] in "tTrRdDbB":
-                core.add(p[-1])
-    code = data = 0
+def cmd_linked(elf_nm, lib_nm, app_nm=None):
+    def defined(path):
+        names = set()
+        with open(path) as f:
+            for line in f:
+                p = line.split()
+                if len(p) >= 3 and p[-2] in "tTrRdDbB":
+                    names.add(p[-1])
+        return names
+
+    core = defined(lib_nm)
+    app = defined(app_nm) if app_nm else None
+    code = data = runtime = 0
     with open(elf_nm) as f:
         for line in f:
             p = line.split()
-            if len(p) == 4 and p[3] in core:
+            if len(p) != 4:
+                continue
+            size = int(p[1], 16)
+            if p[3] in core:
                 if p[2] in "tT":
-                    code += int(p[1], 16)
+                    code += size
                 else:
-                    data += int(p[1], 16)
-    print("%d %d" % (code, data))
+                    data += size
+            elif app is not None and p[3] not in app and p[2] in "tT":
+                # libgcc's division, shift and multiply helpers
+                runtime += size
+    print("%d %d %d %d" % (code + runtime, code, data, runtime))
 
 
 def main(argv):
@@ -182,7 +196,7 @@ def main(argv):
     elif len(argv) >= 4 and argv[1] == "trace":
         cmd_trace(argv[2], argv[3])
     elif len(argv) >= 4 and argv[1] == "linked":
-        cmd_linked(argv[2], argv[3])
+        cmd_linked(argv[2], argv[3], argv[4] if len(argv) >= 5 else None)
     elif len(argv) >= 4 and argv[1] == "stack":
         cmd_stack(argv[2], argv[3])
     else:
