@@ -98,7 +98,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
 
     tri->auto_seg = 0;
     tri->seg_log2 = 8;
-    if (!tri->has_uv || qx_g == 0)
+    if (!fxl__has_uv(tri) || qx_g == 0)
         return;   /* constant depth along every span: affine is exact */
     /* No span is longer than the bounding box: a longer L changes nothing. */
     w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px */

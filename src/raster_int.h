@@ -115,6 +115,27 @@ typedef struct fxl__tri {
     fxl_stats_t *stats;
 } fxl__tri_t;
 
+/* What a triangle draws, as constants where the configuration allows only
+ * one answer: without FXL_HAVE_GENERIC every draw is textured, RGB565,
+ * repeat-wrapped and flat-shaded (check_draw refuses the rest), so the
+ * compiler drops the Gouraud and the clamped-coordinate code paths. */
+static inline int fxl__has_uv(const fxl__tri_t *tri)
+{
+    return !FXL_HAVE_GENERIC || tri->has_uv;
+}
+static inline int fxl__has_color(const fxl__tri_t *tri)
+{
+    return FXL_HAVE_GENERIC && tri->has_color;
+}
+static inline int fxl__signed_u(const fxl__tri_t *tri)
+{
+    return FXL_HAVE_GENERIC && tri->signed_u;
+}
+static inline int fxl__signed_v(const fxl__tri_t *tri)
+{
+    return FXL_HAVE_GENERIC && tri->signed_v;
+}
+
 /* A run of pixels between two correction points. */
 typedef struct fxl__seg {
     uint16_t *dst;          /* first pixel of the run in the target */

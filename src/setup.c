@@ -201,11 +201,17 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     tri->q_min *= (int64_t)1 << FXL__PF;
     tri->q_max *= (int64_t)1 << FXL__PF;
 
+#if FXL_HAVE_DEPTH
     for (i = 0; i < 3; i++)
         z[i] = (int64_t)v[i].inv_w;
     make_plane(&tri->z, z, X, Y, det);
+#else
+    /* no depth buffer in this configuration: z is stepped but never read */
+    (void)z;
+    tri->z.c = tri->z.gx = tri->z.gy = 0;
+#endif
 
-    if (tri->has_uv) {
+    if (fxl__has_uv(tri)) {
         int32_t c[3];
         for (i = 0; i < 3; i++)
             c[i] = v[i].u;
@@ -216,7 +222,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
         persp_plane(tri, FXL__AV, a, q, X, Y, det);
     }
-    if (tri->has_color) {
+    if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
         static const int sh[3] = {11, 5, 0};
         static const uint32_t mask[3] = {31, 63, 31};

@@ -143,7 +143,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
 #if FXL_HAVE_BILINEAR
     if (tri->draw->filter == FXL_FILTER_BILINEAR) {
         uint32_t uu = u - 0x8000u, vv = v - 0x8000u;
-        int32_t x0 = texel_coord(uu, tri->signed_u), y0 = texel_coord(vv, tri->signed_v);
+        int32_t x0 = texel_coord(uu, fxl__signed_u(tri)), y0 = texel_coord(vv, fxl__signed_v(tri));
         uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
         uint32_t c[4];
         int k[4], i, nearest = (fu >= 16u ? 1 : 0) + (fv >= 16u ? 2 : 0);
@@ -163,7 +163,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
     }
 #endif
     {
-        uint32_t c = fetch(tri, lv, texel_coord(u, tri->signed_u), texel_coord(v, tri->signed_v), &key);
+        uint32_t c = fetch(tri, lv, texel_coord(u, fxl__signed_u(tri)), texel_coord(v, fxl__signed_v(tri)), &key);
         return key ? 0x10000u : c;
     }
 }
@@ -193,8 +193,8 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
         if (ztest && zz <= s->zb[i])
             draw = 0;
         if (draw) {
-            col = tri->has_color ? (((c0 >> 16) << 11) | ((c1 >> 16) << 5) | (c2 >> 16)) : d->color;
-            if (tri->has_uv) {
+            col = fxl__has_color(tri) ? (((c0 >> 16) << 11) | ((c1 >> 16) << 5) | (c2 >> 16)) : d->color;
+            if (fxl__has_uv(tri)) {
                 uint32_t t = sample(tri, s->lvl, u, v);
                 if (s->lvl2 && t != 0x10000u && s->lod_frac_q8 != 0u) {
                     uint32_t t2 = sample(tri, s->lvl2, u2, v2);
@@ -264,7 +264,8 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     int64_t q = pv[PQ];
     int i;
 
-    pt->z = sat_u32(pv[PZ] >> FXL__PF);    /* pv[PZ] >= 0 inside the triangle */
+    /* pv[PZ] >= 0 inside the triangle */
+    pt->z = FXL_HAVE_DEPTH ? sat_u32(pv[PZ] >> FXL__PF) : 0u;
     if (tri->np <= PA)
         return;
     /* Inside the triangle q >= q_min; the clamp keeps a rounding overshoot
@@ -274,16 +275,16 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     fxl__recip(q, &rc);
     if (tri->stats)
         tri->stats->divisions++;
-    if (tri->has_uv) {
+    if (fxl__has_uv(tri)) {
         int64_t u = fxl__persp(pv[PA + FXL__AU], &rc, tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         int64_t v = fxl__persp(pv[PA + FXL__AV], &rc, tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
         /* Repeat/mirror: modulo 2^32 is exact (the period divides it). */
-        pt->a[FXL__AU] = tri->signed_u ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
-        pt->a[FXL__AV] = tri->signed_v ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
+        pt->a[FXL__AU] = fxl__signed_u(tri) ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
+        pt->a[FXL__AV] = fxl__signed_v(tri) ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
         pt->u64 = u;
         pt->v64 = v;
     }
-    if (tri->has_color) {
+    if (fxl__has_color(tri)) {
         static const int64_t cmax[3] = {31 << 16, 63 << 16, 31 << 16};
         for (i = 0; i < 3; i++) {
             int64_t c = fxl__persp(pv[PA + FXL__AR + i], &rc, tri->a_shift[FXL__AR + i]);
@@ -870,7 +871,7 @@ void fxl__span_setup(fxl__tri_t *tri)
     tri->pl[PZ] = &tri->z;
     for (i = 0; i < FXL__NATTR; i++)
         tri->pl[PA + i] = &tri->a[i];
-    tri->np = tri->has_color ? NPLANES : (tri->has_uv ? PA + 2 : PA);
+    tri->np = fxl__has_color(tri) ? NPLANES : (fxl__has_uv(tri) ? PA + 2 : PA);
     /* planes past np are never read (correct, lod_at and the fast walk
      * read q, z, u, v, and the colours only with has_color) */
     for (i = 0; i < tri->np; i++) {
@@ -879,7 +880,7 @@ void fxl__span_setup(fxl__tri_t *tri)
         tri->gpxN[i] = (int64_t)(g << k);
     }
     tri->fast_id = 0;
-    if (tri->has_uv) {
+    if (fxl__has_uv(tri)) {
         tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         tri->persp_eb[1] = fxl__persp_eb(tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
         tri->fast_id = (uint8_t)fast_id_of(tri);
@@ -917,7 +918,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
     correct(tri, pv, &p0);
 
-    seg.lvl = tri->has_uv ? &tri->level[0] : 0;
+    seg.lvl = fxl__has_uv(tri) ? &tri->level[0] : 0;
     seg.lvl2 = 0;
     seg.u2 = seg.v2 = 0;
     seg.du2 = seg.dv2 = 0;
@@ -961,9 +962,9 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         a = x > cl ? x : cl;
         b = x + n < cr ? x + n : cr;
         off = a - x;
-        if (tri->has_uv) {
-            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], tri->signed_u));
-            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], tri->signed_v));
+        if (fxl__has_uv(tri)) {
+            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], fxl__signed_u(tri)));
+            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], fxl__signed_v(tri)));
 #if FXL_HAVE_MIPMAP
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
@@ -987,22 +988,22 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             seg.lvl = &tri->level[level];
             seg.du = shift_step(du0, level);
             seg.dv = shift_step(dv0, level);
-            seg.u = shift_coord(p0.a[FXL__AU], level, tri->signed_u) + (uint32_t)seg.du * (uint32_t)off;
-            seg.v = shift_coord(p0.a[FXL__AV], level, tri->signed_v) + (uint32_t)seg.dv * (uint32_t)off;
+            seg.u = shift_coord(p0.a[FXL__AU], level, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
+            seg.v = shift_coord(p0.a[FXL__AV], level, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
             if (seg.lvl2) {
                 seg.du2 = shift_step(du0, level + 1);
                 seg.dv2 = shift_step(dv0, level + 1);
-                seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, tri->signed_u) + (uint32_t)seg.du2 * (uint32_t)off;
-                seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, tri->signed_v) + (uint32_t)seg.dv2 * (uint32_t)off;
+                seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, fxl__signed_u(tri)) + (uint32_t)seg.du2 * (uint32_t)off;
+                seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, fxl__signed_v(tri)) + (uint32_t)seg.dv2 * (uint32_t)off;
             }
         }
-        if (tri->has_color) {
+        if (fxl__has_color(tri)) {
             for (i = 0; i < 3; i++) {
                 seg.dc[i] = sat_i32(STEP((int64_t)p1.a[FXL__AR + i] - (int64_t)p0.a[FXL__AR + i]));
                 seg.c[i] = p0.a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
             }
         }
-        seg.dz = sat_i32(STEP((int64_t)p1.z - (int64_t)p0.z));
+        seg.dz = FXL_HAVE_DEPTH ? sat_i32(STEP((int64_t)p1.z - (int64_t)p0.z)) : 0;
 #undef STEP
         seg.z = p0.z + (uint32_t)seg.dz * (uint32_t)off;
 
