@@ -182,7 +182,7 @@ static int q16_div(fxl_q16_t a, fxl_q16_t b, fxl_q16_t *out, int *negative)
      * (an odd divisor can never produce an exact .5). */
     n = (uint64_t)abs_u32(a) << 16;
     d = (uint64_t)abs_u32(b);
-    q = (n + d / 2u) / d;
+    q = fxl__udiv64(n + d / 2u, d);
     return q16_from_mag(*negative, q, out);
 }
 
@@ -369,7 +369,7 @@ int64_t fxl_div64_round(int64_t num, int64_t den)
     }
     n = abs_u64(num);
     d = abs_u64(den);
-    q = n / d;
+    q = fxl__udiv64(n, d);
     r = n - q * d; /* n % d without a second runtime division call */
     /* Round half away from zero: up when r >= d / 2, i.e. 2r >= d, written
      * as r >= d - r because 2r could wrap for d near 2^63 (r == 0 never passes:
