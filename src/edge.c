@@ -17,12 +17,12 @@
 #include "raster_int.h"
 #include "div64.h"
 
-/* floor(n / d) for d > 0: C's division truncates, which rounds a negative
- * inexact quotient up; |q d| <= |n|, so q * d cannot overflow. */
-static int64_t floor_div(int64_t n, int64_t d)
+/* ceil(n / d) for d > 0, |n| < 2^62: on magnitudes, ceil(-a / d) being
+ * -floor(a / d) */
+static int64_t ceil_div(int64_t n, int64_t d)
 {
-    const int64_t q = fxl__sdiv64(n, d);
-    return q * d > n ? q - 1 : q;
+    return n >= 0 ? (int64_t)fxl__udiv64((uint64_t)n + (uint64_t)d - 1u, (uint64_t)d)
+                  : -(int64_t)fxl__udiv64((uint64_t)0 - (uint64_t)n, (uint64_t)d);
 }
 
 void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row)
@@ -32,13 +32,16 @@ void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t 
     int64_t den = dy * FXL__ONE;
     int64_t yc = (int64_t)row * FXL__ONE + FXL__HALF;
     int64_t num = ((int64_t)Xa - FXL__HALF) * dy + (yc - Ya) * dx;
-    int64_t x = floor_div(num + den - 1, den);       /* ceil(num / den) */
-    int64_t step = floor_div(dx, dy);                 /* floor(ONE*dx / ONE*dy) */
+    int64_t x = ceil_div(num, den);
+    /* floor(ONE*dx / ONE*dy), |dx|, dy <= 2^22: an unsigned 32-bit division
+     * (the one helper a Cortex-M0+ links anyway); floor(-a / b) = -ceil(a / b) */
+    const uint32_t adx = (uint32_t)(dx < 0 ? -dx : dx), udy = (uint32_t)dy;
+    const int32_t step = dx >= 0 ? (int32_t)(adx / udy) : -(int32_t)((adx + udy - 1u) / udy);
 
     e->x = (int32_t)x;
     e->err = (int32_t)(x * den - num);
     e->den = (int32_t)den;
-    e->step = (int32_t)step;
+    e->step = step;
     e->rem = (int32_t)((dx - step * dy) * FXL__ONE);
 }
 

@@ -29,8 +29,13 @@
 #define FXL__ALWAYS_INLINE inline
 #endif
 
-/* 32-bit cores: where 64-bit shifts by a variable are long sequences. */
+/* 32-bit cores: where 64-bit shifts by a variable are long sequences (the
+ * shortcut for them is left out of size-optimised builds). */
+#if defined(__OPTIMIZE_SIZE__)
+#define FXL__WORD32 0
+#else
 #define FXL__WORD32 (UINTPTR_MAX <= 0xFFFFFFFFu)
+#endif
 
 /* Does >> of a negative value shift in sign bits? C99 leaves it to the
  * implementation (GCC and Clang document that it does); the constant

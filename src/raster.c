@@ -159,15 +159,13 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 {
     const fxl_texture_t *t = tri->tex;
     const fxl_draw_t *d = tri->draw;
-    uint32_t bpp = fxl_texfmt_bytes((fxl_texfmt_t)t->format), L;
+    const uint32_t bpp = fxl_texfmt_bytes((fxl_texfmt_t)t->format);
+    /* a local count: the compiler folds the loop to level 0 without mips */
+    const uint32_t nlevels = FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE ? t->levels : 1u;
+    uint32_t L;
 
-    (void)d;   /* used only with FXL_HAVE_MIPMAP */
-    tri->nlevels = 1;
-#if FXL_HAVE_MIPMAP
-    if (d->mip != FXL_MIP_NONE)
-        tri->nlevels = t->levels;
-#endif
-    for (L = 0; L < tri->nlevels; L++) {
+    tri->nlevels = (uint8_t)nlevels;
+    for (L = 0; L < nlevels; L++) {
         fxl__level_t *lv = &tri->level[L];
         lv->texels = (const uint8_t *)t->texels + (uint32_t)fxl_texture_level_offset(t, L) * bpp;
         lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
@@ -208,8 +206,8 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     fxl_status_t st;
     int32_t X[3], Y[3], ord[3], i, t;
     int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
-    int64_t det, cross;
-    int mid_left;
+    int64_t det;
+    int mid_left, odd = 0;
 
     if (!target || !draw || !v)
         return FXL_ERR_ARG;
@@ -240,9 +238,9 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     ord[0] = 0;
     ord[1] = 1;
     ord[2] = 2;
-    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; }
-    if (Y[ord[2]] < Y[ord[1]]) { t = ord[1]; ord[1] = ord[2]; ord[2] = t; }
-    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; }
+    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; odd ^= 1; }
+    if (Y[ord[2]] < Y[ord[1]]) { t = ord[1]; ord[1] = ord[2]; ord[2] = t; odd ^= 1; }
+    if (Y[ord[1]] < Y[ord[0]]) { t = ord[0]; ord[0] = ord[1]; ord[1] = t; odd ^= 1; }
 
     row_top = first_row_at(Y[ord[0]]);
     row_mid = first_row_at(Y[ord[1]]);
@@ -294,10 +292,10 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     if (stats)
         stats->drawn++;
 
-    /* Which side the middle vertex is on, from the long edge top -> bottom. */
-    cross = ((int64_t)X[ord[1]] - X[ord[0]]) * ((int64_t)Y[ord[2]] - Y[ord[0]]) -
-            ((int64_t)Y[ord[1]] - Y[ord[0]]) * ((int64_t)X[ord[2]] - X[ord[0]]);
-    mid_left = cross < 0;
+    /* Which side the middle vertex is on, from the long edge top -> bottom:
+     * the sign of the sorted vertices' determinant, which is det's sign
+     * flipped once per swap of the sort. */
+    mid_left = (det < 0) != odd;
 
     fxl__edge_init(&el, X[ord[0]], Y[ord[0]], X[ord[2]], Y[ord[2]], r0);
     if (r0 < row_mid)

@@ -812,32 +812,35 @@ typedef void (*fxl__span_fast_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl
 #else
 #define IF_MIP(x) 0
 #endif
+/* The span column exists only where the specialised walks are built. */
 #if FXL__FAST_SPANS
-#define IF_SPANS(x) x
+#define FAST_ENTRY(seg, span) {seg, span}
 #else
-#define IF_SPANS(x) 0
+#define FAST_ENTRY(seg, span) {seg}
 #endif
 static const struct {
     fxl__seg_fn seg;
+#if FXL__FAST_SPANS
     fxl__span_fast_fn span;
+#endif
 } fast_tab[17] = {
-    {0, IF_SPANS(0)},
-    {seg_point, IF_SPANS(span_point)},
-    {IF_BILIN(seg_bilin), IF_SPANS(IF_BILIN(span_bilin))},
-    {IF_DEPTH(seg_point_z), IF_SPANS(IF_DEPTH(span_point_z))},
-    {IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_SPANS(IF_BILIN(IF_DEPTH(span_bilin_z)))},
-    {seg_point_swap, IF_SPANS(span_point_swap)},
-    {IF_BILIN(seg_bilin_swap), IF_SPANS(IF_BILIN(span_bilin_swap))},
-    {IF_DEPTH(seg_point_z_swap), IF_SPANS(IF_DEPTH(span_point_z_swap))},
-    {IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_SPANS(IF_BILIN(IF_DEPTH(span_bilin_z_swap)))},
-    {IF_MIP(SEG_GENERIC), IF_SPANS(IF_MIP(span_pml))},
-    {IF_MIP(IF_BILIN(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_BILIN(span_tri)))},
-    {IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_DEPTH(span_pml_z)))},
-    {IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_SPANS(IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z))))},
-    {IF_MIP(SEG_GENERIC), IF_SPANS(IF_MIP(span_pml_swap))},
-    {IF_MIP(IF_BILIN(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_BILIN(span_tri_swap)))},
-    {IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_SPANS(IF_MIP(IF_DEPTH(span_pml_z_swap)))},
-    {IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_SPANS(IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap))))},
+    FAST_ENTRY(0, 0),
+    FAST_ENTRY(seg_point, span_point),
+    FAST_ENTRY(IF_BILIN(seg_bilin), IF_BILIN(span_bilin)),
+    FAST_ENTRY(IF_DEPTH(seg_point_z), IF_DEPTH(span_point_z)),
+    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_BILIN(IF_DEPTH(span_bilin_z))),
+    FAST_ENTRY(seg_point_swap, span_point_swap),
+    FAST_ENTRY(IF_BILIN(seg_bilin_swap), IF_BILIN(span_bilin_swap)),
+    FAST_ENTRY(IF_DEPTH(seg_point_z_swap), IF_DEPTH(span_point_z_swap)),
+    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_BILIN(IF_DEPTH(span_bilin_z_swap))),
+    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml)),
+    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri))),
+    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z))),
+    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z)))),
+    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_swap)),
+    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_swap))),
+    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_swap))),
+    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap)))),
 };
 
 static int fast_id_of(const fxl__tri_t *tri)
@@ -990,12 +993,14 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             seg.dv = shift_step(dv0, level);
             seg.u = shift_coord(p0.a[FXL__AU], level, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
             seg.v = shift_coord(p0.a[FXL__AV], level, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
+#if FXL_HAVE_MIPMAP
             if (seg.lvl2) {
                 seg.du2 = shift_step(du0, level + 1);
                 seg.dv2 = shift_step(dv0, level + 1);
                 seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, fxl__signed_u(tri)) + (uint32_t)seg.du2 * (uint32_t)off;
                 seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, fxl__signed_v(tri)) + (uint32_t)seg.dv2 * (uint32_t)off;
             }
+#endif
         }
         if (fxl__has_color(tri)) {
             for (i = 0; i < 3; i++) {
@@ -1032,8 +1037,11 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
         return;
     /* the caller's seg function is the one fxl__pick_seg_fn chose for this
      * triangle: take the specialised walk */
-    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].span)
+#if FXL__FAST_SPANS
+    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].span) {
         fast_tab[tri->fast_id].span(tri, row, xl, xr, cl, cr);
-    else
-        draw_span_generic(tri, fn, row, xl, xr, cl, cr);
+        return;
+    }
+#endif
+    draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
