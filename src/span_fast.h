@@ -325,11 +325,16 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
     const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
 #endif
     int32_t dX;
-    /* index of frame pixel (0, row) in the buffer; a pointer is only formed
-     * for pixels inside the clip rectangle */
-    const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
+    /* pixel cl of the row: inside the clip rectangle, so a valid pointer;
+     * every segment writes from cl on */
+    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
+    uint16_t *const px_cl = tg->pixels + clidx;
+#if FXL_T_DEPTH
+    uint16_t *const zb_cl = tg->depth + clidx;
+    uint32_t written = 0;
+#endif
     fxl__lean_t s;
-    uint32_t written = 0, segments = 1;
+    uint32_t segments = 1;
     FXL_T_LV L;
 
     (void)autoseg;
@@ -337,6 +342,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
     if (autoseg && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
 #endif
+    const int32_t x0 = x;
     dX = x * FXL__ONE + FXL__HALF - tri->X0;
     FXL_T_LV_INIT(&L, &tri->level[0]);
     s.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
@@ -391,7 +397,11 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
             dz = step_z_div(s.z, z0, div);
 #endif
         }
-        segments++;
+#if FXL_HAVE_AUTO
+        /* fixed lengths: the count follows from the span (below) */
+        if (autoseg)
+            segments++;
+#endif
         if (x < cl) {
             /* only the first segment starts left of the clip */
             const uint32_t off = (uint32_t)(cl - x);
@@ -405,15 +415,23 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
          * test keeps a broken caller from writing a negative count */
 #if FXL_T_DEPTH
-        written += FXL_T_LOOP(tg->pixels + (rowidx + a), tg->depth + (rowidx + a), b - a, zz, dz, &L, u, v, du, dv);
+        written += FXL_T_LOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv);
 #else
-        written += FXL_T_LOOP(tg->pixels + (rowidx + a), 0, b - a, 0u, 0u, &L, u, v, du, dv);
+        (void)FXL_T_LOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv);
 #endif
         x += n;
     }
     if (tri->stats) {
+        /* fixed lengths: one segment per 2^k pixels from the first start
+         * x0 (the last one shorter), plus the division at x0 */
+        if (!autoseg)
+            segments = 1u + (uint32_t)((cr - x0 + ((int32_t)1 << k) - 1) >> k);
         tri->stats->divisions += segments;
+#if FXL_T_DEPTH
         tri->stats->pixels += written;
+#else
+        tri->stats->pixels += (uint32_t)(cr - cl);   /* every pixel of [cl, cr) */
+#endif
         tri->stats->spans++;
     }
 }
