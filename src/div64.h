@@ -20,8 +20,9 @@
  * callers never pass it). Compiled in every build so tests check it against
  * the compiler's division on hosts. */
 uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d);
-/* n / d truncated toward zero by the same loop, for d != 0 and not
- * INT64_MIN / -1 (one out-of-line call: smaller than the signs inline) */
+/* n / d truncated toward zero by the same loop, for d != 0; INT64_MIN / -1
+ * saturates to INT64_MAX (one out-of-line call: smaller than the signs
+ * inline) */
 int64_t fxl__sdiv64_loop(int64_t n, int64_t d);
 
 /* n / d, d != 0 */

@@ -321,13 +321,6 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
     }
 }
 
-int64_t fxl__sdiv64_loop(int64_t n, int64_t d)
-{
-    const uint64_t q = fxl__udiv64_loop(abs_u64(n), abs_u64(d));
-    /* q <= 2^63 - 1 outside INT64_MIN / -1: the negation is in range */
-    return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
-}
-
 /* ------------------------------------------------------------------------ */
 /* 64-bit rounded and floored division                                      */
 
@@ -359,6 +352,13 @@ static int64_t div64_by_zero(int64_t num)
         return INT64_MIN;
     }
     return 0;
+}
+
+int64_t fxl__sdiv64_loop(int64_t n, int64_t d)
+{
+    /* |q| is 2^63 for INT64_MIN / 1 (INT64_MIN) and INT64_MIN / -1 (which
+     * saturates): div64_from_mag rebuilds both without a signed overflow */
+    return div64_from_mag((n < 0) != (d < 0), fxl__udiv64_loop(abs_u64(n), abs_u64(d)));
 }
 
 int64_t fxl_div64_round(int64_t num, int64_t den)

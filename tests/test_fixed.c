@@ -793,6 +793,8 @@ static void test_sdiv64_loop_truncates_like_c_division(void)
         for (j = 0; j < ne; j++)
             if (!(edge[i] == INT64_MIN && edge[j] == -1))
                 check_sdiv64_loop(edge[i], edge[j]);
+    /* the one quotient outside int64 saturates instead of overflowing */
+    TEST_ASSERT_TRUE(fxl__sdiv64_loop(INT64_MIN, -1) == INT64_MAX);
     check_sdiv64_loop(-6, 7);   /* truncation toward zero, not floor */
     check_sdiv64_loop(6, -7);
     lcg_seed(0x5D1F64u);
