@@ -1015,7 +1015,8 @@ int main(int argc, char **argv)
         }
         return cmd_count_trace(argv[2]);
     }
-    for (i = (strcmp(cmd, "gen-fw") == 0 ? 3 : 2); i < argc; i++) {
+    /* options come in pairs: name, value */
+    for (i = (strcmp(cmd, "gen-fw") == 0 ? 3 : 2); i < argc; i += 2) {
         const char *a = argv[i];
         const char **dst = NULL;
         if (i + 1 >= argc) {
@@ -1053,7 +1054,6 @@ int main(int argc, char **argv)
         }
         if (dst)
             *dst = argv[i + 1];
-        i++;
     }
     if (strcmp(cmd, "accuracy") == 0)
         return cmd_accuracy(&o);
