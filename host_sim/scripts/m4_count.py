@@ -37,13 +37,19 @@ HARNESS = re.compile(r"^(main|bench_nop|run|spin|put_\w+|ticks_\w+|fw_\w+|semiho
                      r"Reset_Handler|Default_Handler|vectors)$")
 
 
-def cmd_ranges(nm_in, nm_out, lib_nm):
-    core = set()
-    with open(lib_nm) as f:
+def defined_symbols(nm_path, kinds):
+    """Names an `nm` listing defines with a type letter in kinds."""
+    names = set()
+    with open(nm_path) as f:
         for line in f:
             p = line.split()
-            if len(p) >= 3 and p[-2] in "tTwW":
-                core.add(p[-1])
+            if len(p) >= 3 and p[-2] in kinds:
+                names.add(p[-1])
+    return names
+
+
+def cmd_ranges(nm_in, nm_out, lib_nm):
+    core = defined_symbols(lib_nm, "tTwW")
     extra = {"memcpy", "memset", "bench_begin", "bench_end"}
     kept = []
     with open(nm_in) as f:
@@ -159,17 +165,8 @@ def cmd_stack(ci_dir, root):
 
 
 def cmd_linked(elf_nm, lib_nm, app_nm=None):
-    def defined(path):
-        names = set()
-        with open(path) as f:
-            for line in f:
-                p = line.split()
-                if len(p) >= 3 and p[-2] in "tTrRdDbB":
-                    names.add(p[-1])
-        return names
-
-    core = defined(lib_nm)
-    app = defined(app_nm) if app_nm else None
+    core = defined_symbols(lib_nm, "tTrRdDbB")
+    app = defined_symbols(app_nm, "tTrRdDbB") if app_nm else None
     code = data = runtime = 0
     with open(elf_nm) as f:
         for line in f:
