@@ -55,7 +55,7 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
 {
     uint64_t num = (uint64_t)d_in, den = (uint64_t)d_in + (uint64_t)(-d_out);
     uint32_t t;
-    int top = 63 - fxl__clz64(den);
+    int top = 63 - fxl_clz64(den);
     if (top > 31) { /* keep 32 significant bits; num <= den stays true */
         num >>= (top - 31);
         den >>= (top - 31);

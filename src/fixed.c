@@ -15,6 +15,7 @@
 
 #include "fixel/fixed.h"
 #include "div64.h"
+#include "isqrt.h"
 
 /* |v| as an unsigned number; exact for INT32_MIN (2^31) and INT64_MIN (2^63)
  * because the negation happens in unsigned arithmetic (modulo 2^N). */
@@ -217,33 +218,38 @@ fxl_q16_t fxl_q16_recip_sat(fxl_q16_t a)
 /* ------------------------------------------------------------------------ */
 /* Square root                                                              */
 
+uint64_t fxl__isqrt64(uint64_t x)
+{
+    /* Classic digit-by-digit square root: bit walks down the powers of
+     * four, r collects the root, x keeps the remainder. */
+    uint64_t r = 0, bit = (uint64_t)1 << 62;
+    while (bit > x)
+        bit >>= 2;
+    while (bit != 0) {
+        if (x >= r + bit) {
+            x -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+        bit >>= 2;
+    }
+    return r;
+}
+
 fxl_q16_t fxl_q16_sqrt(fxl_q16_t a)
 {
-    /* sqrt(a / 2^16) * 2^16 = sqrt(a * 2^16). n < 2^47, so the result is
-     * below 2^23.5 and fits easily. Classic digit-by-digit square root: after
-     * the loop root = floor(sqrt(n)) and rem = n - root^2. */
-    uint64_t n, rem, root = 0, bit;
+    /* sqrt(a / 2^16) * 2^16 = sqrt(a * 2^16); n < 2^47, so the root is
+     * below 2^23.5 and fits easily. */
+    uint64_t n, root;
     if (a <= 0) {
         return 0;
     }
     n = (uint64_t)(uint32_t)a << 16;
-    rem = n;
-    bit = (uint64_t)1 << 46; /* highest power of four <= 2^47 */
-    while (bit > rem) {
-        bit >>= 2;
-    }
-    while (bit != 0) {
-        if (rem >= root + bit) {
-            rem -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
+    root = fxl__isqrt64(n);
     /* Round to nearest: n >= (root + 1/2)^2 = root^2 + root + 1/4 holds for an
-     * integer n exactly when rem = n - root^2 > root; never a tie. */
-    if (rem > root) {
+     * integer n exactly when n - root^2 > root; never a tie. */
+    if (n - root * root > root) {
         root++;
     }
     return (fxl_q16_t)root;

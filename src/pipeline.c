@@ -100,34 +100,7 @@ int32_t fxl__to_i32(int64_t x, int *ovf)
     return (int32_t)x;
 }
 
-int fxl__clz64(uint64_t x)
-{
-    int n = 0;
-    if (x == 0) return 64;
-    if ((x >> 32) == 0) { n += 32; x <<= 32; }
-    if ((x >> 48) == 0) { n += 16; x <<= 16; }
-    if ((x >> 56) == 0) { n += 8; x <<= 8; }
-    if ((x >> 60) == 0) { n += 4; x <<= 4; }
-    if ((x >> 62) == 0) { n += 2; x <<= 2; }
-    if ((x >> 63) == 0) { n += 1; }
-    return n;
-}
 
-uint64_t fxl__isqrt64(uint64_t x)
-{
-    uint64_t r = 0, bit = (uint64_t)1 << 62;
-    while (bit > x) bit >>= 2;
-    while (bit != 0) {
-        if (x >= r + bit) {
-            x -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
-        }
-        bit >>= 2;
-    }
-    return r;
-}
 
 /* round(num / den), ties away from zero; den != 0, |num| < 2^62. */
 static int64_t div_round(int64_t num, int64_t den)
@@ -277,7 +250,7 @@ static fxl_status_t normalize_q30(const int64_t in[3], int64_t out[3])
     int i, top;
     for (i = 0; i < 3; i++) if (mag64(in[i]) > mx) mx = mag64(in[i]);
     if (mx == 0) return FXL_ERR_RANGE;
-    top = 63 - fxl__clz64(mx);
+    top = 63 - fxl_clz64(mx);
     for (i = 0; i < 3; i++)
         v[i] = top > 29 ? fxl__shr_round(in[i], (unsigned)(top - 29))
                         : in[i] * ((int64_t)1 << (29 - top)); /* |.| < 2^30 */
@@ -538,7 +511,7 @@ static fxl_status_t project_pos(const fxl_xform_t *xf, const fxl_clipvert_t *c, 
     /* One reciprocal per vertex: w = wn * 2^(s - 31) with wn in [2^31, 2^32),
      * rec = 2^62 / wn in (2^30, 2^31] (31 significant bits), so
      * 1/w = rec * 2^(-31 - s). */
-    s = 63 - fxl__clz64((uint64_t)c->w);
+    s = 63 - fxl_clz64((uint64_t)c->w);
     wn = s >= 31 ? (uint64_t)c->w >> (s - 31) : (uint64_t)c->w << (31 - s);
     rec = fxl__udiv64(((uint64_t)1 << 62) + wn / 2u, wn);
     /* x / w in q30 = x * rec * 2^(-1 - s); s >= 16 since w >= near >= 2^-16. */

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fixel/pipeline.h"
+#include "isqrt.h"
 
 /* round(x / 2^sh) with ties away from zero, 0 <= sh <= 62. */
 int64_t fxl__shr_round(int64_t x, unsigned sh);
@@ -22,9 +23,6 @@ int64_t fxl__mul_shr_s(int64_t a, int32_t b, unsigned sh, int *ovf);
 int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf);
 /* Clamp to int32 and set *ovf when clamped. */
 int32_t fxl__to_i32(int64_t x, int *ovf);
-int fxl__clz64(uint64_t x);
-/* floor(sqrt(x)). */
-uint64_t fxl__isqrt64(uint64_t x);
 /* sin and cos of a in q30 (|error| <= 2^-21 + 2^-29). */
 void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
 /* Angle of (x, y) in q32 turns (uint32, wraps), any int64 inputs with

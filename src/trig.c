@@ -102,7 +102,7 @@ fxl_q16_t fxl_cos_q16(fxl_angle_t a)
 static uint32_t cordic_octant(int64_t x, int64_t y)
 {
     int64_t z = 0;
-    int top = 63 - fxl__clz64((uint64_t)x);
+    int top = 63 - fxl_clz64((uint64_t)x);
     int i;
     /* Bring x to [2^58, 2^59): CORDIC grows the vector by 1.647, the folding
      * keeps y <= x, so |x|, |y| stay below 2^60.3. */
