@@ -5,8 +5,9 @@
  * Every scene of the gallery (the host's scene list) at 320x240, native
  * RGB565, with each draw variant below: the gallery's own four (subdiv16 and
  * affine, point and bilinear, no mips) plus variants that reach the other
- * span paths (exact, auto, subdiv32, mip nearest and linear, per-triangle
- * LOD). Frame procedure: pixels and depth cleared to 0, every triangle drawn
+ * span paths (exact and auto with and without mips, subdiv32, mip nearest
+ * and linear, per-triangle LOD). Size-optimised builds draw every one of
+ * them with the generic walk, the others with the specialised ones. Frame procedure: pixels and depth cleared to 0, every triangle drawn
  * in order with depth test + write, CRC-32 (crc32.h) of the pixel rows.
  */
 #ifndef FXL_DET_ENTRIES_H
@@ -31,6 +32,8 @@ static const det_variant_t det_variants[] = {
     {"exact_trilinear", FXL_PERSP_EXACT, FXL_FILTER_BILINEAR, FXL_MIP_LINEAR, FXL_LOD_SEGMENT},
     {"auto_bilinear_mip", FXL_PERSP_AUTO, FXL_FILTER_BILINEAR, FXL_MIP_NEAREST, FXL_LOD_SEGMENT},
     {"subdiv32_point_mip_tri", 32, FXL_FILTER_POINT, FXL_MIP_NEAREST, FXL_LOD_TRIANGLE},
+    {"exact_bilinear", FXL_PERSP_EXACT, FXL_FILTER_BILINEAR, FXL_MIP_NONE, FXL_LOD_SEGMENT},
+    {"auto_point", FXL_PERSP_AUTO, FXL_FILTER_POINT, FXL_MIP_NONE, FXL_LOD_SEGMENT},
 };
 #define DET_NVARIANTS ((int)(sizeof det_variants / sizeof det_variants[0]))
 

@@ -589,6 +589,103 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
     lean_next(tri, s, mult, 1);
 }
 #endif
+
+/* Runs of 1-pixel segments (exact mode, AUTO's steepest stretches): up to
+ * FXL__BATCH pixels from x (s holds its planes and u, v, z), each pixel's
+ * u, v into puv (pairs) and z into pz. The planes step one pixel at a time and
+ * every pixel is a correction point, with the walk state in registers and
+ * none of the segment bookkeeping of the lean walk: the same values as its
+ * 1-pixel segments (plane steps gpx, which is gpxN for k = 0, and the same
+ * correction), bit for bit. One copy out of line serves every variant;
+ * their pixel loops read the arrays (FXL_T_RUN).
+ * The chunk ends at cr (without the correction there, which no pixel
+ * uses), after FXL__BATCH pixels, or (autoseg) before the first pixel whose
+ * segment is longer than 1; at an odd offset from xl alignment caps the
+ * length to 1, so fxl__auto_next runs only at even ones. s is left at the
+ * pixel after the chunk. Returns the chunk's pixel count m >= 1; *more
+ * says whether the run goes on after it; *ndiv counts the corrections. */
+static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                      fxl__lean_t *s, const int32_t x0, const int32_t xl, const int32_t xr,
+                                      const int32_t cr, uint32_t *puv, uint32_t *pz, int *more,
+                                      uint32_t *ndiv, const int with_z)
+{
+    const uint64_t gq = (uint64_t)tri->gpx[FXL__PQ];
+    const uint64_t gu = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
+    const uint64_t gv = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
+    const uint64_t gz = with_z ? (uint64_t)tri->gpx[FXL__PZ] : 0u;
+    uint64_t sq = s->sq, su = s->su, sv = s->sv, sz = s->sz;
+    int32_t m = 0;
+    int go_on = 0;
+
+    (void)autoseg;
+    (void)t_row;
+    (void)xl;
+    (void)xr;
+    puv[0] = s->u;
+    puv[1] = s->v;
+    if (with_z)
+        pz[0] = s->z;
+    for (;;) {
+        fxl__pt_t pt;
+        int32_t x;
+        m++;
+        x = x0 + m;
+        if (x >= cr)
+            break;   /* the span's end: no correction */
+        sq += gq;
+        su += gu;
+        sv += gv;
+        fast_correct_batch(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
+        if (with_z)
+            sz += gz;
+#if FXL_HAVE_AUTO
+        if (autoseg && !((uint32_t)(x - xl) & 1u) && fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq) != 0) {
+            s->u = pt.u;
+            s->v = pt.v;
+            break;
+        }
+#endif
+        if (m == FXL__BATCH) {   /* the chunk is full; the run goes on at x */
+            s->u = pt.u;
+            s->v = pt.v;
+            go_on = 1;
+            break;
+        }
+        puv[2 * m] = pt.u;
+        puv[2 * m + 1] = pt.v;
+        if (with_z)
+            pz[m] = fast_z((int64_t)sz);
+    }
+    /* corrections: one a pixel after the first, none at cr */
+    *ndiv += (uint32_t)m - (x0 + m >= cr ? 1u : 0u);
+    s->sq = sq;
+    s->su = su;
+    s->sv = sv;
+    if (with_z) {
+        s->sz = sz;
+        s->z = fast_z((int64_t)sz);
+    }
+    *more = go_on;
+    return m;
+}
+
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                                      fxl__lean_t *s, const int32_t x0, const int32_t xl,
+                                                      const int32_t xr, const int32_t cr, uint32_t *puv,
+                                                      int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, autoseg, t_row, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+}
+
+#if FXL_HAVE_DEPTH
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                                       fxl__lean_t *s, const int32_t x0, const int32_t xl,
+                                                       const int32_t xr, const int32_t cr, uint32_t *puv,
+                                                       uint32_t *pz, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, autoseg, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+}
+#endif
 #endif /* FXL__FAST_SPANS */
 
 /* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the

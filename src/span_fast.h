@@ -31,6 +31,8 @@
 #define FXL_T_BATCH FXL__CAT(FXL_T_SPAN, _batch)
 #define FXL_T_BATCH_AUTO FXL__CAT(FXL_T_SPAN, _batch_auto)
 #define FXL_T_LEAN FXL__CAT(FXL_T_SPAN, _lean)
+#define FXL_T_RUN FXL__CAT(FXL_T_SPAN, _run)
+#define FXL_T_PIX1 FXL__CAT(FXL_T_SPAN, _pix1)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
@@ -307,13 +309,82 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
 #endif
 
 #if !FXL_T_MIPLIN
+/* One pixel with the correction point's own u, v (and z): a segment of
+ * length 1. The same arithmetic as FXL_T_PIXEL; the bilinear sample is
+ * written out here because the bilinear loop is not inlined and a call a
+ * pixel cost ~25 Cortex-M4 instructions. Returns the pixels written. */
+static FXL__UNSWITCH uint32_t FXL_T_PIX1(uint16_t *dst, uint16_t *zb, uint32_t z, FXL_T_LV *L, uint32_t u,
+                                         uint32_t v)
+{
+#if FXL_T_BILINEAR
+#if FXL_T_DEPTH
+    const uint32_t zz = z >> 16;
+    if (zz <= *zb)
+        return 0u;
+    *zb = (uint16_t)zz;
+#else
+    (void)zb;
+    (void)z;
+#endif
+    {
+        const uint32_t c = compact565(bl_sample(L, u - 0x8000u, v - 0x8000u));
+        *dst = FXL_T_SWAP ? (uint16_t)((c >> 8) | (c << 8)) : (uint16_t)c;
+    }
+    return 1u;
+#else
+    return FXL_T_LOOP(dst, zb, 1, z, 0u, L, u, v, 0u, 0u);
+#endif
+}
+
+/* A run of 1-pixel segments from x (cl <= x < cr): the whole span in exact
+ * mode, and AUTO's stretches where no segment of 2 fits. The corrections
+ * come in chunks from the shared lean_run (span.c), each pixel drawn with
+ * its own u, v (and z): ~80 Cortex-M4 instructions a pixel, where the
+ * lean walk's 1-pixel segments cost ~170. Returns the x the run stopped
+ * at (cr, or the start of a longer segment); s is left there. */
+static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                       fxl__lean_t *s, FXL_T_LV *L, uint16_t *px_cl, uint16_t *zb_cl, int32_t x,
+                                       const int32_t xl, const int32_t xr, const int32_t cl, const int32_t cr,
+                                       uint32_t *ndiv, uint32_t *written)
+{
+    uint32_t puv[2 * FXL__BATCH];
+#if FXL_T_DEPTH
+    uint32_t pz[FXL__BATCH], drawn = 0;
+#else
+    (void)zb_cl;
+#endif
+    int more;
+    do {
+        int32_t i;
+#if FXL_T_DEPTH
+        const int32_t m = lean_run_uvz(tri, autoseg, t_row, s, x, xl, xr, cr, puv, pz, &more, ndiv);
+        uint16_t *const dst = px_cl + (x - cl), *const zb = zb_cl + (x - cl);
+        for (i = 0; i < m; i++)
+            drawn += FXL_T_PIX1(dst + i, zb + i, pz[i], L, puv[2 * i], puv[2 * i + 1]);
+#else
+        const int32_t m = lean_run_uv(tri, autoseg, t_row, s, x, xl, xr, cr, puv, &more, ndiv);
+        uint16_t *const dst = px_cl + (x - cl);
+        for (i = 0; i < m; i++)
+            (void)FXL_T_PIX1(dst + i, 0, 0u, L, puv[2 * i], puv[2 * i + 1]);
+#endif
+        x += m;
+    } while (more);
+#if FXL_T_DEPTH
+    *written += drawn;
+#else
+    (void)written;
+#endif
+    return x;
+}
+
 /* The common cases in one loop: segments on one level (no LOD per
- * segment), of 2^k >= 2 pixels or of adaptive lengths (autoseg, a constant:
+ * segment), of 2^k pixels or of adaptive lengths (autoseg, a constant:
  * one copy each). The same values as the batch walk below, bit for bit;
  * without its arrays, its per-segment level and LOD bookkeeping and its
  * walk state in memory it costs about half as many instructions a
  * segment. The correction is one call (lean_next_uv/_uvz) shared by all
- * variants. */
+ * variants; runs of 1-pixel segments (exact mode, AUTO's steep parts) go
+ * to FXL_T_RUN. */
 static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, int32_t row, int32_t xl, int32_t xr,
                                      int32_t cl, int32_t cr)
 {
@@ -368,6 +439,21 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #else
         const int ki = k;
 #endif
+        if (ki == 0 && x >= cl) {
+            x = FXL_T_RUN(tri, autoseg,
+#if FXL_HAVE_AUTO
+                          t_row,
+#else
+                          0,
+#endif
+                          &s, &L, px_cl,
+#if FXL_T_DEPTH
+                          zb_cl, x, xl, xr, cl, cr, &segments, &written);
+#else
+                          0, x, xl, xr, cl, cr, &segments, 0);
+#endif
+            continue;
+        }
         const int32_t N = (int32_t)1 << ki;
         const uint32_t div = xr - x > N ? 0u : (uint32_t)(xr - x - 1);
         const int32_t n = div ? (int32_t)div + 1 : N;
@@ -422,9 +508,10 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         x += n;
     }
     if (tri->stats) {
-        /* fixed lengths: one segment per 2^k pixels from the first start
-         * x0 (the last one shorter), plus the division at x0 */
-        if (!autoseg)
+        /* fixed lengths 2^k >= 2: one segment per 2^k pixels from the
+         * first start x0 (the last one shorter), plus the division at x0
+         * (exact mode and AUTO count theirs as they go) */
+        if (!autoseg && k > 0)
             segments = 1u + (uint32_t)((cr - x0 + ((int32_t)1 << k) - 1) >> k);
         tri->stats->divisions += segments;
 #if FXL_T_DEPTH
@@ -460,10 +547,8 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
             return;
         }
 #endif
-        if (k > 0) {
-            FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
-            return;
-        }
+        FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
+        return;
     }
 #endif
 #if FXL_HAVE_AUTO
@@ -530,7 +615,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #endif
 
     while (x < cr) {
-        int32_t cnt, cnt_done = 0, i, xe = x;
+        int32_t cnt, i, xe = x;
 
         /* phase 1: the batch's correction points */
 #if FXL_HAVE_AUTO
@@ -546,41 +631,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
         segments += (uint32_t)cnt;
 
         /* phase 2: the pixels between them */
-#if !FXL_T_MIPLIN
-        if (k == 0 && !(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {   /* (AUTO per segment has k >= 1) */
-            /* Exact mode: every segment is one pixel whose u, v (and z)
-             * are the correction point itself; no steps to take. */
-            const int32_t i0 = x < cl ? cl - x : 0, i1 = cnt < cr - x ? cnt : cr - x;
-            for (i = i0; i < i1; i++) {
-                const int32_t idx = rowidx + x + i;
-#if FXL_T_BILINEAR
-                /* The pixel inline: the bilinear loop is not (FXL_T_LOOP),
-                 * and a call a pixel cost ~25 Cortex-M4 instructions. The
-                 * same arithmetic as FXL_T_PIXEL. */
-#if FXL_T_DEPTH
-                const uint32_t zz = cz[i] >> 16;
-                if (zz > tg->depth[idx]) {
-                    const uint32_t c = compact565(bl_sample(&L, cu[i] - 0x8000u, cv[i] - 0x8000u));
-                    tg->depth[idx] = (uint16_t)zz;
-                    tg->pixels[idx] = FXL_T_SWAP ? (uint16_t)((c >> 8) | (c << 8)) : (uint16_t)c;
-                    written++;
-                }
-#else
-                const uint32_t c = compact565(bl_sample(&L, cu[i] - 0x8000u, cv[i] - 0x8000u));
-                tg->pixels[idx] = FXL_T_SWAP ? (uint16_t)((c >> 8) | (c << 8)) : (uint16_t)c;
-                written++;
-#endif
-#elif FXL_T_DEPTH
-                written += FXL_T_LOOP(tg->pixels + idx, tg->depth + idx, 1, cz[i], 0u, &L, cu[i], cv[i], 0u, 0u);
-#else
-                written += FXL_T_LOOP(tg->pixels + idx, 0, 1, 0u, 0u, &L, cu[i], cv[i], 0u, 0u);
-#endif
-            }
-            x += cnt;
-            cnt_done = cnt;
-        }
-#endif
-        for (i = cnt_done; i < cnt; i++) {
+        for (i = 0; i < cnt; i++) {
 #if FXL_HAVE_AUTO
             const int ki = autoseg ? ck[i] : k;
 #else
@@ -718,6 +769,8 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #undef FXL_T_BATCH
 #undef FXL_T_BATCH_AUTO
 #undef FXL_T_LEAN
+#undef FXL_T_RUN
+#undef FXL_T_PIX1
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif

@@ -1,7 +1,7 @@
 /* test_determinism.c - the same input renders the same bits.
  *
  * Renders the determinism list (determinism/det_entries.h: every gallery
- * scene x 7 draw variants at 320x240) and checks, inside this build:
+ * scene x 9 draw variants at 320x240) and checks, inside this build:
  * - a second render of the same frame is bit-identical (no dependence on
  *   uninitialised memory, addresses or earlier draws);
  * - rendering the frame as 10 bands of 24 rows (targets with origin_y = 24k,
@@ -117,7 +117,7 @@ void test_determinism_repeat_bands_and_crc_list(void)
     }
     fprintf(list, "done\n");
     fclose(list);
-    /* 8 scenes x 7 variants when this was written; at least the gallery's */
+    /* 8 scenes x 9 variants when this was written; at least the gallery's */
     TEST_ASSERT_GREATER_OR_EQUAL(3 * 4, frames);
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # determinism.sh - the gallery CRCs must be bit-identical across builds.
 #
-# Renders the list in determinism/det_entries.h (every gallery scene x 7 draw
+# Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
 # variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
 # -M mps2-an386 with semihosting (when both exist), and compares each list
