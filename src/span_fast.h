@@ -378,15 +378,15 @@ static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg,
 }
 
 /* The common cases in one loop: segments on one level (no LOD per
- * segment), of 2^k pixels or of adaptive lengths (autoseg, a constant:
- * one copy each). The same values as the batch walk below, bit for bit;
+ * segment), of 2^k >= 2 pixels, of adaptive lengths (autoseg) or of one
+ * pixel (exact); autoseg and exact are constants, one copy each. The same values as the batch walk below, bit for bit;
  * without its arrays, its per-segment level and LOD bookkeeping and its
  * walk state in memory it costs about half as many instructions a
  * segment. The correction is one call (lean_next_uv/_uvz) shared by all
  * variants; runs of 1-pixel segments (exact mode, AUTO's steep parts) go
  * to FXL_T_RUN. */
-static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, int32_t row, int32_t xl, int32_t xr,
-                                     int32_t cl, int32_t cr)
+static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, const int exact, int32_t row,
+                                     int32_t xl, int32_t xr, int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
     const int k = tri->seg_log2;
@@ -432,26 +432,29 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         s.u = pt.u;
         s.v = pt.v;
     }
-    while (x < cr) {
+#if FXL_HAVE_AUTO
+#define FXL_T_TROW t_row
+#else
+#define FXL_T_TROW 0
+#endif
+#if FXL_T_DEPTH
+#define FXL_T_RUN_AT(x) FXL_T_RUN(tri, autoseg, FXL_T_TROW, &s, &L, px_cl, zb_cl, x, xl, xr, cl, cr, &segments, &written)
+#else
+#define FXL_T_RUN_AT(x) FXL_T_RUN(tri, autoseg, FXL_T_TROW, &s, &L, px_cl, 0, x, xl, xr, cl, cr, &segments, 0)
+#endif
+    /* exact mode (its own copy, k = 0): the whole span is one run from
+     * x = cl; the fixed-length copy has no test for it */
+    if (exact)
+        x = FXL_T_RUN_AT(x);
+    while (!exact && x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
 #if FXL_HAVE_AUTO
         const int ki = autoseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k;
 #else
         const int ki = k;
 #endif
-        if (ki == 0 && x >= cl) {
-            x = FXL_T_RUN(tri, autoseg,
-#if FXL_HAVE_AUTO
-                          t_row,
-#else
-                          0,
-#endif
-                          &s, &L, px_cl,
-#if FXL_T_DEPTH
-                          zb_cl, x, xl, xr, cl, cr, &segments, &written);
-#else
-                          0, x, xl, xr, cl, cr, &segments, 0);
-#endif
+        if (autoseg && ki == 0 && x >= cl) {
+            x = FXL_T_RUN_AT(x);
             continue;
         }
         const int32_t N = (int32_t)1 << ki;
@@ -507,6 +510,8 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #endif
         x += n;
     }
+#undef FXL_T_RUN_AT
+#undef FXL_T_TROW
     if (tri->stats) {
         /* fixed lengths 2^k >= 2: one segment per 2^k pixels from the
          * first start x0 (the last one shorter), plus the division at x0
@@ -543,11 +548,14 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
         if (tri->auto_seg) {
-            FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
+            FXL_T_LEAN(tri, 1, 0, row, xl, xr, cl, cr);
             return;
         }
 #endif
-        FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
+        if (k == 0)
+            FXL_T_LEAN(tri, 0, 1, row, xl, xr, cl, cr);
+        else
+            FXL_T_LEAN(tri, 0, 0, row, xl, xr, cl, cr);
         return;
     }
 #endif
