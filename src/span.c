@@ -590,6 +590,23 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 }
 #endif
 
+/* Exact mode's start of a span (the lean walk's prologue, out of line: one
+ * copy for every variant): planes at pixel x of the row dY below the
+ * reference vertex, and u, v (and z) there. */
+static FXL__NOINLINE void lean_start(const fxl__tri_t *tri, int32_t x, int32_t dY, fxl__lean_t *s, const int with_z)
+{
+    const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
+    fxl__pt_t pt;
+    s->sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
+    s->su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
+    s->sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
+    s->sz = with_z ? (uint64_t)fxl__plane_eval(&tri->z, dX, dY) : 0u;
+    s->z = with_z ? fast_z((int64_t)s->sz) : 0u;
+    fast_correct(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
+    s->u = pt.u;
+    s->v = pt.v;
+}
+
 /* Runs of 1-pixel segments (exact mode, AUTO's steepest stretches): up to
  * FXL__BATCH pixels from x (s holds its planes and u, v, z), each pixel's
  * u, v into puv (pairs) and z into pz. The planes step one pixel at a time and

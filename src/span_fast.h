@@ -33,6 +33,7 @@
 #define FXL_T_LEAN FXL__CAT(FXL_T_SPAN, _lean)
 #define FXL_T_RUN FXL__CAT(FXL_T_SPAN, _run)
 #define FXL_T_PIX1 FXL__CAT(FXL_T_SPAN, _pix1)
+#define FXL_T_EXACT FXL__CAT(FXL_T_SPAN, _exact)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
@@ -378,15 +379,15 @@ static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg,
 }
 
 /* The common cases in one loop: segments on one level (no LOD per
- * segment), of 2^k >= 2 pixels, of adaptive lengths (autoseg) or of one
- * pixel (exact); autoseg and exact are constants, one copy each. The same values as the batch walk below, bit for bit;
+ * segment), of 2^k >= 2 pixels or of adaptive lengths (autoseg, a
+ * constant: one copy each). The same values as the batch walk below, bit for bit;
  * without its arrays, its per-segment level and LOD bookkeeping and its
  * walk state in memory it costs about half as many instructions a
  * segment. The correction is one call (lean_next_uv/_uvz) shared by all
  * variants; runs of 1-pixel segments (exact mode, AUTO's steep parts) go
  * to FXL_T_RUN. */
-static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, const int exact, int32_t row,
-                                     int32_t xl, int32_t xr, int32_t cl, int32_t cr)
+static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, int32_t row, int32_t xl, int32_t xr,
+                                     int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
     const int k = tri->seg_log2;
@@ -442,11 +443,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #else
 #define FXL_T_RUN_AT(x) FXL_T_RUN(tri, autoseg, FXL_T_TROW, &s, &L, px_cl, 0, x, xl, xr, cl, cr, &segments, 0)
 #endif
-    /* exact mode (its own copy, k = 0): the whole span is one run from
-     * x = cl; the fixed-length copy has no test for it */
-    if (exact)
-        x = FXL_T_RUN_AT(x);
-    while (!exact && x < cr) {
+    while (x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
 #if FXL_HAVE_AUTO
         const int ki = autoseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k;
@@ -513,10 +510,10 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #undef FXL_T_RUN_AT
 #undef FXL_T_TROW
     if (tri->stats) {
-        /* fixed lengths 2^k >= 2: one segment per 2^k pixels from the
-         * first start x0 (the last one shorter), plus the division at x0
-         * (exact mode and AUTO count theirs as they go) */
-        if (!autoseg && k > 0)
+        /* fixed lengths: one segment per 2^k pixels from the first start
+         * x0 (the last one shorter), plus the division at x0 (AUTO counts
+         * its divisions as it goes) */
+        if (!autoseg)
             segments = 1u + (uint32_t)((cr - x0 + ((int32_t)1 << k) - 1) >> k);
         tri->stats->divisions += segments;
 #if FXL_T_DEPTH
@@ -524,6 +521,31 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #else
         tri->stats->pixels += (uint32_t)(cr - cl);   /* every pixel of [cl, cr) */
 #endif
+        tri->stats->spans++;
+    }
+}
+#endif
+
+#if !FXL_T_MIPLIN
+/* Exact mode on one level: the span [cl, cr) is one run of 1-pixel
+ * segments (FXL_T_RUN) from the shared start lean_start. Out of line, so
+ * the lean walk's fixed-length copy keeps its registers. */
+static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                      int32_t cr)
+{
+    const fxl_target_t *tg = tri->target;
+    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
+    uint32_t divisions = 1, written = 0;
+    fxl__lean_t s;
+    FXL_T_LV L;
+
+    FXL_T_LV_INIT(&L, &tri->level[0]);
+    lean_start(tri, cl, row * FXL__ONE + FXL__HALF - tri->Y0, &s, FXL_T_DEPTH);
+    (void)FXL_T_RUN(tri, 0, 0, &s, &L, tg->pixels + clidx, FXL_T_DEPTH ? tg->depth + clidx : 0, cl, xl, xr, cl, cr,
+                    &divisions, &written);
+    if (tri->stats) {
+        tri->stats->divisions += divisions;
+        tri->stats->pixels += FXL_T_DEPTH ? written : (uint32_t)(cr - cl);
         tri->stats->spans++;
     }
 }
@@ -548,14 +570,14 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
         if (tri->auto_seg) {
-            FXL_T_LEAN(tri, 1, 0, row, xl, xr, cl, cr);
+            FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
             return;
         }
 #endif
         if (k == 0)
-            FXL_T_LEAN(tri, 0, 1, row, xl, xr, cl, cr);
+            FXL_T_EXACT(tri, row, xl, xr, cl, cr);
         else
-            FXL_T_LEAN(tri, 0, 0, row, xl, xr, cl, cr);
+            FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
         return;
     }
 #endif
@@ -779,6 +801,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #undef FXL_T_LEAN
 #undef FXL_T_RUN
 #undef FXL_T_PIX1
+#undef FXL_T_EXACT
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif
