@@ -590,9 +590,9 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 }
 #endif
 
-/* Exact mode's start of a span (the lean walk's prologue, out of line: one
- * copy for every variant): planes at pixel x of the row dY below the
- * reference vertex, and u, v (and z) there. */
+/* The lean walks' start of a span, out of line (one copy for every
+ * variant, ~10 instructions a span for the call): planes at pixel x of the
+ * row dY below the reference vertex, and u, v (and z) there. */
 static FXL__NOINLINE void lean_start(const fxl__tri_t *tri, int32_t x, int32_t dY, fxl__lean_t *s, const int with_z)
 {
     const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;

@@ -396,7 +396,6 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #if FXL_HAVE_AUTO
     const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
 #endif
-    int32_t dX;
     /* pixel cl of the row: inside the clip rectangle, so a valid pointer;
      * every segment writes from cl on */
     const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
@@ -415,24 +414,8 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
 #endif
     const int32_t x0 = x;
-    dX = x * FXL__ONE + FXL__HALF - tri->X0;
     FXL_T_LV_INIT(&L, &tri->level[0]);
-    s.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
-    s.su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
-    s.sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
-#if FXL_T_DEPTH
-    s.sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
-    s.z = fast_z((int64_t)s.sz);
-#else
-    s.sz = 0;
-    s.z = 0;
-#endif
-    {
-        fxl__pt_t pt;
-        fast_correct(tri, (int64_t)s.sq, (int64_t)s.su, (int64_t)s.sv, &pt);
-        s.u = pt.u;
-        s.v = pt.v;
-    }
+    lean_start(tri, x, dY, &s, FXL_T_DEPTH);
 #if FXL_HAVE_AUTO
 #define FXL_T_TROW t_row
 #else
@@ -691,6 +674,11 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
             z = cz[i];
 #endif
             b = x + n < cr ? x + n : cr;
+#if FXL_T_MIPLIN
+            /* the second level and the blend weight, when f != 0 */
+            const fxl__level_t *lv2 = 0;
+            uint32_t u2 = 0, v2 = 0, du2 = 0, dv2 = 0, f = 0;
+#endif
 #if FXL_HAVE_MIPMAP
             if (tri->nlevels > 1) {
                 const int32_t lod = clod[i];
@@ -700,44 +688,10 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
                  * is the identity ((a * 32 + 16) >> 5 = a per channel), so
                  * such segments run the one-level loop. The top level has
                  * weight 0 (the LOD is clamped to it). */
-                const uint32_t f = ((uint32_t)lod & 255u) >> 3;
+                f = ((uint32_t)lod & 255u) >> 3;
                 level = lod >> 8;
-                if (f != 0u && level + 1 < tri->nlevels) {
-                    const fxl__level_t *lv2 = &tri->level[level + 1];
-                    uint32_t du2 = shift_step_u32(du, level + 1), dv2 = shift_step_u32(dv, level + 1);
-                    uint32_t u2 = u >> (level + 1), v2 = v >> (level + 1);
-                    lv = &tri->level[level];
-                    du = shift_step_u32(du, level);
-                    dv = shift_step_u32(dv, level);
-                    u >>= level;
-                    v >>= level;
-                    /* Only the first segment can start left of the clip:
-                     * there the pixel loop starts `off` pixels in. */
-                    if (x < cl) {
-                        const uint32_t off = (uint32_t)(cl - x);
-                        a = cl;
-                        u += du * off;
-                        v += dv * off;
-                        u2 += du2 * off;
-                        v2 += dv2 * off;
-                        z += dz * off;
-                    }
-                    if (a < b) {
-                        int32_t idx = rowidx + a;
-                        if (lv != cur) {
-                            cur = lv;
-                            FXL_T_LV_INIT(&L, lv);
-                        }
-                        if (lv2 != cur2) {
-                            cur2 = lv2;
-                            FXL_T_LV_INIT(&L2, lv2);
-                        }
-                        written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz,
-                                              &L, u, v, du, dv, &L2, u2, v2, du2, dv2, f);
-                    }
-                    x += n;
-                    continue;
-                }
+                if (level + 1 >= tri->nlevels)
+                    f = 0;
 #else
                 level = (lod + 128) >> 8;
 #endif
@@ -746,14 +700,31 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
                 dv = shift_step_u32(dv, level);
                 u >>= level;
                 v >>= level;
+#if FXL_T_MIPLIN
+                if (f != 0u) {
+                    /* level + 1: the floor shifts compose, so this is the
+                     * level-0 value shifted by level + 1 */
+                    lv2 = lv + 1;
+                    du2 = shift_step_u32(du, 1);
+                    dv2 = shift_step_u32(dv, 1);
+                    u2 = u >> 1;
+                    v2 = v >> 1;
+                }
+#endif
             }
 #endif
             if (x < cl) {
+                /* Only the first segment can start left of the clip: there
+                 * the pixel loop starts `off` pixels in. */
                 const uint32_t off = (uint32_t)(cl - x);
                 a = cl;
                 u += du * off;
                 v += dv * off;
                 z += dz * off;
+#if FXL_T_MIPLIN
+                u2 += du2 * off;
+                v2 += dv2 * off;
+#endif
             }
             if (a < b) {
                 int32_t idx = rowidx + a;
@@ -762,13 +733,21 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
                     FXL_T_LV_INIT(&L, lv);
                 }
 #if FXL_T_MIPLIN
-#define FXL_T_LOOP_ONE FXL_T_LOOP1
+                if (f != 0u) {
+                    if (lv2 != cur2) {
+                        cur2 = lv2;
+                        FXL_T_LV_INIT(&L2, lv2);
+                    }
+                    written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L, u,
+                                          v, du, dv, &L2, u2, v2, du2, dv2, f);
+                } else {
+                    written += FXL_T_LOOP1(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L,
+                                           u, v, du, dv);
+                }
 #else
-#define FXL_T_LOOP_ONE FXL_T_LOOP
+                written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L, u, v,
+                                      du, dv);
 #endif
-                written += FXL_T_LOOP_ONE(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L,
-                                          u, v, du, dv);
-#undef FXL_T_LOOP_ONE
             }
             x += n;
         }
