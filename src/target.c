@@ -49,20 +49,22 @@ static int origin_ok(int32_t o)
     return o >= -FXL_TARGET_MAX_ORIGIN && o <= FXL_TARGET_MAX_ORIGIN;
 }
 
-static fxl_status_t check_target(const fxl_target_t *t)
+/* t's layout with the origin (origin_x, origin_y); t != NULL */
+static fxl_status_t check_layout_at(const fxl_target_t *t, int32_t origin_x, int32_t origin_y)
 {
-    fxl_status_t st;
-    if (t == NULL) {
-        return FXL_ERR_ARG;
-    }
-    st = check_layout(t->pixels, t->width, t->height, t->stride, (int)t->format);
+    const fxl_status_t st = check_layout(t->pixels, t->width, t->height, t->stride, (int)t->format);
     if (st != FXL_OK) {
         return st;
     }
-    if (!origin_ok(t->origin_x) || !origin_ok(t->origin_y)) {
-        return FXL_ERR_RANGE;
+    return origin_ok(origin_x) && origin_ok(origin_y) ? FXL_OK : FXL_ERR_RANGE;
+}
+
+static fxl_status_t check_target(const fxl_target_t *t)
+{
+    if (t == NULL) {
+        return FXL_ERR_ARG;
     }
-    return FXL_OK;
+    return check_layout_at(t, t->origin_x, t->origin_y);
 }
 
 static int32_t clamp_i32(int32_t v, int32_t lo, int32_t hi)
@@ -124,12 +126,9 @@ fxl_status_t fxl_target_set_origin(fxl_target_t *t, int32_t origin_x, int32_t or
         return FXL_ERR_ARG;
     }
     /* The old origin is not checked: it is being replaced. */
-    st = check_layout(t->pixels, t->width, t->height, t->stride, (int)t->format);
+    st = check_layout_at(t, origin_x, origin_y);
     if (st != FXL_OK) {
         return st;
-    }
-    if (!origin_ok(origin_x) || !origin_ok(origin_y)) {
-        return FXL_ERR_RANGE;
     }
     t->origin_x = origin_x;
     t->origin_y = origin_y;

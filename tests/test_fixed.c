@@ -115,6 +115,27 @@ static void assert_equal_i64(int64_t expected, int64_t actual, const char *what,
 #define ASSERT_STATUS(expected, actual) \
     TEST_ASSERT_EQUAL_INT_MESSAGE((int)(expected), (int)(actual), fxl_status_name(actual))
 
+/* A _sat result, a _chk status and its output against the exact rounded
+ * value ref of the same operation on (a, b), and the symmetry
+ * sat(-a, b) = -sat(a, b) where both sides are in range: the _sat value is
+ * ref clamped, the _chk value ref or FXL_ERR_RANGE with out untouched. */
+static void assert_sat_chk(int64_t ref, fxl_q16_t a, fxl_q16_t sat, fxl_q16_t sat_neg_a, fxl_status_t st,
+                           fxl_q16_t out, const char *msg)
+{
+    const int in_range = ref >= INT32_MIN && ref <= INT32_MAX;
+    TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)clamp_i32(ref), sat, msg);
+    if (in_range) {
+        ASSERT_STATUS(FXL_OK, st);
+        TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)ref, out, msg);
+    } else {
+        ASSERT_STATUS(FXL_ERR_RANGE, st);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(SENTINEL, out, msg);
+    }
+    if (a != FXL_Q16_MIN && in_range && ref != INT32_MIN) {
+        TEST_ASSERT_EQUAL_INT_MESSAGE(-sat, sat_neg_a, msg);
+    }
+}
+
 /* ---------------------------------------------------------------------- */
 /* Conversions                                                            */
 
@@ -318,24 +339,13 @@ static void test_mul_matches_references_on_random_values(void)
         fxl_q16_t a = rand_q16(), b = rand_q16(), out = SENTINEL;
         int64_t p = (int64_t)a * b; /* |p| <= 2^62 */
         int64_t ref = ref_round_div(p, 65536);
-        int in_range = ref >= INT32_MIN && ref <= INT32_MAX;
         fxl_status_t st = fxl_q16_mul_chk(a, b, &out);
         snprintf(msg, sizeof msg, "a=%ld b=%ld ref=%lld", (long)a, (long)b, (long long)ref);
 #if LDBL_MANT_DIG >= 64
         /* p fits the 64-bit significand, so p / 65536 is exact. */
         TEST_ASSERT_TRUE_MESSAGE((long double)ref == roundl((long double)p / 65536.0L), msg);
 #endif
-        TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)clamp_i32(ref), fxl_q16_mul_sat(a, b), msg);
-        if (in_range) {
-            ASSERT_STATUS(FXL_OK, st);
-            TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)ref, out, msg);
-        } else {
-            ASSERT_STATUS(FXL_ERR_RANGE, st);
-            TEST_ASSERT_EQUAL_INT_MESSAGE(SENTINEL, out, msg);
-        }
-        if (a != FXL_Q16_MIN && in_range && ref != INT32_MIN) {
-            TEST_ASSERT_EQUAL_INT_MESSAGE(-fxl_q16_mul_sat(a, b), fxl_q16_mul_sat(-a, b), msg);
-        }
+        assert_sat_chk(ref, a, fxl_q16_mul_sat(a, b), a != FXL_Q16_MIN ? fxl_q16_mul_sat(-a, b) : 0, st, out, msg);
     }
 }
 
@@ -446,17 +456,7 @@ static void test_div_matches_references_on_random_values(void)
                 (long double)ref == roundl((long double)a * 65536.0L / (long double)b), msg);
         }
 #endif
-        TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)clamp_i32(ref), fxl_q16_div_sat(a, b), msg);
-        if (in_range) {
-            ASSERT_STATUS(FXL_OK, st);
-            TEST_ASSERT_EQUAL_INT_MESSAGE((int32_t)ref, out, msg);
-        } else {
-            ASSERT_STATUS(FXL_ERR_RANGE, st);
-            TEST_ASSERT_EQUAL_INT_MESSAGE(SENTINEL, out, msg);
-        }
-        if (a != FXL_Q16_MIN && in_range && ref != INT32_MIN) {
-            TEST_ASSERT_EQUAL_INT_MESSAGE(-fxl_q16_div_sat(a, b), fxl_q16_div_sat(-a, b), msg);
-        }
+        assert_sat_chk(ref, a, fxl_q16_div_sat(a, b), a != FXL_Q16_MIN ? fxl_q16_div_sat(-a, b) : 0, st, out, msg);
     }
 }
 

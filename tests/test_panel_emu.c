@@ -147,40 +147,37 @@ void test_wrong_offset_table_is_caught(void)
     free(view);
 }
 
-void test_missing_bgr_flag_swaps_red_and_blue(void)
+/* One pixel (rgb565) sent to (0, 0) of `module` driven with `preset`: what
+ * the glass shows there. glass_w x glass_h is the module's glass. */
+static uint16_t glass_of_one_pixel(const char *module, const fxl_panel_preset_t *preset, uint16_t rgb565,
+                                   uint32_t glass_w, uint32_t glass_h)
 {
-    fxl_panel_preset_t rgb = fxl_ili9341_240x320;
-    uint16_t px = to_wire(0xF800u), glass_px;
-    uint16_t *glass = (uint16_t *)malloc(240u * 320u * 2u);
+    uint16_t px = to_wire(rgb565), glass_px;
+    uint16_t *glass = (uint16_t *)malloc((size_t)glass_w * glass_h * 2u);
     TEST_ASSERT_NOT_NULL(glass);
-    rgb.flags = 0;
-    start_emu("ili9341");
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &rgb, 0));
+    start_emu(module);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, preset, 0));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 1, 1));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, &px, 2));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
     panel_emu_glass(&emu, glass);
     glass_px = glass[0];
     free(glass);
-    TEST_ASSERT_EQUAL_HEX16(0x001Fu, glass_px); /* red sent, blue shown */
+    return glass_px;
+}
+
+void test_missing_bgr_flag_swaps_red_and_blue(void)
+{
+    fxl_panel_preset_t rgb = fxl_ili9341_240x320;
+    rgb.flags = 0;
+    TEST_ASSERT_EQUAL_HEX16(0x001Fu, glass_of_one_pixel("ili9341", &rgb, 0xF800u, 240, 320)); /* red sent, blue shown */
 }
 
 void test_missing_inversion_on_ips_glass_inverts_colours(void)
 {
     fxl_panel_preset_t plain = fxl_st7789_240x240;
-    uint16_t px = to_wire(0xF800u), glass_px;
-    uint16_t *glass = (uint16_t *)malloc(240u * 240u * 2u);
-    TEST_ASSERT_NOT_NULL(glass);
     plain.flags = 0;
-    start_emu("st7789-240x240");
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &plain, 0));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 1, 1));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, &px, 2));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
-    panel_emu_glass(&emu, glass);
-    glass_px = glass[0];
-    free(glass);
-    TEST_ASSERT_EQUAL_HEX16(0x07FFu, glass_px); /* ~0xF800 */
+    TEST_ASSERT_EQUAL_HEX16(0x07FFu, glass_of_one_pixel("st7789-240x240", &plain, 0xF800u, 240, 240)); /* ~0xF800 */
 }
 
 /* ---- address decoding ------------------------------------------------------ */
