@@ -645,6 +645,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
     for (;;) {
         fxl__pt_t pt;
         int32_t x;
+        int longer = 0;   /* a segment longer than 1 starts at x */
         m++;
         x = x0 + m;
         if (x >= cr)
@@ -656,16 +657,13 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
-        if (autoseg && !((uint32_t)(x - xl) & 1u) && fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq) != 0) {
-            s->u = pt.u;
-            s->v = pt.v;
-            break;
-        }
+        longer = autoseg && !((uint32_t)(x - xl) & 1u) && fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq) != 0;
 #endif
-        if (m == FXL__BATCH) {   /* the chunk is full; the run goes on at x */
+        if (longer || m == FXL__BATCH) {
+            /* the run ends at x, or (a full chunk) goes on there */
             s->u = pt.u;
             s->v = pt.v;
-            go_on = 1;
+            go_on = !longer;
             break;
         }
         puv[2 * m] = pt.u;
