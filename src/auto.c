@@ -56,15 +56,21 @@ static int64_t sf_fixed(fxl__sf_t a, int E)
     return fxl__asr64(a.m + ((int64_t)1 << (-sh - 1)), -sh);
 }
 
-/* The vertex test: between exact points at q0 and q1 (a fraction t along
- * the segment) linear interpolation errs by exactly
- *   t (1 - t) (u1 - u0) (q1 - q0) / q(t)  <=  |u1 - u0| |q1 - q0| / (4 q_min),
- * and perspective interpolation keeps u, v (and q) between their smallest
- * and largest vertex values. So if (range u + range v) (q_max - q_min) /
- * (4 q_min) is within the budget, less 1/16 and 1/128 texel for the exact
- * points' rounding and the q16 steps, every segment of every length is,
- * and the triangle is drawn affine span by span with no further set-up
- * (a small triangle's case: ~60 Cortex-M4 instructions instead of ~1700). */
+/* The vertex test: perspective interpolation at a point with screen-space
+ * barycentrics l_i gives u = sum m_i u_i with m_i = l_i q_i / q, q = sum
+ * l_i q_i, and the affine map gives sum l_i u_i. Their difference is
+ *   sum (m_i - l_i) (u_i - c)   for any c (both weight sets sum to 1),
+ * at most (range u / 2) * sum l_i |q_i - q| / q, and the mean absolute
+ * deviation of values within [q_min, q_max] is at most (q_max - q_min) / 2.
+ * So the whole triangle drawn affine errs by at most
+ *   (range u + range v) (q_max - q_min) / (4 q_min)   texels,
+ * the Euclidean error included. The same figure bounds the chord between
+ * any two exact points (t (1 - t) (u1 - u0) (q1 - q0) / q(t)). Where it is
+ * within the budget, less 1/16 of it and 1/128 texel for the affine walk's
+ * rounding (its re-anchoring points and q16 steps), the triangle needs no
+ * division at all. q is 1/w up to a common factor, so the vertices' inv_w
+ * serve exactly; the ranges are of the q16 vertex values, which rebasing
+ * by whole periods does not change. */
 /* hi - lo of three int32 values, exact as uint32 */
 static uint32_t range3(int32_t a, int32_t b, int32_t c)
 {
@@ -73,19 +79,27 @@ static uint32_t range3(int32_t a, int32_t b, int32_t c)
     return (uint32_t)hi - (uint32_t)lo;
 }
 
-static int vertex_test(const fxl__tri_t *tri, const fxl_vertex_t *v)
+int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v)
 {
-    /* ranges in q16 texels (normalised q16 times the level-0 size) */
-    const uint64_t d = ((uint64_t)range3(v[0].u, v[1].u, v[2].u) << tri->tex->log2_w) +
-                       ((uint64_t)range3(v[0].v, v[1].v, v[2].v) << tri->tex->log2_h);
-    const int64_t qmin = tri->q_min >> FXL__PF;   /* vertex q, < 2^31 */
-    const int64_t dq = (tri->q_max >> FXL__PF) - qmin;
-    int64_t b = tri->draw->auto_budget > ((int32_t)1 << 24) ? ((int32_t)1 << 24) : tri->draw->auto_budget;
-    b -= b / 16 + FXL_Q16_ONE / 128;
-    return d <= INT32_MAX && b > 0 && (int64_t)d * dq <= 4 * qmin * b;   /* < 2^62 and < 2^57 */
+    const fxl_texture_t *t = d->texture;
+    /* ranges in q16 texels (normalised q16 times the level-0 size); 32 x 32
+     * multiplies, not 64-bit shifts (one UMULL, one UMLAL on a Cortex-M) */
+    const uint64_t duv = (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
+                         (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
+    const uint32_t w0 = v[0].inv_w, w1 = v[1].inv_w, w2 = v[2].inv_w;
+    const uint32_t qmin = w0 < w1 ? (w0 < w2 ? w0 : w2) : (w1 < w2 ? w1 : w2);
+    const uint32_t qmax = w0 > w1 ? (w0 > w2 ? w0 : w2) : (w1 > w2 ? w1 : w2);
+    /* the budget (> 0, check_draw) capped at 256 texels, less the margins */
+    uint32_t b = d->auto_budget > ((int32_t)1 << 24) ? (uint32_t)1 << 24 : (uint32_t)d->auto_budget;
+    if (b <= (b >> 4) + FXL_Q16_ONE / 128)
+        return 0;
+    b -= (b >> 4) + FXL_Q16_ONE / 128;
+    /* duv < 2^31 and qmax - qmin < 2^32: the product < 2^63; the right side
+     * < 2^2 * 2^32 * 2^24 */
+    return duv <= INT32_MAX && duv * (qmax - qmin) <= 4u * ((uint64_t)qmin * b);
 }
 
-void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3], const int32_t Y[3])
+void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
      * u in texels = (S / q) * 2^(shift_u + log2_w - 16). */
@@ -104,10 +118,6 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3],
     w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px */
     while (cap < 8 && ((int32_t)1 << cap) < w)
         cap++;
-    if (vertex_test(tri, v)) {
-        tri->seg_log2 = cap;
-        return;
-    }
     qx = fxl__sf_make(qx_g, 0);
     q0 = fxl__sf_make(tri->q.c, 0);
     qy = fxl__sf_make(tri->q.gy, 0);

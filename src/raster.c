@@ -95,9 +95,9 @@ static int32_t first_row_at(int32_t Y)
     return (int32_t)fxl__asr64((int64_t)Y - FXL__HALF + FXL__ONE - 1, FXL__S);
 }
 
-static int32_t seg_log2_for(const fxl_draw_t *d)
+static int32_t seg_log2_for(int32_t p)
 {
-    int32_t p = d->persp, k = 0;
+    int32_t k = 0;
     /* Affine still re-anchors every FXL_PERSP_MAX pixels: q is constant so a
      * correction is just the linear value, but it stops the truncated q16
      * step (< 2^-16 texel per pixel) from accumulating across spans that run
@@ -261,7 +261,14 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.target = target;
     tri.stats = stats;
     tri.affine = draw->persp == FXL_PERSP_AFFINE;
-    tri.seg_log2 = seg_log2_for(draw);
+#if FXL_HAVE_AUTO
+    /* AUTO: where the vertex bound holds, no division is needed (auto.c).
+     * Gouraud colours stay perspective-correct: the budget is in texels. */
+    if (draw->persp == FXL_PERSP_AUTO && draw->texture && draw->shade != FXL_SHADE_GOURAUD &&
+        fxl__auto_affine(draw, v))
+        tri.affine = 1;
+#endif
+    tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.auto_seg = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
@@ -282,8 +289,8 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     if (st != FXL_OK)
         return st;
 #if FXL_HAVE_AUTO
-    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv)
-        fxl__auto_setup(&tri, v, X, Y);
+    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
+        fxl__auto_setup(&tri, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

@@ -63,6 +63,16 @@ typedef struct fxl__level {
 /* Plane slots of a correction point: q, z, then the attributes. */
 enum { FXL__PQ = 0, FXL__PZ = 1, FXL__PA = 2, FXL__NPLANES = FXL__PA + FXL__NATTR };
 
+/* Exact perspective division at one point: attribute plane value `av` over
+ * q plane value `qv` (> 0), scaled by 2^(shift) where shift = a_shift + the
+ * caller's output scale; returns the 64-bit result (modular when it does not
+ * fit). See span.c for the error bound. */
+typedef struct fxl__recip {
+    uint32_t r;    /* ~ 2^62 / qn */
+    int n;         /* qv ~ qn * 2^(32 - n) */
+} fxl__recip_t;
+/* fxl__recip() and fxl__persp() are inline in persp.h. */
+
 /* Everything the span loops need for one triangle. */
 typedef struct fxl__tri {
     const fxl_draw_t *draw;
@@ -79,6 +89,10 @@ typedef struct fxl__tri {
     uint8_t signed_u, signed_v;  /* clamp/border axes hold saturated int32 coordinates */
     int64_t q_min;               /* smallest vertex q in plane units (clamp floor) */
     int64_t q_max;               /* largest vertex q in plane units */
+    /* q the same everywhere (affine mode, a face parallel to the screen):
+     * every correction point's 1/q is 1/q_min, computed once */
+    uint8_t q_const;
+    fxl__recip_t rc_qmin;        /* fxl__recip(q_min), with q_const */
 
     int seg_log2;                /* log2 of the segment length; -1: whole span */
     /* FXL_PERSP_AUTO per segment (auto.c, auto.h): with auto_seg set, each
@@ -171,24 +185,19 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
                         const int32_t Y[3], int64_t det);
 int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y);
 
-/* Exact perspective division at one point: attribute plane value `av` over
- * q plane value `qv` (> 0), scaled by 2^(shift) where shift = a_shift + the
- * caller's output scale; returns the 64-bit result (modular when it does not
- * fit). See span.c for the error bound. */
-typedef struct fxl__recip {
-    uint32_t r;    /* ~ 2^62 / qn */
-    int n;         /* qv ~ qn * 2^(32 - n) */
-} fxl__recip_t;
-/* fxl__recip() and fxl__persp() are inline in persp.h. */
 
 /* Edges (edge.c). */
 void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row);
 void fxl__edge_step(fxl__edge_t *e);
 
-/* FXL_PERSP_AUTO (auto.c), after fxl__setup; X, Y are the snapped vertices:
- * sets seg_log2 (0..8) when one length suits the whole triangle, else
- * auto_seg and the per-row terms of auto.h. */
-void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t *v, const int32_t X[3], const int32_t Y[3]);
+/* FXL_PERSP_AUTO (auto.c). Before set-up: does the vertex bound prove the
+ * triangle within d->auto_budget drawn affine (d has a texture)? Then it
+ * is set up as FXL_PERSP_AFFINE. Otherwise fxl__auto_setup, after
+ * fxl__setup (X, Y are the snapped vertices), sets seg_log2 (0..8) when
+ * one length suits the whole triangle, else auto_seg and the per-row terms
+ * of auto.h. */
+int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v);
+void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);

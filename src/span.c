@@ -258,6 +258,23 @@ static inline uint32_t sat_i32_bits(int64_t x)
     return (uint32_t)(x < 0 ? (uint64_t)x + ((uint64_t)1 << 32) : (uint64_t)x);
 }
 
+/* 1/q at a correction point, q clamped below at q_min: inside the triangle
+ * q >= q_min, and the clamp keeps a rounding overshoot at a sliver's tip
+ * from reaching zero. A constant q takes the reciprocal set-up computed
+ * (the same value: the clamp makes it q_min's), which spares affine mode
+ * and faces parallel to the screen the division. */
+static FXL__ALWAYS_INLINE void recip_at(const fxl__tri_t *tri, int64_t q, fxl__recip_t *rc)
+{
+    if (q <= tri->q_min) {
+        if (tri->q_const) {
+            *rc = tri->rc_qmin;
+            return;
+        }
+        q = tri->q_min;
+    }
+    fxl__recip(q, rc);
+}
+
 static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], point_t *pt)
 {
     fxl__recip_t rc;
@@ -268,11 +285,7 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     pt->z = FXL_HAVE_DEPTH ? sat_u32(pv[PZ] >> FXL__PF) : 0u;
     if (tri->np <= PA)
         return;
-    /* Inside the triangle q >= q_min; the clamp keeps a rounding overshoot
-     * at a sliver's tip from reaching zero. */
-    if (q < tri->q_min)
-        q = tri->q_min;
-    fxl__recip(q, &rc);
+    recip_at(tri, q, &rc);
     if (tri->stats)
         tri->stats->divisions++;
     if (fxl__has_uv(tri)) {
@@ -496,20 +509,17 @@ typedef struct fxl__walk {
 /* u, v at a correction point from the q, u, v plane values: correct() for
  * the fast case, inline (it is most of a segment's cost). The walk counts
  * the divisions and computes z (fast_z) only where it has a depth buffer.
- * fast_correct_batch is the copy the batch loops use, forced inline where
- * code size allows (the adaptive batch is out of line: a call there cost
- * ~25 Cortex-M4 instructions a segment). */
-static FXL__UNSWITCH void fast_correct_batch(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
-                                             fxl__pt_t *pt)
+ * fast_correct_rc is its part after 1/q. fast_correct_batch is the copy
+ * the batch loops use, forced inline where code size allows (the adaptive
+ * batch is out of line: a call there cost ~25 Cortex-M4 instructions a
+ * segment); it clamps q without recip_at's test for a constant q, which
+ * cost the fixed-length walks, where it was inlined, ~6 instructions a
+ * segment in spills. */
+static FXL__ALWAYS_INLINE void fast_correct_rc(const fxl__tri_t *tri, const fxl__recip_t *rc, int64_t su, int64_t sv,
+                                               fxl__pt_t *pt)
 {
-    fxl__recip_t rc;
-    int64_t u, v;
-
-    if (q < tri->q_min)
-        q = tri->q_min;
-    fxl__recip(q, &rc);
-    u = fxl__persp_e(su, &rc, tri->persp_eb[0]);
-    v = fxl__persp_e(sv, &rc, tri->persp_eb[1]);
+    const int64_t u = fxl__persp_e(su, rc, tri->persp_eb[0]);
+    const int64_t v = fxl__persp_e(sv, rc, tri->persp_eb[1]);
     pt->u = (uint32_t)(uint64_t)u;
     pt->v = (uint32_t)(uint64_t)v;
 #if FXL_HAVE_MIPMAP
@@ -518,10 +528,24 @@ static FXL__UNSWITCH void fast_correct_batch(const fxl__tri_t *tri, int64_t q, i
 #endif
 }
 
+static FXL__UNSWITCH void fast_correct_batch(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
+                                             fxl__pt_t *pt)
+{
+    fxl__recip_t rc;
+    if (q < tri->q_min)
+        q = tri->q_min;
+    fxl__recip(q, &rc);
+    fast_correct_rc(tri, &rc, su, sv, pt);
+}
+
+/* The same values with recip_at: for the out-of-line starts and ends of
+ * the lean walks' segments, where a constant q (affine mode) is common. */
 static FXL__ALWAYS_INLINE void fast_correct(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
                                             fxl__pt_t *pt)
 {
-    fast_correct_batch(tri, q, su, sv, pt);
+    fxl__recip_t rc;
+    recip_at(tri, q, &rc);
+    fast_correct_rc(tri, &rc, su, sv, pt);
 }
 
 /* sat_u32(z >> PF) of correct(): a negative value (rounding at a sliver)
@@ -571,7 +595,7 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
     }
     /* the batch walk's correction; its 64-bit copies for the LOD are
      * dead here and optimised away */
-    fast_correct_batch(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
+    fast_correct(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
     if (with_z)
@@ -994,6 +1018,9 @@ void fxl__span_setup(fxl__tri_t *tri)
         tri->gpx[i] = (int64_t)g;
         tri->gpxN[i] = (int64_t)(g << k);
     }
+    tri->q_const = tri->q.gx == 0 && tri->q.gy == 0;
+    if (tri->q_const)
+        fxl__recip(tri->q_min, &tri->rc_qmin);
     tri->fast_id = 0;
     if (fxl__has_uv(tri)) {
         tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);

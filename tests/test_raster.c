@@ -626,11 +626,13 @@ void test_subdivided_modes_within_derived_bound_and_affine_is_worse(void)
 /* ---- adaptive perspective --------------------------------------------------- */
 
 static int probe_seg_len_max;
+static int probe_affine;   /* the last triangle was set up affine */
 static uint32_t probe_seg_len(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     (void)s;
     if (tri->seg_log2 > probe_seg_len_max)
         probe_seg_len_max = tri->seg_log2;
+    probe_affine = tri->affine;
     return probe_seg(tri, s);
 }
 
@@ -786,12 +788,13 @@ void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
     }
 }
 
-/* FXL_PERSP_AUTO's vertex test (auto.c) draws a triangle affine span by
- * span when (range u + range v) (q_max - q_min) / (4 q_min) is within the
- * budget. Small random triangles whose vertex bound lies from 1/8 to 8
- * times the budget: every pixel stays within the budget, and the test
- * accepts a fair share of them (each accepted triangle has spans of up to
- * 24 px drawn as one affine segment: its error is the bound's to keep). */
+/* FXL_PERSP_AUTO's vertex test (auto.c) draws a triangle affine, with no
+ * division, when (range u + range v) (q_max - q_min) / (4 q_min) is within
+ * the budget less its margins (1/16 of it and 1/128 texel). Small random
+ * triangles whose vertex bound lies from 1/8 to 8 times the budget: every
+ * pixel stays within the budget; the test accepts every triangle whose
+ * bound is clearly inside (and then draws it exactly as FXL_PERSP_AFFINE
+ * does), none whose bound is over the budget, and a fair share in all. */
 void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
 {
     static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
@@ -845,7 +848,33 @@ void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
             if (probe_seg_len_max < 0)
                 continue;   /* nothing covered */
             drawn++;
-            accepted += bound <= budgets[b] / 65536.0 * 0.9;
+            accepted += probe_affine;
+            snprintf(msg, sizeof msg, "budget %.4f tri %d: vertex bound %.4f, set up affine %d", budgets[b] / 65536.0,
+                     i, bound, probe_affine);
+            /* the double-precision bound of the unrounded vertices, with
+             * 10% for the q16 rounding of u, v and inv_w */
+            if (bound <= 0.9 * (budgets[b] / 65536.0 * 15 / 16 - 1.0 / 128))
+                TEST_ASSERT_TRUE_MESSAGE(probe_affine, msg);
+            if (bound >= 1.1 * budgets[b] / 65536.0)
+                TEST_ASSERT_TRUE_MESSAGE(!probe_affine, msg);
+            if (probe_affine) {
+                /* the same pixels, u and v as FXL_PERSP_AFFINE */
+                static double au[320 * 240], av[320 * 240];
+                memcpy(au, probe_u, sizeof au);
+                memcpy(av, probe_v, sizeof av);
+                d.persp = FXL_PERSP_AFFINE;
+                probe_target(&t, buf, 320, 240);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_len));
+                d.persp = FXL_PERSP_AUTO;
+                for (y = 0; y < 240; y++)
+                    for (x = 0; x < 320; x++)
+                        if (probe_count[y * 320 + x] &&
+                            (au[y * 320 + x] != probe_u[y * 320 + x] || av[y * 320 + x] != probe_v[y * 320 + x]))
+                            TEST_FAIL_MESSAGE(msg);
+                /* redraw AUTO's for the error check below */
+                probe_target(&t, buf, 320, 240);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_len));
+            }
             for (y = 0; y < 240; y++)
                 for (x = 0; x < 320; x++)
                     if (probe_count[y * 320 + x]) {
@@ -861,7 +890,7 @@ void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
             TEST_ASSERT_TRUE_MESSAGE(e_max <= budgets[b] / 65536.0, msg);
         }
     }
-    snprintf(msg, sizeof msg, "%d triangles drawn, %d within the vertex bound; worst error / budget %.3f", drawn,
+    snprintf(msg, sizeof msg, "%d triangles drawn, %d set up affine; worst error / budget %.3f", drawn,
              accepted, worst);
     TEST_MESSAGE(msg);
     TEST_ASSERT_TRUE_MESSAGE(drawn >= 450 && accepted >= drawn / 4, msg);
