@@ -25,11 +25,27 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d);
  * inline) */
 int64_t fxl__sdiv64_loop(int64_t n, int64_t d);
 
+/* floor(n / d) for d != 0 from 32-bit divisions (0 for d == 0). Compiled
+ * in every build so tests check it against the compiler's division. */
+uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d);
+
+/* 32-bit cores with a hardware divide (Cortex-M3/M4/M7/M33): the divisors
+ * of set-up (a triangle's doubled area in subpx^2, an edge's height) fit
+ * 32 bits below ~2^8 px of height, and two UDIVs with their corrections
+ * cost about half the runtime's general division. */
+#if !FXL_SMALL_DIV64 && defined(__ARM_FEATURE_IDIV) && UINTPTR_MAX <= 0xFFFFFFFFu
+#define FXL__DIV64_BY32 1
+#else
+#define FXL__DIV64_BY32 0
+#endif
+
 /* n / d, d != 0 */
 static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 {
 #if FXL_SMALL_DIV64
     return fxl__udiv64_loop(n, d);
+#elif FXL__DIV64_BY32
+    return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : n / d;
 #else
     return n / d;
 #endif

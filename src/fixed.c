@@ -327,6 +327,51 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
     }
 }
 
+/* floor(n / d) for a 32-bit d != 0 from 32-bit divisions (div64.h uses it
+ * on cores with a UDIV instruction, where the runtime's general 64-bit
+ * division is ~50 instructions a call). The high word first; the rest,
+ * whose quotient fits 32 bits, is long division in base 2^16 (Knuth's
+ * algorithm D for two digits): d normalised so its top bit is set, each
+ * digit estimated from the top digit of d and corrected at most twice. */
+uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d)
+{
+    uint32_t nh = (uint32_t)(n >> 32), nl = (uint32_t)n, qh, q1, q0, rhat, dn1, dn0, un1, un0, un32, un21;
+    int s;
+    if (d == 0u)
+        return 0u;
+    qh = nh / d;
+    nh -= qh * d;   /* now nh < d: the rest of the quotient fits 32 bits */
+    if (nh == 0u)
+        return ((uint64_t)qh << 32) | (nl / d);
+    s = fxl_clz32(d);
+    d <<= s;
+    un32 = s ? (nh << s) | (nl >> (32 - s)) : nh;   /* < d */
+    nl <<= s;
+    dn1 = d >> 16;
+    dn0 = d & 0xFFFFu;
+    un1 = nl >> 16;
+    un0 = nl & 0xFFFFu;
+    /* q1 * dn0 is only formed once q1 < 2^16, and rhat < 2^16 there */
+    q1 = un32 / dn1;
+    rhat = un32 - q1 * dn1;
+    while (q1 > 0xFFFFu || q1 * dn0 > ((rhat << 16) | un1)) {
+        q1--;
+        rhat += dn1;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    un21 = (un32 << 16) + un1 - q1 * d;   /* the remainder, < d: exact modulo 2^32 */
+    q0 = un21 / dn1;
+    rhat = un21 - q0 * dn1;
+    while (q0 > 0xFFFFu || q0 * dn0 > ((rhat << 16) | un0)) {
+        q0--;
+        rhat += dn1;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    return ((uint64_t)qh << 32) | (q1 << 16) | q0;
+}
+
 /* ------------------------------------------------------------------------ */
 /* 64-bit rounded and floored division                                      */
 

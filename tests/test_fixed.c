@@ -778,6 +778,40 @@ static void test_udiv64_loop_matches_c_division(void)
     }
 }
 
+/* The 64 / 32 division Cortex-M builds with UDIV use: exact against C's
+ * division at the edges of both words and of its digit corrections, and on
+ * random values of every bit length. */
+static void check_udiv64_by32(uint64_t n, uint32_t d)
+{
+    snprintf(msg, sizeof msg, "n=%llu d=%lu", (unsigned long long)n, (unsigned long)d);
+    TEST_ASSERT_TRUE_MESSAGE(fxl__udiv64_by32(n, d) == n / d, msg);
+}
+
+static void test_udiv64_by32_matches_c_division(void)
+{
+    static const uint64_t en[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu,
+                                  (uint64_t)1 << 32, ((uint64_t)1 << 32) + 1u, 0xFFFF0000FFFF0000u,
+                                  0x8000000000000000u, 0x7FFFFFFFFFFFFFFFu, UINT64_MAX - 1u, UINT64_MAX};
+    static const uint32_t ed[] = {1u, 2u, 3u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu,
+                                  0x80000000u, 0x80000001u, 0xFFFF0001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    const int nn = (int)(sizeof en / sizeof en[0]), nd = (int)(sizeof ed / sizeof ed[0]);
+    int i, j;
+    for (i = 0; i < nn; i++)
+        for (j = 0; j < nd; j++) {
+            check_udiv64_by32(en[i], ed[j]);
+            /* a quotient digit one above and below each multiple */
+            check_udiv64_by32(en[i] / ed[j] * ed[j] + ed[j] - 1u, ed[j]);
+        }
+    TEST_ASSERT_TRUE(fxl__udiv64_by32(5u, 0u) == 0u);
+    lcg_seed(0xB32D1Fu);
+    for (i = 0; i < RANDOM_ITERS; i++) {
+        const uint64_t n = rand64() >> (lcg_next() >> 26);
+        const uint32_t d = (uint32_t)(rand64() >> (32 + (lcg_next() >> 27)));
+        if (d != 0u)
+            check_udiv64_by32(n, d);
+    }
+}
+
 static void check_sdiv64_loop(int64_t n, int64_t d)
 {
     snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
@@ -854,6 +888,7 @@ int main(void)
 #endif
     RUN_TEST(test_div64_by_zero_saturates_instead_of_trapping);
     RUN_TEST(test_udiv64_loop_matches_c_division);
+    RUN_TEST(test_udiv64_by32_matches_c_division);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }
