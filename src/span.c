@@ -402,7 +402,7 @@ static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v6
     fxl__sf_t u, v, rq;
     int32_t lx, ly;
 
-    fxl__recip(qv < tri->q_min ? tri->q_min : qv, &rc);
+    recip_at(tri, qv, &rc);
     /* 1 / q = r * 2^-62 * 2^-(32 - n) */
     rq = fxl__sf_make((int64_t)rc.r, rc.n - 94);
     u = fxl__sf_make(u64, 0);
