@@ -327,15 +327,30 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
     }
 }
 
+/* One base-2^16 digit of Knuth's algorithm D: the quotient digit of
+ * (un << 16 | next) / d for un < d, d normalised (top bit set) with top
+ * digit dn1 and low digit dn0; estimated from dn1, corrected at most twice.
+ * q * dn0 is only formed once q < 2^16, and rhat < 2^16 there. */
+static uint32_t udiv_digit(uint32_t un, uint32_t next, uint32_t dn1, uint32_t dn0)
+{
+    uint32_t q = un / dn1, rhat = un - q * dn1;
+    while (q > 0xFFFFu || q * dn0 > ((rhat << 16) | next)) {
+        q--;
+        rhat += dn1;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    return q;
+}
+
 /* floor(n / d) for a 32-bit d != 0 from 32-bit divisions (div64.h uses it
  * on cores with a UDIV instruction, where the runtime's general 64-bit
  * division is ~50 instructions a call). The high word first; the rest,
- * whose quotient fits 32 bits, is long division in base 2^16 (Knuth's
- * algorithm D for two digits): d normalised so its top bit is set, each
- * digit estimated from the top digit of d and corrected at most twice. */
+ * whose quotient fits 32 bits, is long division in base 2^16 (two digits
+ * of algorithm D) by d normalised so its top bit is set. */
 uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d)
 {
-    uint32_t nh = (uint32_t)(n >> 32), nl = (uint32_t)n, qh, q1, q0, rhat, dn1, dn0, un1, un0, un32, un21;
+    uint32_t nh = (uint32_t)(n >> 32), nl = (uint32_t)n, qh, q1, q0, un32, un21;
     int s;
     if (d == 0u)
         return 0u;
@@ -347,28 +362,9 @@ uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d)
     d <<= s;
     un32 = s ? (nh << s) | (nl >> (32 - s)) : nh;   /* < d */
     nl <<= s;
-    dn1 = d >> 16;
-    dn0 = d & 0xFFFFu;
-    un1 = nl >> 16;
-    un0 = nl & 0xFFFFu;
-    /* q1 * dn0 is only formed once q1 < 2^16, and rhat < 2^16 there */
-    q1 = un32 / dn1;
-    rhat = un32 - q1 * dn1;
-    while (q1 > 0xFFFFu || q1 * dn0 > ((rhat << 16) | un1)) {
-        q1--;
-        rhat += dn1;
-        if (rhat > 0xFFFFu)
-            break;
-    }
-    un21 = (un32 << 16) + un1 - q1 * d;   /* the remainder, < d: exact modulo 2^32 */
-    q0 = un21 / dn1;
-    rhat = un21 - q0 * dn1;
-    while (q0 > 0xFFFFu || q0 * dn0 > ((rhat << 16) | un0)) {
-        q0--;
-        rhat += dn1;
-        if (rhat > 0xFFFFu)
-            break;
-    }
+    q1 = udiv_digit(un32, nl >> 16, d >> 16, d & 0xFFFFu);
+    un21 = (un32 << 16) + (nl >> 16) - q1 * d;   /* the remainder, < d: exact modulo 2^32 */
+    q0 = udiv_digit(un21, nl & 0xFFFFu, d >> 16, d & 0xFFFFu);
     return ((uint64_t)qh << 32) | (q1 << 16) | q0;
 }
 
