@@ -260,15 +260,6 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.tex = draw->texture;
     tri.target = target;
     tri.stats = stats;
-    tri.affine = draw->persp == FXL_PERSP_AFFINE;
-#if FXL_HAVE_AUTO
-    /* AUTO: where the vertex bound holds, no division is needed (auto.c).
-     * Gouraud colours stay perspective-correct: the budget is in texels. */
-    if (draw->persp == FXL_PERSP_AUTO && draw->texture && draw->shade != FXL_SHADE_GOURAUD &&
-        fxl__auto_affine(draw, v))
-        tri.affine = 1;
-#endif
-    tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.auto_seg = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
@@ -281,6 +272,14 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.has_color = draw->shade == FXL_SHADE_GOURAUD;
     tri.signed_u = tri.tex && tri.tex->wrap_u >= FXL_WRAP_CLAMP;
     tri.signed_v = tri.tex && tri.tex->wrap_v >= FXL_WRAP_CLAMP;
+    tri.affine = draw->persp == FXL_PERSP_AFFINE;
+#if FXL_HAVE_AUTO
+    /* AUTO: where the vertex bound holds, no division is needed (auto.c).
+     * Gouraud colours stay perspective-correct: the budget is in texels. */
+    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.has_color && fxl__auto_affine(draw, v))
+        tri.affine = 1;
+#endif
+    tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.nlevels = 0;
     tri.mip_linear = 0;
     if (tri.tex)

@@ -56,6 +56,16 @@ static double bound_at(double a0, double a1, double q0, double q1, double x, dou
     return bench_affine_bound(L, fabs(du), q, q1);
 }
 
+/* The brute-force chord error of one segment and the bound taken at the
+ * larger of its two ends; msg describes both. */
+static void chord_and_bound(double a0, double a1, double q0, double q1, double L, double *e, double *b,
+                            char *msg, size_t msg_size)
+{
+    *b = fmax(bound_at(a0, a1, q0, q1, 0, L), bound_at(a0, a1, q0, q1, L, L));
+    *e = chord_error(a0, a1, q0, q1, L);
+    snprintf(msg, msg_size, "chord error %.6g, bound %.6g", *e, *b);
+}
+
 void test_affine_bound_holds_and_is_tight_for_gentle_perspective(void)
 {
     /* Bound from u'' = -2 u' q' / q and the chord error L^2/8 max|u''|.
@@ -63,11 +73,9 @@ void test_affine_bound_holds_and_is_tight_for_gentle_perspective(void)
      * its maximum. For L q'/q = 16 * 0.002 = 0.032 the curvature changes by
      * about 3 * 3.2 % across the segment, so the brute-force error must be
      * within 10 % below the bound. */
-    const double a0 = 8.0, a1 = 0.5, q0 = 1.0, q1 = -0.002, L = 16.0;
-    double b = fmax(bound_at(a0, a1, q0, q1, 0, L), bound_at(a0, a1, q0, q1, L, L));
-    double e = chord_error(a0, a1, q0, q1, L);
+    double e, b;
     char msg[120];
-    snprintf(msg, sizeof msg, "chord error %.6g, bound %.6g", e, b);
+    chord_and_bound(8.0, 0.5, 1.0, -0.002, 16.0, &e, &b, msg, sizeof msg);
     TEST_ASSERT_TRUE_MESSAGE(e <= b, msg);
     TEST_ASSERT_TRUE_MESSAGE(e >= 0.9 * b, msg);
     /* Quadratic in L: doubling L quadruples the bound. */
@@ -80,11 +88,9 @@ void test_affine_bound_holds_and_is_tight_for_gentle_perspective(void)
 void test_affine_bound_holds_for_steep_perspective(void)
 {
     /* Far/near ratio 1:5 across one segment: no longer tight, still a bound. */
-    const double a0 = 0.0, a1 = 1.0, q0 = 1.0, q1 = -0.05, L = 16.0;
-    double b = fmax(bound_at(a0, a1, q0, q1, 0, L), bound_at(a0, a1, q0, q1, L, L));
-    double e = chord_error(a0, a1, q0, q1, L);
+    double e, b;
     char msg[120];
-    snprintf(msg, sizeof msg, "chord error %.6g, bound %.6g", e, b);
+    chord_and_bound(0.0, 1.0, 1.0, -0.05, 16.0, &e, &b, msg, sizeof msg);
     TEST_ASSERT_TRUE_MESSAGE(e <= b, msg);
 }
 

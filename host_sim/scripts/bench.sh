@@ -52,17 +52,25 @@ fe_ir=""
 fe_pid=""
 if have valgrind; then
     host_ir="$hostw/host_ir.txt"
+    # cg_dumps OUT PREFIX [TAG]: one line "name words... total [TAG]" per
+    # callgrind dump OUT.N that a client request named PREFIX<name>
+    # (slashes in the name become spaces)
+    cg_dumps() {
+        local f name tot
+        for f in "$1".*; do
+            name=$(sed -n "s|^desc: Trigger: Client Request: $2||p" "$f")
+            tot=$(sed -n 's/^totals: //p;s/^summary: //p' "$f" | head -n 1)
+            [ -n "$name" ] && [ -n "$tot" ] && echo "${name//\// } $tot${3:+ $3}"
+        done
+        return 0
+    }
     say "callgrind: every configuration, draw calls only (background)"
     (
         rm -f "$hostw"/cg.out*
         valgrind --tool=callgrind --collect-atstart=no --toggle-collect=fxl_draw_triangle \
             --callgrind-out-file="$hostw/cg.out" "$bench" draw >"$hostw/draw.txt" 2>"$hostw/valgrind.log"
         if grep -q '^# client requests: yes' "$hostw/draw.txt"; then
-            for f in "$hostw"/cg.out.*; do
-                name=$(sed -n 's/^desc: Trigger: Client Request: //p' "$f")
-                tot=$(sed -n 's/^totals: //p;s/^summary: //p' "$f" | head -n 1)
-                [ -n "$name" ] && [ -n "$tot" ] && echo "${name//\// } $tot callgrind"
-            done >"$host_ir"
+            cg_dumps "$hostw/cg.out" "" callgrind >"$host_ir"
         else
             # No valgrind headers at build time: one process per configuration.
             : >"$host_ir"
@@ -83,11 +91,7 @@ if have valgrind; then
             --callgrind-out-file="$hostw/fe.out" "$bench" frontend-run >"$hostw/fe_run.txt" 2>"$hostw/fe_valgrind.log"
         : >"$fe_ir"
         if grep -q '^# client requests: yes' "$hostw/fe_run.txt"; then
-            for f in "$hostw"/fe.out.*; do
-                name=$(sed -n 's/^desc: Trigger: Client Request: fe\///p' "$f")
-                tot=$(sed -n 's/^totals: //p;s/^summary: //p' "$f" | head -n 1)
-                [ -n "$name" ] && [ -n "$tot" ] && echo "${name//\// } $tot"
-            done >"$fe_ir"
+            cg_dumps "$hostw/fe.out" "fe/" >"$fe_ir"
         fi
     ) &
     fe_pid=$!
