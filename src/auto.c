@@ -22,6 +22,7 @@
 
 #if FXL_HAVE_AUTO
 #include "sfloat.h"
+#include "auto.h"
 
 /* Longest log2 L <= cap with L^2 / 4 * 2^lg <= budget. */
 static int fit_log2(int32_t lg, int32_t lb, int cap)
@@ -32,6 +33,21 @@ static int fit_log2(int32_t lg, int32_t lb, int cap)
     if (k < 0)
         return 0;
     k >>= 8;
+    return k > cap ? cap : (int)k;
+}
+
+/* Longest log2 L <= cap with 0.0482 L^3 2^lg <= budget (quadratic
+ * segments, auto.h): 3 log2 L <= log2 budget + log2(12 sqrt 3) - lg, that
+ * constant (4.377) rounded down to 1120/256, less margins for the log2
+ * table (budget -1, |q_x|^2 +4, q_min^4 -4, |N| -1 steps). The budget
+ * has already given up 1/16 of itself and 1/64 texel for the exact ends
+ * and the fixed-point steps (fxl__quad_steps). */
+static int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
+{
+    int32_t k = lbq + 1120 - lg - 10;
+    if (k < 0)
+        return 0;
+    k /= 3 * 256;
     return k > cap ? cap : (int)k;
 }
 
@@ -108,9 +124,11 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
     fxl__sf_t qx, q0, qy, A[2], B[2], n[3][2];
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, w;
-    int i, j, cap = 0, k, E;
+    int i, j, cap = 0, k, E, quad;
+    int32_t lbq;
 
     tri->auto_seg = 0;
+    tri->auto_quad = 0;
     tri->seg_log2 = 8;
     if (!fxl__has_uv(tri) || qx_g == 0)
         return;   /* constant depth along every span: affine is exact */
@@ -150,9 +168,35 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     {
         /* Per segment pays ~40-70 Cortex-M4 instructions a segment for
          * the bound; it only wins where q varies enough that the longest
-         * allowed length (at the largest vertex q) is 4x the shortest. */
-        const int32_t lg = lqx + lnmax / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
-        if (fit_log2(lg, lb, cap) < k + 2)
+         * allowed length (at the largest vertex q) is 4x the one the whole
+         * triangle allows. */
+        const int32_t lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
+        const int32_t lqmax = fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
+        int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, cap);
+        /* Quadratic segments (auto.h) on repeat and mirror axes (modular
+         * coordinates: a parabola may overshoot its ends a little, which
+         * a clamped int32 coordinate must not) of a texture with one level
+         * (the walks that step several levels are affine only). */
+        const int32_t bq = tri->draw->auto_budget - (tri->draw->auto_budget >> 4) - FXL_Q16_ONE / 64;
+        lbq = bq > 0 ? fxl__log2_q8((uint64_t)bq) - 16 * 256 : 0;
+        quad = !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
+        if (quad) {
+            const int qcap = cap < FXL__QUAD_CAP ? cap : FXL__QUAD_CAP;
+            const int kq = fit_log2_quad(2 * lqx + lnmax / 2 - 4 * lqmin, lbq, qcap);
+            const int kq_max = fit_log2_quad(2 * lqx + lnmax / 2 - 4 * lqmax, lbq, qcap);
+            best_seg = kq_max > best_seg ? kq_max : best_seg;
+            if (kq > best_tri && best_seg < kq + 2) {
+                /* one quadratic length for the whole triangle */
+                tri->seg_log2 = kq;
+                tri->qx_m = qx.m;
+                tri->qx_e = qx.e;
+                tri->auto_quad = 1;
+                tri->auto_seg = 2;
+                return;
+            }
+            best_tri = kq > best_tri ? kq : best_tri;
+        }
+        if (best_seg < best_tri + 2)
             return;
     }
     /* Per segment. N is linear in Y, so inside the triangle |N_u|, |N_v| <=
@@ -182,6 +226,16 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
         const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
         const uint64_t g32 = (g + ((uint64_t)1 << FXL__PF) - 1) >> FXL__PF;
         tri->auto_gx32 = g32 > ((uint64_t)1 << 31) ? (uint32_t)1 << 31 : (uint32_t)g32;
+    }
+    if (quad) {
+        /* 3k <= lbq + log2(12 sqrt 3) - 2 log2 |q_x| - log2 |N| + 4 log2 q_min
+         * in q8 (fit_log2_quad), with the margins of the affine terms
+         * (4 log2 q_min: -4). */
+        const int32_t t0q = lbq - 1 + 1120 - 2 * (lqx + 2) - 256 * E - 4 + 4 * 256 * FXL__PF;
+        tri->auto_tq = t0q - tri->auto_t0;
+        tri->qx_m = qx.m;
+        tri->qx_e = qx.e;
+        tri->auto_quad = 1;
     }
     tri->auto_cap = (int8_t)cap;
     tri->seg_log2 = cap;

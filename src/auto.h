@@ -20,12 +20,28 @@
  * (fxl__auto_first) and cuts exactly where a walk from xl would. Bands,
  * clip rectangles and full frames agree bit for bit, and a triangle a
  * million pixels wide costs nothing left of the clip.
+ *
+ * Quadratic segments (tri->auto_quad). Between exact points L pixels apart
+ * the true coordinate is the chord plus t (1 - t) du dq / q(t) (t in [0, 1],
+ * du, dq the changes over the segment). A parabola through the same ends,
+ * chord + t (1 - t) C with C = du dq (1/q0 + 1/q1) / 2, follows that
+ * curvature; what is left is at most
+ *   t (1 - t) |du| |dq| |1/q(t) - (1/q0 + 1/q1) / 2| <= |du| d^2 / (12 sqrt 3)
+ * with d = |dq| / q_min (sup over t and over every d, checked numerically:
+ * the ratio is largest as d -> 0), so with |du| <= L |N| / q_min^2
+ *   err(L) <= 0.0482 L^3 |N| q_x^2 / q_min^4,
+ * i.e. 2^k fits  <=>  k <= (t_row + tq + 4 log2 q_min) / 3. A segment is
+ * quadratic where this allows a longer block (at most FXL__QUAD_CAP) than
+ * the affine bound; "fits" is then either bound, still inherited by
+ * sub-blocks, so the partition property above holds. fxl__auto_next
+ * returns the length with FXL__AUTO_QUAD set for such a segment.
  */
 #ifndef FIXEL_AUTO_H
 #define FIXEL_AUTO_H
 
 #include "raster_int.h"
 #include "persp.h"
+#include "div64.h"
 
 #if FXL_HAVE_AUTO
 
@@ -62,6 +78,13 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
     return tri->auto_t0 - ((fxl__log2_q8_inline(s) + 3) >> 1);
 }
 
+/* Quadratic segments: at most 2^6 pixels (the fixed-point second
+ * difference then errs by < 1/100 texel, fxl__quad_steps), and the flag
+ * fxl__auto_next adds to their log2 length. */
+#define FXL__QUAD_CAP 6
+#define FXL__AUTO_QUAD 16
+#define FXL__AUTO_LOG2(k) ((k) & (FXL__AUTO_QUAD - 1))
+
 /* Longest log2 length <= cap that the bound allows with q_min >= q32
  * (q32 = q >> PF, or a lower bound of it). */
 static inline int fxl__auto_fit(int32_t t_row, int64_t q32, int cap)
@@ -73,6 +96,20 @@ static inline int fxl__auto_fit(int32_t t_row, int64_t q32, int cap)
     if (k < 0)
         return 0;
     k >>= 9;
+    return k > cap ? cap : (int)k;
+}
+
+/* The quadratic bound's longest log2 length <= cap (t_row is the affine
+ * one's; tri->auto_tq converts it). */
+static inline int fxl__auto_fit_quad(const fxl__tri_t *tri, int32_t t_row, int64_t q32, int cap)
+{
+    int32_t k;
+    if (q32 < 256)
+        return 0;
+    k = t_row + tri->auto_tq + 4 * fxl__auto_log2_q8((uint32_t)q32);
+    if (k < 0)
+        return 0;
+    k /= 3 * 256;
     return k > cap ? cap : (int)k;
 }
 
@@ -102,12 +139,23 @@ static inline int64_t fxl__auto_q32(int64_t q)
  * end (x + 2^k, or the last pixel): bounded below by q32 - auto_gx32 * e,
  * auto_gx32 = ceil(|q_x| >> PF) per pixel. That bound of a sub-block is
  * never below its block's, so the partition property holds. */
-static inline int fxl__auto_block_fits(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xr, int64_t q32, int k)
+static inline int64_t fxl__auto_block_qmin(const fxl__tri_t *tri, int32_t x, int32_t xr, int64_t q32, int k)
 {
     const int32_t len = (int32_t)1 << k;
     const uint32_t e = (uint32_t)(xr - x > len ? len : xr - 1 - x);
-    const int64_t qe = tri->q.gx < 0 ? q32 - (int64_t)((uint64_t)tri->auto_gx32 * e) : q32;
-    return fxl__auto_fit(t_row, qe, k) >= k;
+    return tri->q.gx < 0 ? q32 - (int64_t)((uint64_t)tri->auto_gx32 * e) : q32;
+}
+
+static inline int fxl__auto_block_fits(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xr, int64_t q32, int k)
+{
+    return fxl__auto_fit(t_row, fxl__auto_block_qmin(tri, x, xr, q32, k), k) >= k;
+}
+
+/* The same for a quadratic segment (k <= FXL__QUAD_CAP). */
+static inline int fxl__auto_block_fits_quad(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xr, int64_t q32,
+                                            int k)
+{
+    return fxl__auto_fit_quad(tri, t_row, fxl__auto_block_qmin(tri, x, xr, q32, k), k) >= k;
 }
 
 /* log2 length of the segment starting at x, a segment boundary of the walk
@@ -121,10 +169,22 @@ static inline int fxl__auto_next(const fxl__tri_t *tri, int32_t t_row, int32_t x
         k = a < k ? a : k;
     }
     /* the start's q bounds every length; where q falls, the end's decides */
-    k = fxl__auto_fit(t_row, q32, k);
-    if (tri->q.gx < 0)
-        while (k > 0 && !fxl__auto_block_fits(tri, t_row, x, xr, q32, k))
-            k--;
+    {
+        const int kmax = k;
+        k = fxl__auto_fit(t_row, q32, kmax);
+        if (tri->q.gx < 0)
+            while (k > 0 && !fxl__auto_block_fits(tri, t_row, x, xr, q32, k))
+                k--;
+        if (tri->auto_quad && k < kmax) {
+            /* a longer quadratic segment? */
+            int kq = fxl__auto_fit_quad(tri, t_row, q32, kmax < FXL__QUAD_CAP ? kmax : FXL__QUAD_CAP);
+            if (tri->q.gx < 0)
+                while (kq > k && !fxl__auto_block_fits_quad(tri, t_row, x, xr, q32, kq))
+                    kq--;
+            if (kq > k)
+                return kq | FXL__AUTO_QUAD;
+        }
+    }
     return k;
 }
 
@@ -135,17 +195,95 @@ static inline int32_t fxl__auto_first(const fxl__tri_t *tri, int32_t t_row, int3
 {
     /* q at cl bounds the q_min of every block containing cl from above,
      * so no block longer than fit(q(cl)) can fit: start there */
-    int k = fxl__auto_fit(
-        t_row, fxl__auto_q32(fxl__plane_eval(&tri->q, cl * FXL__ONE + FXL__HALF - tri->X0, dY)), tri->auto_cap);
+    const int64_t qc = fxl__auto_q32(fxl__plane_eval(&tri->q, cl * FXL__ONE + FXL__HALF - tri->X0, dY));
+    int k = fxl__auto_fit(t_row, qc, tri->auto_cap);
     int32_t bs = cl;
+    if (tri->auto_quad) {
+        const int kq = fxl__auto_fit_quad(tri, t_row, qc, tri->auto_cap < FXL__QUAD_CAP ? tri->auto_cap : FXL__QUAD_CAP);
+        k = kq > k ? kq : k;
+    }
     for (; k > 0; k--) {
-        int64_t q;
+        int64_t q32;
         bs = xl + ((cl - xl) >> k << k);
-        q = fxl__plane_eval(&tri->q, bs * FXL__ONE + FXL__HALF - tri->X0, dY);
-        if (fxl__auto_block_fits(tri, t_row, bs, xr, fxl__auto_q32(q), k))
+        q32 = fxl__auto_q32(fxl__plane_eval(&tri->q, bs * FXL__ONE + FXL__HALF - tri->X0, dY));
+        if (fxl__auto_block_fits(tri, t_row, bs, xr, q32, k) ||
+            (tri->auto_quad && k <= FXL__QUAD_CAP && fxl__auto_block_fits_quad(tri, t_row, bs, xr, q32, k)))
             break;
     }
     return k ? bs : cl;
+}
+
+/* q_x / q at a correction point, q28 per pixel, from its reciprocal
+ * (1/q = r 2^(n - 94), q_x = qx_m 2^qx_e): floor(qx_m r 2^-sh) with
+ * sh = 66 - qx_e - n, saturated to int32 (a change of 8x a pixel; see
+ * fxl__quad_steps for why that is safe). */
+static inline int32_t fxl__quad_g(const fxl__tri_t *tri, const fxl__recip_t *rc)
+{
+    const int64_t prod = fxl__mul_s32(tri->qx_m, (int32_t)rc->r);   /* |prod| < 2^62 */
+    const int sh = 66 - tri->qx_e - rc->n;
+    int64_t g;
+    if (sh >= 32) {
+        /* the common case, on the high word: |hi| < 2^30 */
+        const int32_t hi = (int32_t)fxl__asr64(prod, 32);
+        return sh >= 63 ? (hi < 0 ? -1 : 0) : fxl__asr32(hi, sh - 32);
+    }
+    if (sh <= 0)
+        return prod > 0 ? INT32_MAX : (prod < 0 ? -INT32_MAX : 0);
+    g = fxl__asr64(prod, sh);
+    return g > INT32_MAX ? INT32_MAX : (g < -INT32_MAX ? -INT32_MAX : (int32_t)g);
+}
+
+/* floor(d gbar / 2^28), clamped to +-(2^30 - 1): the curvature of a segment
+ * per pixel of its length (q16 texels). Inside the bound |c1| stays
+ * below 2^25 (|du| d_q^2 <= 5.2 texels at |du| <= 2^15 texels); the clamp
+ * only keeps a saturated g's arithmetic in range. */
+static inline int32_t fxl__quad_c1(int32_t d, int32_t gbar)
+{
+    const int64_t c = fxl__asr64(fxl__mul_s32(d, gbar), 28);
+    const int32_t m = (1 << 30) - 1;
+    return c > m ? m : (c < -m ? -m : (int32_t)c);
+}
+
+/* The steps of a quadratic segment whose exact ends are len pixels apart
+ * (len = 2^k with k >= 1, or any len <= 2^FXL__QUAD_CAP with k < 0: the
+ * span's last segment): d[0], d[1] are its changes of u and v (q16
+ * texels, the short way round), g0, g1 fxl__quad_g at its ends; out
+ * receives du, ddu, dv, ddv. The parabola chord + t (1 - t) C,
+ * C = d len (g0 + g1) / 2 = c1 len, is stepped as u += du, du += dd with
+ *   dd = -2 C / len^2,  du = d / len + C (len - 1) / len^2   (the first step).
+ * For len = 2^k, c1 is first rounded down to a multiple of 2^(k-1) (then
+ * dd = -(c1 >> (k - 1)) is exact) and du = (d >> k) + c1 - (c1 >> k); all
+ * modulo 2^32, as the walk steps. The rounding of c1 moves C by < len^2/2
+ * q16 units (the parabola by < len^2/8), the two floors the far end by
+ * < 2 len: < 0.01 texel at len = 64, within the 1/64 texel auto.c
+ * reserves. The last segment divides, truncating: dd = -2 c1 / len,
+ * du = (d - dd len (len - 1) / 2) / len (< len + len^2/8 units).
+ * A saturated g only shrinks |C|, its sign kept: the error then stays
+ * below |d| d_q / (4 q_min), which the bound exceeds wherever g saturates. */
+static inline void fxl__quad_steps(const int32_t d[2], int32_t g0, int32_t g1, int32_t len, int k, uint32_t out[4])
+{
+    /* floor((g0 + g1) / 2) in 32 bits */
+    const int32_t gbar = fxl__asr32(g0, 1) + fxl__asr32(g1, 1) + (int32_t)((uint32_t)g0 & (uint32_t)g1 & 1u);
+    int i;
+    for (i = 0; i < 2; i++) {
+        const int32_t c1 = fxl__quad_c1(d[i], gbar);
+        if (k >= 1) {
+            const int32_t h = fxl__asr32(c1, k - 1);
+            out[2 * i + 1] = 0u - (uint32_t)h;
+            out[2 * i] = (uint32_t)fxl__asr32(d[i], k) + ((uint32_t)h << (k - 1)) - (uint32_t)fxl__asr32(h, 1);
+        } else if (len <= 1) {   /* no pixel between the ends */
+            out[2 * i] = len ? (uint32_t)d[i] : 0u;
+            out[2 * i + 1] = 0u;
+        } else {
+            /* |2 c1| < 2^31, len <= 64: |ddv| < 2^30, |num| < 2^31 + 2^41;
+             * a 32-bit division where num fits (the rule) */
+            const int32_t ddv = -(2 * c1 / len);
+            const int64_t num = (int64_t)d[i] - fxl__mul_s32(ddv, len * (len - 1) / 2);
+            out[2 * i + 1] = (uint32_t)ddv;
+            out[2 * i] = num >= -INT32_MAX && num <= INT32_MAX ? (uint32_t)((int32_t)num / len)
+                                                                : (uint32_t)(uint64_t)fxl__sdiv64(num, len);
+        }
+    }
 }
 
 #endif /* FXL_HAVE_AUTO */

@@ -261,6 +261,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.target = target;
     tri.stats = stats;
     tri.auto_seg = 0;
+    tri.auto_quad = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
 #if !FXL_HAVE_DEPTH

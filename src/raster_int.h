@@ -103,6 +103,13 @@ typedef struct fxl__tri {
     int32_t auto_t0;             /* q8 log2 terms of the bound common to all rows */
     int64_t auto_n[2];           /* N_u, N_v at Y0, units of 2^-29 of their largest value */
     int64_t auto_ns[2];          /* their change per subpx of Y, q16 of those units */
+    /* Second-order (quadratic) segments (auto.h, fxl__quad_steps): a
+     * segment the affine bound rejects may still fit the bound of a
+     * parabola through its exact ends, which also follows the curvature. */
+    uint8_t auto_quad;
+    int32_t auto_tq;             /* the quadratic bound's t_row minus the affine one's, q8 */
+    int32_t qx_m;                /* q_x per pixel = qx_m * 2^qx_e, |qx_m| in [2^30, 2^31) */
+    int qx_e;
     uint8_t affine;              /* q constant: no perspective */
     uint8_t depth_test, depth_write;
     uint8_t swap;                /* target stores byte-swapped RGB565 */
@@ -156,7 +163,8 @@ typedef struct fxl__seg {
     uint16_t *zb;           /* matching depth entry (NULL when no depth buffer) */
     int32_t n;              /* pixels in the run, >= 1 */
     uint32_t u, v;          /* texel coordinates at the first pixel, q16 of `level` */
-    int32_t du, dv;         /* per pixel, q16 */
+    int32_t du, dv;         /* per pixel, q16 (the first step) */
+    int32_t ddu, ddv;       /* change of du, dv per pixel: 0 but in quadratic segments */
     uint32_t z;             /* inv_w at the first pixel, u0.32 */
     int32_t dz;
     uint32_t c[3];          /* Gouraud r5, g6, b5 in q16 */
@@ -168,6 +176,16 @@ typedef struct fxl__seg {
     uint32_t lod_frac_q8;    /* weight of lvl2, 0..255 */
     int32_t lod_q8;          /* LOD used for this segment (after bias, clamp), q8 */
 } fxl__seg_t;
+
+/* Coordinate at pixel i of a segment that starts at c with step d growing
+ * by dd a pixel: c + i d + i (i - 1) / 2 dd, modulo 2^32 (the span loops
+ * step c += d, d += dd). For probes and the clipped start of a segment. */
+static inline uint32_t fxl__seg_coord(uint32_t c, int32_t d, int32_t dd, int32_t i)
+{
+    const uint32_t ui = (uint32_t)i;
+    const uint32_t tri_i = ui & 1u ? ui * ((ui - 1u) >> 1) : (ui >> 1) * (ui - 1u);
+    return c + (uint32_t)d * ui + (uint32_t)dd * tri_i;
+}
 
 /* Span loops (span.c). Each returns the number of pixels written. */
 typedef uint32_t (*fxl__seg_fn)(const fxl__tri_t *tri, const fxl__seg_t *seg);

@@ -181,6 +181,7 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
     uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;
+    uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;
     uint32_t c0 = s->c[0], c1 = s->c[1], c2 = s->c[2];
     uint32_t written = 0;
     int32_t i;
@@ -217,8 +218,10 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
                 written++;
             }
         }
-        u += (uint32_t)s->du;
-        v += (uint32_t)s->dv;
+        u += du;
+        v += dv;
+        du += (uint32_t)s->ddu;
+        dv += (uint32_t)s->ddv;
         u2 += (uint32_t)s->du2;
         v2 += (uint32_t)s->dv2;
         z += (uint32_t)s->dz;
@@ -241,6 +244,7 @@ typedef struct point {
     uint32_t a[FXL__NATTR];  /* u, v: level-0 texel q16; colours: channel q16 */
     uint32_t z;              /* inv_w, u0.32 */
     int64_t u64, v64;        /* u, v before wrapping (rebased), for derivatives */
+    int32_t g;               /* q_x / q, q28 (quadratic segments only) */
 } point_t;
 
 static inline uint32_t sat_u32(int64_t x)
@@ -288,6 +292,9 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     recip_at(tri, q, &rc);
     if (tri->stats)
         tri->stats->divisions++;
+#if FXL_HAVE_AUTO
+    pt->g = tri->auto_quad ? fxl__quad_g(tri, &rc) : 0;
+#endif
     if (fxl__has_uv(tri)) {
         int64_t u = fxl__persp(pv[PA + FXL__AU], &rc, tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         int64_t v = fxl__persp(pv[PA + FXL__AV], &rc, tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
@@ -561,6 +568,7 @@ static inline uint32_t fast_z(int64_t sz)
 typedef struct fxl__lean {
     uint64_t sq, su, sv, sz;
     uint32_t u, v, z;
+    fxl__recip_t rc;   /* 1/q there: kept by the adaptive walks (quadratic segments) */
 } fxl__lean_t;
 
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
@@ -574,9 +582,11 @@ typedef struct fxl__lean {
  * batch walk computes them. One copy out of line serves every variant: the
  * division and its 64-bit arithmetic (flattened in) get all the registers,
  * and the span functions keep theirs for the pixel loop. */
-static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z)
+static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z,
+                                    const int with_rc)
 {
     fxl__pt_t pt;
+    fxl__recip_t rc;
 
     if (mult == 0u) {
         s->sq += (uint64_t)tri->gpxN[FXL__PQ];
@@ -595,22 +605,38 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
     }
     /* the batch walk's correction; its 64-bit copies for the LOD are
      * dead here and optimised away */
-    fast_correct(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
+    recip_at(tri, (int64_t)s->sq, &rc);
+    fast_correct_rc(tri, &rc, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
+    if (with_rc)
+        s->rc = rc;
     if (with_z)
         s->z = fast_z((int64_t)s->sz);
 }
 
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 0);
+    lean_next(tri, s, mult, 0, 0);
 }
 
 #if FXL_HAVE_DEPTH
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 1);
+    lean_next(tri, s, mult, 1, 0);
+}
+#endif
+
+/* The adaptive walks' copies: they also keep 1/q (s->rc). */
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+{
+    lean_next(tri, s, mult, 0, 1);
+}
+
+#if FXL_HAVE_DEPTH
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+{
+    lean_next(tri, s, mult, 1, 1);
 }
 #endif
 
@@ -626,7 +652,8 @@ static FXL__NOINLINE void lean_start(const fxl__tri_t *tri, int32_t x, int32_t d
     s->sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
     s->sz = with_z ? (uint64_t)fxl__plane_eval(&tri->z, dX, dY) : 0u;
     s->z = with_z ? fast_z((int64_t)s->sz) : 0u;
-    fast_correct(tri, (int64_t)s->sq, (int64_t)s->su, (int64_t)s->sv, &pt);
+    recip_at(tri, (int64_t)s->sq, &s->rc);
+    fast_correct_rc(tri, &s->rc, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
 }
@@ -668,6 +695,8 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         pz[0] = s->z;
     for (;;) {
         fxl__pt_t pt;
+        fxl__recip_t rc;
+        int64_t rc_q;
         int32_t x;
         int longer = 0;   /* a segment longer than 1 starts at x */
         m++;
@@ -677,7 +706,10 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         sq += gq;
         su += gu;
         sv += gv;
-        fast_correct_batch(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
+        /* fast_correct_batch, with 1/q kept for the walk's next segment */
+        rc_q = (int64_t)sq < tri->q_min ? tri->q_min : (int64_t)sq;
+        fxl__recip(rc_q, &rc);
+        fast_correct_rc(tri, &rc, (int64_t)su, (int64_t)sv, &pt);
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
@@ -687,6 +719,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
             /* the run ends at x, or (a full chunk) goes on there */
             s->u = pt.u;
             s->v = pt.v;
+            s->rc = rc;
             go_on = !longer;
             break;
         }
@@ -1048,12 +1081,12 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     fxl__seg_t seg;
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
-    const int32_t t_row = tri->auto_seg ? fxl__auto_row(tri, Yc - tri->Y0) : 0;
+    const int32_t t_row = tri->auto_seg == 1 ? fxl__auto_row(tri, Yc - tri->Y0) : 0;
 #endif
 
     x = xl + ((cl - xl) >> k << k);      /* first segment that reaches the clip */
 #if FXL_HAVE_AUTO
-    if (tri->auto_seg && cl > xl)
+    if (tri->auto_seg == 1 && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, Yc - tri->Y0);
 #endif
     for (i = 0; i < np; i++)
@@ -1070,14 +1103,20 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     seg.dc[0] = seg.dc[1] = seg.dc[2] = 0;
     seg.u = seg.v = 0;
     seg.du = seg.dv = 0;
+    seg.ddu = seg.ddv = 0;
 
     while (x < cr) {
         int32_t n, div, a, b, off;
         int64_t du0 = 0, dv0 = 0;
-        int level = 0, full, ki = k;
+        int level = 0, full, ki = k, quad = 0;
 #if FXL_HAVE_AUTO
-        if (tri->auto_seg)
+        if (tri->auto_seg == 1) {
             ki = fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
+            quad = ki >= FXL__AUTO_QUAD;
+            ki = FXL__AUTO_LOG2(ki);
+        } else {
+            quad = tri->auto_seg == 2;   /* one quadratic length */
+        }
 #endif
         full = xr - x > ((int32_t)1 << ki);
 
@@ -1130,8 +1169,29 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             seg.lvl = &tri->level[level];
             seg.du = shift_step(du0, level);
             seg.dv = shift_step(dv0, level);
-            seg.u = shift_coord(p0.a[FXL__AU], level, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
-            seg.v = shift_coord(p0.a[FXL__AV], level, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
+            seg.ddu = seg.ddv = 0;
+#if FXL_HAVE_AUTO
+            if (quad) {
+                /* one level, repeat or mirror axes (auto.c): level 0, and
+                 * the differences are the modular ones */
+                const int32_t d[2] = {fxl__i32_of_bits(p1.a[FXL__AU] - p0.a[FXL__AU]),
+                                      fxl__i32_of_bits(p1.a[FXL__AV] - p0.a[FXL__AV])};
+                uint32_t st[4];
+                fxl__quad_steps(d, p0.g, p1.g, full ? n : div, full ? ki : -1, st);
+                const uint32_t su = st[0], ddu = st[1], sv = st[2], ddv = st[3];
+                /* the step at the first pixel drawn */
+                seg.du = fxl__i32_of_bits(su + ddu * (uint32_t)off);
+                seg.dv = fxl__i32_of_bits(sv + ddv * (uint32_t)off);
+                seg.ddu = fxl__i32_of_bits(ddu);
+                seg.ddv = fxl__i32_of_bits(ddv);
+                seg.u = fxl__seg_coord(p0.a[FXL__AU], fxl__i32_of_bits(su), seg.ddu, off);
+                seg.v = fxl__seg_coord(p0.a[FXL__AV], fxl__i32_of_bits(sv), seg.ddv, off);
+            } else
+#endif
+            {
+                seg.u = shift_coord(p0.a[FXL__AU], level, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
+                seg.v = shift_coord(p0.a[FXL__AV], level, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
+            }
 #if FXL_HAVE_MIPMAP
             if (seg.lvl2) {
                 seg.du2 = shift_step(du0, level + 1);

@@ -43,163 +43,16 @@
 #define FXL_T_LV fl_t
 #define FXL_T_LV_INIT fl_init
 #endif
-/* Forced inline for the point loops (they are small, and inline they
- * spend fewer instructions a segment); the bilinear loops are left to the
- * compiler: inlined into the lean walk they spilled more than the call
- * costs (Cortex-M4 floor subdiv16 bilinear 53.8 -> 61.8 instructions a
- * pixel). */
-#if FXL_T_BILINEAR || FXL_T_MIPLIN
-static inline
-#else
-static FXL__UNSWITCH
+#define FXL_T_LOOPFN FXL_T_LOOP
+#define FXL_T_QUAD 0
+#include "span_loop.h"
+#if !FXL_T_MIPLIN
+/* the quadratic segments' copy (AUTO, one level) */
+#define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
+#define FXL_T_LOOPFN FXL_T_QLOOP
+#define FXL_T_QUAD 1
+#include "span_loop.h"
 #endif
-uint32_t FXL_T_LOOP(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
-                                  FXL_T_LV *L, uint32_t u, uint32_t v, uint32_t du, uint32_t dv
-#if FXL_T_MIPLIN
-                                  ,
-                                  FXL_T_LV *L2, uint32_t u2, uint32_t v2, uint32_t du2, uint32_t dv2, uint32_t f
-#endif
-)
-{
-#if FXL_T_DEPTH
-    uint32_t rejected = 0;
-#else
-    (void)zb;
-    (void)z;
-    (void)dz;
-#endif
-#if FXL_T_BILINEAR
-    /* texel centres at +0.5: the half texel is taken off once here */
-    uint32_t uu = u - 0x8000u, vv = v - 0x8000u;
-#if FXL_T_MIPLIN
-    uint32_t uu2 = u2 - 0x8000u, vv2 = v2 - 0x8000u;
-#endif
-#define FXL_T_STEP() (uu += du, vv += dv)
-#if FXL_T_MIPLIN
-#define FXL_T_STEP2() (uu2 += du2, vv2 += dv2)
-#define FXL_T_TEXEL()                                                                                       \
-    compact565(lerp565x(bl_sample(L, uu, vv), bl_sample(L2, uu2, vv2), f))
-#else
-#define FXL_T_TEXEL() compact565(bl_sample(L, uu, vv))
-#endif
-#else /* point */
-    /* level constants come prepared (fl_init) */
-    const uint16_t *tex = L->tex;
-    const uint32_t lw = L->lw, shu = L->shu, mu16 = L->mu16, mv16 = L->mv16;
-    (void)shu;    /* one of shu, mu16 is unused, see FXL__IDX */
-    (void)mu16;
-    uint32_t U = FXL__IDX_TOPU ? (lw ? u << (16u - lw) : 0u) : u, V = v << lw;
-    const uint32_t dU = FXL__IDX_TOPU ? (lw ? du << (16u - lw) : 0u) : du, dV = dv << lw;
-#if FXL_T_MIPLIN
-    const uint16_t *tex2 = L2->tex;
-    const uint32_t lw2 = L2->lw, shu2 = L2->shu, mu16b = L2->mu16, mv16b = L2->mv16;
-    (void)shu2;
-    (void)mu16b;
-    uint32_t U2 = FXL__IDX_TOPU ? (lw2 ? u2 << (16u - lw2) : 0u) : u2, V2 = v2 << lw2;
-    const uint32_t dU2 = FXL__IDX_TOPU ? (lw2 ? du2 << (16u - lw2) : 0u) : du2, dV2 = dv2 << lw2;
-#define FXL_T_STEP2() (U2 += dU2, V2 += dV2)
-#define FXL_T_TEXEL()                                                                                       \
-    compact565(lerp565x(expand565(tex[FXL__IDX(U, V, shu, mu16, mv16)]),                                    \
-                        expand565(tex2[FXL__IDX(U2, V2, shu2, mu16b, mv16b)]), f))
-#else
-#define FXL_T_TEXEL() ((uint32_t)tex[FXL__IDX(U, V, shu, mu16, mv16)])
-#endif
-#define FXL_T_STEP() (U += dU, V += dV)
-#endif
-
-#if FXL_T_SWAP
-#define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
-#else
-#define FXL_T_OUT(c) ((uint16_t)(c))
-#endif
-#if FXL_T_MIPLIN
-#define FXL_T_ADVANCE() (FXL_T_STEP(), FXL_T_STEP2())
-#else
-#define FXL_T_ADVANCE() FXL_T_STEP()
-#endif
-
-#if FXL_T_DEPTH
-    /* The rejected count is kept on the rare path so the drawn one stays
-     * short. */
-#define FXL_T_PIXEL(i)                                                                                      \
-    do {                                                                                                    \
-        uint32_t zz = z >> 16;                                                                              \
-        z += dz;                                                                                            \
-        if (zz > zb[i]) {                                                                                   \
-            uint32_t c = FXL_T_TEXEL();                                                                     \
-            zb[i] = (uint16_t)zz;                                                                           \
-            dst[i] = FXL_T_OUT(c);                                                                          \
-        } else {                                                                                            \
-            rejected++;                                                                                     \
-        }                                                                                                   \
-        FXL_T_ADVANCE();                                                                                    \
-    } while (0)
-#else
-#define FXL_T_PIXEL(i)                                                                                      \
-    do {                                                                                                    \
-        uint32_t c = FXL_T_TEXEL();                                                                         \
-        dst[i] = FXL_T_OUT(c);                                                                              \
-        FXL_T_ADVANCE();                                                                                    \
-    } while (0)
-#endif
-
-    {
-#if !FXL__FAST_SPANS
-        /* size-optimised build: no unrolling */
-        int32_t i;
-        for (i = 0; i < n; i++)
-            FXL_T_PIXEL(i);
-#elif FXL_T_DEPTH
-        /* Two pixels per iteration, indexed from the end: i runs from -n up
-         * to 0, so one ADD steps both dst and zb and sets the loop flag (2
-         * loop instructions a pair on x86-64, where two pointers and an end
-         * would spend a register the depth loop does not have). The odd
-         * pixel goes first. */
-        ptrdiff_t i = -(ptrdiff_t)n;
-        dst += n;
-        zb += n;
-        if (n & 1) {
-            FXL_T_PIXEL(i);
-            i++;
-        }
-        while (i != 0) {
-            FXL_T_PIXEL(i);
-            FXL_T_PIXEL(i + 1);
-            i += 2;
-        }
-#else
-        /* Four pixels per iteration with one pointer: GCC turns the count
-         * into an end-pointer compare (ADDS, CMP, BNE on a Cortex-M4), paid
-         * once per four (the point loop is 7 instructions a pixel plus 3 a
-         * quad). The n % 4 odd pixels go first. */
-        int32_t quads = n >> 2, r = n & 3;
-        while (r-- > 0) {
-            FXL_T_PIXEL(0);
-            dst++;
-        }
-        while (quads-- > 0) {
-            FXL_T_PIXEL(0);
-            FXL_T_PIXEL(1);
-            FXL_T_PIXEL(2);
-            FXL_T_PIXEL(3);
-            dst += 4;
-        }
-#endif
-    }
-#undef FXL_T_PIXEL
-#undef FXL_T_OUT
-#undef FXL_T_TEXEL
-#undef FXL_T_STEP
-#undef FXL_T_ADVANCE
-#if FXL_T_MIPLIN
-#undef FXL_T_STEP2
-#endif
-#if FXL_T_DEPTH
-    return (uint32_t)n - rejected;
-#else
-    return (uint32_t)n;
-#endif
-}
 
 #ifdef FXL_T_SEG
 static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
@@ -207,6 +60,9 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
     FXL_T_LV L;
     FXL_T_LV_INIT(&L, s->lvl);
     (void)tri;
+    if (s->ddu | s->ddv)
+        return FXL_T_QLOOP(s->dst, s->zb, s->n, s->z, (uint32_t)s->dz, &L, s->u, s->v, (uint32_t)s->du,
+                           (uint32_t)s->dv, (uint32_t)s->ddu, (uint32_t)s->ddv);
     return FXL_T_LOOP(s->dst, s->zb, s->n, s->z, (uint32_t)s->dz, &L, s->u, s->v, (uint32_t)s->du, (uint32_t)s->dv);
 }
 #endif
@@ -394,7 +250,8 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
 #if FXL_HAVE_AUTO
-    const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
+    /* auto_seg 2: one quadratic length for the triangle, no bound per row */
+    const int32_t t_row = autoseg && tri->auto_seg == 1 ? fxl__auto_row(tri, dY) : 0;
 #endif
     /* pixel cl of the row: inside the clip rectangle, so a valid pointer;
      * every segment writes from cl on */
@@ -410,7 +267,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 
     (void)autoseg;
 #if FXL_HAVE_AUTO
-    if (autoseg && cl > xl)
+    if (autoseg && tri->auto_seg == 1 && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
 #endif
     const int32_t x0 = x;
@@ -426,15 +283,26 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #else
 #define FXL_T_RUN_AT(x) FXL_T_RUN(tri, autoseg, FXL_T_TROW, &s, &L, px_cl, 0, x, xl, xr, cl, cr, &segments, 0)
 #endif
+#if FXL_HAVE_AUTO
+    /* q_x / q at the segment's start (quadratic segments) */
+    const int with_g = autoseg && tri->auto_quad;
+    int32_t g0 = with_g ? fxl__quad_g(tri, &s.rc) : 0;
+#endif
     while (x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
 #if FXL_HAVE_AUTO
-        const int ki = autoseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k;
+        const int kr = !autoseg ? k
+                       : (tri->auto_seg == 1 ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k | FXL__AUTO_QUAD);
+        const int ki = autoseg ? FXL__AUTO_LOG2(kr) : k, quad = autoseg && kr >= FXL__AUTO_QUAD;
 #else
-        const int ki = k;
+        const int kr = k, ki = k, quad = 0;
 #endif
-        if (autoseg && ki == 0 && x >= cl) {
+        if (autoseg && kr == 0 && x >= cl) {
             x = FXL_T_RUN_AT(x);
+#if FXL_HAVE_AUTO
+            if (with_g)
+                g0 = fxl__quad_g(tri, &s.rc);
+#endif
             continue;
         }
         const int32_t N = (int32_t)1 << ki;
@@ -444,15 +312,40 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
          * gpx * div (the last segment, which ends on the last pixel) */
         const uint32_t mult = div ? div : (autoseg ? (uint32_t)N : 0u);
         int32_t a = x, b = x + n < cr ? x + n : cr;
-        uint32_t du, dv, u = u0, v = v0;
+        uint32_t du = 0u, dv = 0u, u = u0, v = v0, ddu = 0u, ddv = 0u;
 #if FXL_T_DEPTH
         const uint32_t z0 = s.z;
         uint32_t dz, zz = z0;
-        lean_next_uvz(tri, &s, mult);
+        if (autoseg)
+            lean_next_uvz_rc(tri, &s, mult);
+        else
+            lean_next_uvz(tri, &s, mult);
 #else
-        lean_next_uv(tri, &s, mult);
+        if (autoseg)
+            lean_next_uv_rc(tri, &s, mult);
+        else
+            lean_next_uv(tri, &s, mult);
 #endif
-        if (div == 0u) {
+#if FXL_HAVE_AUTO
+        if (with_g) {
+            const int32_t g1 = fxl__quad_g(tri, &s.rc);
+            if (quad) {
+                const int32_t d[2] = {fxl__i32_of_bits(s.u - u0), fxl__i32_of_bits(s.v - v0)};
+                uint32_t st[4];
+                fxl__quad_steps(d, g0, g1, div ? (int32_t)div : N, div ? -1 : ki, st);
+                du = st[0];
+                ddu = st[1];
+                dv = st[2];
+                ddv = st[3];
+            }
+            g0 = g1;
+        }
+#endif
+        if (quad) {
+#if FXL_T_DEPTH
+            dz = div == 0u ? step_z_pow2(s.z, z0, ki) : step_z_div(s.z, z0, div);
+#endif
+        } else if (div == 0u) {
             du = step_pow2_u32(s.u - u0, ki);
             dv = step_pow2_u32(s.v - v0, ki);
 #if FXL_T_DEPTH
@@ -475,8 +368,15 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
             /* only the first segment starts left of the clip */
             const uint32_t off = (uint32_t)(cl - x);
             a = cl;
-            u += du * off;
-            v += dv * off;
+            if (quad) {
+                u = fxl__seg_coord(u, fxl__i32_of_bits(du), fxl__i32_of_bits(ddu), (int32_t)off);
+                v = fxl__seg_coord(v, fxl__i32_of_bits(dv), fxl__i32_of_bits(ddv), (int32_t)off);
+                du += ddu * off;
+                dv += ddv * off;
+            } else {
+                u += du * off;
+                v += dv * off;
+            }
 #if FXL_T_DEPTH
             zz += dz * off;
 #endif
@@ -484,9 +384,15 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
          * test keeps a broken caller from writing a negative count */
 #if FXL_T_DEPTH
-        written += FXL_T_LOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv);
+        if (quad)
+            written += FXL_T_QLOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv, ddu, ddv);
+        else
+            written += FXL_T_LOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv);
 #else
-        (void)FXL_T_LOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv);
+        if (quad)
+            (void)FXL_T_QLOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv, ddu, ddv);
+        else
+            (void)FXL_T_LOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv);
 #endif
         x += n;
     }
@@ -507,6 +413,17 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         tri->stats->spans++;
     }
 }
+
+#if FXL_HAVE_AUTO
+/* The adaptive copy of the lean walk out of line: inlined beside the
+ * fixed-length copy, its quadratic segments cost that copy a spill a
+ * segment (Cortex-M4 floor subdiv16 point 19.7 -> 19.9 a pixel). */
+static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _auto)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
+                                                      int32_t cl, int32_t cr)
+{
+    FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
+}
+#endif
 #endif
 
 #if !FXL_T_MIPLIN
@@ -553,7 +470,7 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
         if (tri->auto_seg) {
-            FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
+            FXL__CAT(FXL_T_LEAN, _auto)(tri, row, xl, xr, cl, cr);
             return;
         }
 #endif
@@ -771,6 +688,9 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #undef FXL_T_LV
 #undef FXL_T_LV_INIT
 #undef FXL_T_LOOP
+#ifdef FXL_T_QLOOP
+#undef FXL_T_QLOOP
+#endif
 #ifdef FXL_T_LOOP1
 #undef FXL_T_LOOP1
 #endif

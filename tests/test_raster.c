@@ -9,6 +9,7 @@
 #include "test_vertex.h"
 #include "fixel/fixel.h"
 #include "../src/raster_int.h"
+#include "../src/auto.h"
 
 #define FXL_TEST_PI 3.14159265358979323846
 
@@ -76,8 +77,8 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
     for (i = 0; i < s->n; i++) {
         size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
         probe_count[k]++;
-        probe_u[k] = (double)(uint32_t)(s->u + (uint32_t)s->du * (uint32_t)i) / 65536.0;
-        probe_v[k] = (double)(uint32_t)(s->v + (uint32_t)s->dv * (uint32_t)i) / 65536.0;
+        probe_u[k] = (double)(uint32_t)(fxl__seg_coord(s->u, s->du, s->ddu, i)) / 65536.0;
+        probe_v[k] = (double)(uint32_t)(fxl__seg_coord(s->v, s->dv, s->ddv, i)) / 65536.0;
     }
     return (uint32_t)s->n;
 }
@@ -655,17 +656,18 @@ static int rolled_floor_scene(tri_t *out, double roll_deg)
 /* Writes the texel index a point-sampled repeat lookup of a 256 x 256
  * texture takes (as the specialised walks index it) and counts the
  * triangles whose segments were cut by the adaptive bound. */
-static int probe_auto_seg_tris;
+static int probe_auto_seg_tris, probe_auto_quad_tris, probe_last_quad;
 static const fxl__tri_t *probe_last_tri;
 static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     int32_t i;
     if (tri != probe_last_tri) {   /* the first segment of a draw */
-        probe_auto_seg_tris += tri->auto_seg;
+        probe_auto_seg_tris += tri->auto_seg != 0;
+        probe_auto_quad_tris += tri->auto_quad;
         probe_last_tri = tri;
     }
     for (i = 0; i < s->n; i++) {
-        uint32_t u = s->u + (uint32_t)s->du * (uint32_t)i, v = s->v + (uint32_t)s->dv * (uint32_t)i;
+        uint32_t u = fxl__seg_coord(s->u, s->du, s->ddu, i), v = fxl__seg_coord(s->v, s->dv, s->ddv, i);
         s->dst[i] = (uint16_t)((((v >> 16) & 255u) << 8) | ((u >> 16) & 255u));
     }
     return (uint32_t)s->n;
@@ -699,7 +701,7 @@ void test_fast_and_generic_walks_agree(void)
                              i == 0 ? 0.03 : 0.3 + (rnd() % 700) / 1000.0, ((int)(rnd() % 2001) - 1000) / 100.0,
                              ((int)(rnd() % 2001) - 1000) / 100.0);
     }
-    probe_auto_seg_tris = 0;
+    probe_auto_seg_tris = probe_auto_quad_tris = 0;
     for (m = 0; m < 5; m++)
         for (c = 0; c < 2; c++) {
             const fxl_rect_t cr = {11, 0, W - 9, H};
@@ -733,9 +735,10 @@ void test_fast_and_generic_walks_agree(void)
     /* guard against the comparison passing vacuously: the adaptive draws
      * that reached the target did run the per-segment walk (43 of the 480
      * with this seed; the rest are off-target or get one length) */
-    snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment", probe_auto_seg_tris, 4 * NT);
+    snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment, %d quadratic", probe_auto_seg_tris, 4 * NT,
+             probe_auto_quad_tris);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= NT / 4, msg);
+    TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= NT / 4 && probe_auto_quad_tris >= NT / 4, msg);
 }
 
 /* FXL_PERSP_AUTO keeps the max texel error under its budget on the floor,
@@ -896,6 +899,109 @@ void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
     TEST_ASSERT_TRUE_MESSAGE(drawn >= 450 && accepted >= drawn / 4, msg);
 }
 
+/* Counts the quadratic segments the generic walk hands to probe_seg. */
+static int probe_quad_segs;
+static uint32_t probe_seg_quad(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_quad_segs += (s->ddu | s->ddv) != 0;
+    probe_last_quad = tri->auto_quad;
+    return probe_seg(tri, s);
+}
+
+/* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with
+ * one far vertex (depth ratios 3 to 30 across the triangle) and texture
+ * coordinates up to +-40 repeats, seen through the generic walk: every
+ * pixel stays within the budget, and quadratic segments were drawn. */
+void test_auto_quadratic_segments_stay_within_budget(void)
+{
+    static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
+    static uint16_t buf[320 * 240];
+    static uint16_t texels[64 * 64];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    int b, i, j, x, y, quad_tris = 0;
+    double worst = 0;
+    char msg[200];
+    lcg_state = 4242u;
+    fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.persp = FXL_PERSP_AUTO;
+    probe_quad_segs = 0;
+    for (b = 0; b < 3; b++) {
+        d.auto_budget = budgets[b];
+        for (i = 0; i < 60; i++) {
+            fxl_vertex_t v[3];
+            const double far = 1.0 / (3 + rnd_range(0, 27000) / 1000.0), rep = rnd_range(1, 40);
+            double e_max = 0;
+            for (j = 0; j < 3; j++)
+                v[j] = vtx(rnd_range(0, 3200) / 10.0, rnd_range(0, 2400) / 10.0, j == 0 ? far : 1.0 - rnd_range(0, 300) / 1000.0,
+                           rnd_range(-1000, 1000) / 1000.0 * rep, rnd_range(-1000, 1000) / 1000.0 * rep);
+            probe_target(&t, buf, 320, 240);
+            probe_last_quad = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_quad));
+            quad_tris += probe_last_quad;
+            for (y = 0; y < 240; y++)
+                for (x = 0; x < 320; x++)
+                    if (probe_count[y * 320 + x]) {
+                        double eu, ev, e;
+                        exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
+                        e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
+                        e_max = e > e_max ? e : e_max;
+                    }
+            if (e_max / (budgets[b] / 65536.0) > worst)
+                worst = e_max / (budgets[b] / 65536.0);
+            snprintf(msg, sizeof msg, "budget %.4f tri %d: max error %.4f texels", budgets[b] / 65536.0, i, e_max);
+            TEST_ASSERT_TRUE_MESSAGE(e_max <= budgets[b] / 65536.0, msg);
+        }
+    }
+    snprintf(msg, sizeof msg, "%d of 180 triangles quadratic, %d quadratic segments; worst error / budget %.3f",
+             quad_tris, probe_quad_segs, worst);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(quad_tris >= 30 && probe_quad_segs >= 300, msg);
+}
+
+/* fxl__quad_steps against the parabola it stands for: u_i (stepping
+ * u += du, du += dd) within len^2/8 + 2 len + 1 q16 units of
+ *   i d / len + C (i / len) (1 - i / len),  C = d len (g0 + g1) / 2 / 2^28,
+ * at every pixel up to the far end, for power-of-two lengths and the
+ * span's last segment (any length up to 64), d up to 2^30 and g up to
+ * ~1/len (the far end's q up to twice the near one's). */
+void test_quad_steps_follow_their_parabola(void)
+{
+    int n, i;
+    char msg[200];
+    lcg_state = 99u;
+    for (n = 0; n < 20000; n++) {
+        const int pow2 = (n & 1) != 0;
+        const int k = pow2 ? (int)rnd_range(1, FXL__QUAD_CAP) : -1;
+        const int32_t len = pow2 ? (int32_t)1 << k : rnd_range(2, 64);
+        const int32_t d[2] = {rnd_range(-(1 << 30), 1 << 30) >> rnd_range(0, 20), rnd_range(-1000, 1000)};
+        const int32_t g0 = rnd_range(-(1 << 28), 1 << 28) / len, g1 = g0 + rnd_range(-(1 << 20), 1 << 20) / len;
+        uint32_t st[4];
+        int c;
+        fxl__quad_steps(d, g0, g1, len, k, st);
+        for (c = 0; c < 2; c++) {
+            const double C = (double)d[c] * len * (((double)g0 + g1) / 2) / 268435456.0;
+            const double tol = len * len / 8.0 + 2.0 * len + 1.0;
+            uint32_t u = 0, du = st[2 * c];
+            for (i = 0; i <= len; i++) {
+                const double t = (double)i / len, want = t * d[c] + C * t * (1 - t);
+                const double got = (double)(int32_t)u;   /* |values| < 2^31 here */
+                if (fabs(got - want) > tol) {
+                    snprintf(msg, sizeof msg, "len %d k %d d %d g %d %d: pixel %d at %.1f, parabola %.1f (tol %.1f)",
+                             (int)len, k, (int)d[c], (int)g0, (int)g1, i, got, want, tol);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+                u += du;
+                du += st[2 * c + 1];
+            }
+        }
+    }
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -978,6 +1084,8 @@ int main(void)
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
+    RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
+    RUN_TEST(test_quad_steps_follow_their_parabola);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();

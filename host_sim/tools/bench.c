@@ -174,8 +174,8 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
             s->zb[i] = (uint16_t)zz;
         }
         p->tri[k] = p->cur;
-        p->u[k] = s->u + (uint32_t)s->du * (uint32_t)i;
-        p->v[k] = s->v + (uint32_t)s->dv * (uint32_t)i;
+        p->u[k] = fxl__seg_coord(s->u, s->du, s->ddu, i);
+        p->v[k] = fxl__seg_coord(s->v, s->dv, s->ddv, i);
     }
     return (uint32_t)s->n;
 }

@@ -91,8 +91,8 @@ static uint32_t probe(const fxl__tri_t *tri, const fxl__seg_t *s)
         }
         if (cnt[k] < 255)
             cnt[k]++;
-        pu[k] = s->u + (uint32_t)s->du * (uint32_t)i;
-        pv[k] = s->v + (uint32_t)s->dv * (uint32_t)i;
+        pu[k] = fxl__seg_coord(s->u, s->du, s->ddu, i);
+        pv[k] = fxl__seg_coord(s->v, s->dv, s->ddv, i);
         lvl_of[k] = (int)(s->lvl - &tri->level[0]);
     }
     return (uint32_t)s->n;
