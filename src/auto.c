@@ -51,6 +51,23 @@ static int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
     return k > cap ? cap : (int)k;
 }
 
+/* Is a quadratic length 2^kq worth it over the affine 2^k? A quadratic
+ * pixel costs ~4 Cortex-M4 instructions more (the two steps' steps), and
+ * its segment ~60 more (fxl__quad_steps, q_x/q) than a division's ~150;
+ * exact pixels (k = 0) run at ~80 each. Per pixel, ~(150 + 60) / 2^kq + 4
+ * against 150 / 2^k (80 at k = 0): two doublings pay from k = 0 to 4, one
+ * from k = 1 to 3, none beyond. */
+static int quad_pays(int k, int kq)
+{
+    if (kq <= k)
+        return 0;
+    if (k == 0)
+        return kq >= 2;
+    if (k <= 3)
+        return 1;
+    return k == 4 && kq >= 6;
+}
+
 /* floor(x / 256) for either sign (>> of a negative int is
  * implementation-defined). */
 static int32_t floor_div256(int32_t x)
@@ -184,8 +201,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
             const int qcap = cap < FXL__QUAD_CAP ? cap : FXL__QUAD_CAP;
             const int kq = fit_log2_quad(2 * lqx + lnmax / 2 - 4 * lqmin, lbq, qcap);
             const int kq_max = fit_log2_quad(2 * lqx + lnmax / 2 - 4 * lqmax, lbq, qcap);
-            best_seg = kq_max > best_seg ? kq_max : best_seg;
-            if (kq > best_tri && best_seg < kq + 2) {
+            const int seg_max = kq_max > best_seg ? kq_max : best_seg;
+            if (quad_pays(k, kq) && seg_max < kq + 2) {
                 /* one quadratic length for the whole triangle */
                 tri->seg_log2 = kq;
                 tri->qx_m = qx.m;
@@ -194,7 +211,14 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
                 tri->auto_seg = 2;
                 return;
             }
-            best_tri = kq > best_tri ? kq : best_tri;
+            /* per segment: quadratic where it pays at the nearest
+             * point too (else the near part, affine and long, pays its
+             * bound and loop) */
+            quad = quad_pays(best_seg, kq_max);
+            if (quad) {
+                best_seg = seg_max;
+                best_tri = kq > best_tri ? kq : best_tri;
+            }
         }
         if (best_seg < best_tri + 2)
             return;

@@ -33,7 +33,7 @@
  * i.e. 2^k fits  <=>  k <= (t_row + tq + 4 log2 q_min) / 3. A segment is
  * quadratic where this allows a longer block (at most FXL__QUAD_CAP) than
  * the affine bound; "fits" is then either bound, still inherited by
- * sub-blocks, so the partition property above holds. fxl__auto_next
+ * sub-blocks, so the partition property above holds. fxl__auto_next_q
  * returns the length with FXL__AUTO_QUAD set for such a segment.
  */
 #ifndef FIXEL_AUTO_H
@@ -80,8 +80,8 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
 
 /* Quadratic segments: at most 2^6 pixels (the fixed-point second
  * difference then errs by < 1/100 texel, fxl__quad_steps), and the flag
- * fxl__auto_next adds to their log2 length. */
-#define FXL__QUAD_CAP 6
+ * fxl__auto_next_q adds to their log2 length. */
+#define FXL__QUAD_CAP 5
 #define FXL__AUTO_QUAD 16
 #define FXL__AUTO_LOG2(k) ((k) & (FXL__AUTO_QUAD - 1))
 
@@ -159,7 +159,7 @@ static inline int fxl__auto_block_fits_quad(const fxl__tri_t *tri, int32_t t_row
 }
 
 /* log2 length of the segment starting at x, a segment boundary of the walk
- * (see above), where q is q. */
+ * (see above), where q is q: affine segments only. */
 static inline int fxl__auto_next(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xl, int32_t xr, int64_t q)
 {
     const int64_t q32 = fxl__auto_q32(q);
@@ -169,23 +169,33 @@ static inline int fxl__auto_next(const fxl__tri_t *tri, int32_t t_row, int32_t x
         k = a < k ? a : k;
     }
     /* the start's q bounds every length; where q falls, the end's decides */
-    {
-        const int kmax = k;
-        k = fxl__auto_fit(t_row, q32, kmax);
-        if (tri->q.gx < 0)
-            while (k > 0 && !fxl__auto_block_fits(tri, t_row, x, xr, q32, k))
-                k--;
-        if (tri->auto_quad && k < kmax) {
-            /* a longer quadratic segment? */
-            int kq = fxl__auto_fit_quad(tri, t_row, q32, kmax < FXL__QUAD_CAP ? kmax : FXL__QUAD_CAP);
-            if (tri->q.gx < 0)
-                while (kq > k && !fxl__auto_block_fits_quad(tri, t_row, x, xr, q32, kq))
-                    kq--;
-            if (kq > k)
-                return kq | FXL__AUTO_QUAD;
-        }
-    }
+    k = fxl__auto_fit(t_row, q32, k);
+    if (tri->q.gx < 0)
+        while (k > 0 && !fxl__auto_block_fits(tri, t_row, x, xr, q32, k))
+            k--;
     return k;
+}
+
+/* The same with quadratic segments (tri->auto_quad): the longest block
+ * that either bound allows, FXL__AUTO_QUAD set where only the quadratic
+ * one does. */
+static inline int fxl__auto_next_q(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xl, int32_t xr, int64_t q)
+{
+    const int64_t q32 = fxl__auto_q32(q);
+    int ka = tri->auto_cap, k, kq;
+    if (x != xl) {
+        const int a = fxl__ctz32((uint32_t)(x - xl));
+        ka = a < ka ? a : ka;
+    }
+    k = fxl__auto_fit(t_row, q32, ka);
+    kq = fxl__auto_fit_quad(tri, t_row, q32, ka < FXL__QUAD_CAP ? ka : FXL__QUAD_CAP);
+    if (tri->q.gx < 0) {
+        while (k > 0 && !fxl__auto_block_fits(tri, t_row, x, xr, q32, k))
+            k--;
+        while (kq > k && !fxl__auto_block_fits_quad(tri, t_row, x, xr, q32, kq))
+            kq--;
+    }
+    return kq > k ? kq | FXL__AUTO_QUAD : k;
 }
 
 /* Start of the segment that contains pixel cl (cl > xl: the walk begins
@@ -239,9 +249,15 @@ static inline int32_t fxl__quad_g(const fxl__tri_t *tri, const fxl__recip_t *rc)
  * only keeps a saturated g's arithmetic in range. */
 static inline int32_t fxl__quad_c1(int32_t d, int32_t gbar)
 {
-    const int64_t c = fxl__asr64(fxl__mul_s32(d, gbar), 28);
+    const int64_t p = fxl__mul_s32(d, gbar);
+    const int32_t hi = (int32_t)fxl__asr64(p, 32);
     const int32_t m = (1 << 30) - 1;
-    return c > m ? m : (c < -m ? -m : (int32_t)c);
+    /* |p| < 2^58: floor(p / 2^28) from the two words, |c1| <= 2^30 */
+    if (hi >= -(1 << 26) && hi < (1 << 26)) {
+        const int32_t c = fxl__i32_of_bits(((uint32_t)(uint64_t)p >> 28) | ((uint32_t)hi << 4));
+        return c < -m ? -m : c;
+    }
+    return hi < 0 ? -m : m;
 }
 
 /* The steps of a quadratic segment whose exact ends are len pixels apart
@@ -260,7 +276,13 @@ static inline int32_t fxl__quad_c1(int32_t d, int32_t gbar)
  * du = (d - dd len (len - 1) / 2) / len (< len + len^2/8 units).
  * A saturated g only shrinks |C|, its sign kept: the error then stays
  * below |d| d_q / (4 q_min), which the bound exceeds wherever g saturates. */
-static inline void fxl__quad_steps(const int32_t d[2], int32_t g0, int32_t g1, int32_t len, int k, uint32_t out[4])
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__QUAD_INLINE inline __attribute__((always_inline))   /* a call was ~25 M4 instructions a segment */
+#else
+#define FXL__QUAD_INLINE inline
+#endif
+static FXL__QUAD_INLINE void fxl__quad_steps(const int32_t d[2], int32_t g0, int32_t g1, int32_t len, int k,
+                                             uint32_t out[4])
 {
     /* floor((g0 + g1) / 2) in 32 bits */
     const int32_t gbar = fxl__asr32(g0, 1) + fxl__asr32(g1, 1) + (int32_t)((uint32_t)g0 & (uint32_t)g1 & 1u);

@@ -220,8 +220,10 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
         }
         u += du;
         v += dv;
-        du += (uint32_t)s->ddu;
+#if FXL_HAVE_AUTO
+        du += (uint32_t)s->ddu;   /* quadratic segments */
         dv += (uint32_t)s->ddv;
+#endif
         u2 += (uint32_t)s->du2;
         v2 += (uint32_t)s->dv2;
         z += (uint32_t)s->dz;
@@ -627,7 +629,8 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 }
 #endif
 
-/* The adaptive walks' copies: they also keep 1/q (s->rc). */
+#if FXL_HAVE_AUTO
+/* The quadratic walks' copies: they also keep 1/q (s->rc). */
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 0, 1);
@@ -638,6 +641,7 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_rc(const fxl__tri_t *tri, f
 {
     lean_next(tri, s, mult, 1, 1);
 }
+#endif
 #endif
 
 /* The lean walks' start of a span, out of line (one copy for every
@@ -713,7 +717,9 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
-        longer = autoseg && !((uint32_t)(x - xl) & 1u) && fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq) != 0;
+        longer = autoseg && !((uint32_t)(x - xl) & 1u) &&
+                 (tri->auto_quad ? fxl__auto_next_q(tri, t_row, x, xl, xr, (int64_t)sq)
+                                 : fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq)) != 0;
 #endif
         if (longer || m == FXL__BATCH) {
             /* the run ends at x, or (a full chunk) goes on there */
@@ -1109,9 +1115,11 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         int32_t n, div, a, b, off;
         int64_t du0 = 0, dv0 = 0;
         int level = 0, full, ki = k, quad = 0;
+        (void)quad;   /* without FXL_HAVE_AUTO */
 #if FXL_HAVE_AUTO
         if (tri->auto_seg == 1) {
-            ki = fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
+            ki = tri->auto_quad ? fxl__auto_next_q(tri, t_row, x, xl, xr, pv[PQ])
+                                : fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
             quad = ki >= FXL__AUTO_QUAD;
             ki = FXL__AUTO_LOG2(ki);
         } else {

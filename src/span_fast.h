@@ -46,7 +46,7 @@
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
 #include "span_loop.h"
-#if !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN && FXL_HAVE_AUTO
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
 #define FXL_T_LOOPFN FXL_T_QLOOP
@@ -60,9 +60,11 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
     FXL_T_LV L;
     FXL_T_LV_INIT(&L, s->lvl);
     (void)tri;
+#if FXL_HAVE_AUTO
     if (s->ddu | s->ddv)
         return FXL_T_QLOOP(s->dst, s->zb, s->n, s->z, (uint32_t)s->dz, &L, s->u, s->v, (uint32_t)s->du,
                            (uint32_t)s->dv, (uint32_t)s->ddu, (uint32_t)s->ddv);
+#endif
     return FXL_T_LOOP(s->dst, s->zb, s->n, s->z, (uint32_t)s->dz, &L, s->u, s->v, (uint32_t)s->du, (uint32_t)s->dv);
 }
 #endif
@@ -242,7 +244,8 @@ static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg,
  * segment. The correction is one call (lean_next_uv/_uvz) shared by all
  * variants; runs of 1-pixel segments (exact mode, AUTO's steep parts) go
  * to FXL_T_RUN. */
-static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, int32_t row, int32_t xl, int32_t xr,
+static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, const int quadseg, int32_t row,
+                                     int32_t xl, int32_t xr,
                                      int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
@@ -251,7 +254,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
 #if FXL_HAVE_AUTO
     /* auto_seg 2: one quadratic length for the triangle, no bound per row */
-    const int32_t t_row = autoseg && tri->auto_seg == 1 ? fxl__auto_row(tri, dY) : 0;
+    const int32_t t_row = autoseg && (!quadseg || tri->auto_seg == 1) ? fxl__auto_row(tri, dY) : 0;
 #endif
     /* pixel cl of the row: inside the clip rectangle, so a valid pointer;
      * every segment writes from cl on */
@@ -267,7 +270,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 
     (void)autoseg;
 #if FXL_HAVE_AUTO
-    if (autoseg && tri->auto_seg == 1 && cl > xl)
+    if (autoseg && (!quadseg || tri->auto_seg == 1) && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
 #endif
     const int32_t x0 = x;
@@ -285,17 +288,19 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #endif
 #if FXL_HAVE_AUTO
     /* q_x / q at the segment's start (quadratic segments) */
-    const int with_g = autoseg && tri->auto_quad;
+    const int with_g = quadseg;
     int32_t g0 = with_g ? fxl__quad_g(tri, &s.rc) : 0;
 #endif
     while (x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
 #if FXL_HAVE_AUTO
-        const int kr = !autoseg ? k
-                       : (tri->auto_seg == 1 ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq) : k | FXL__AUTO_QUAD);
-        const int ki = autoseg ? FXL__AUTO_LOG2(kr) : k, quad = autoseg && kr >= FXL__AUTO_QUAD;
+        const int kr = !autoseg  ? k
+                       : !quadseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq)
+                       : (tri->auto_seg == 1 ? fxl__auto_next_q(tri, t_row, x, xl, xr, (int64_t)s.sq) : k | FXL__AUTO_QUAD);
+        const int ki = quadseg ? FXL__AUTO_LOG2(kr) : kr, quad = quadseg && kr >= FXL__AUTO_QUAD;
 #else
         const int kr = k, ki = k, quad = 0;
+        (void)quadseg;
 #endif
         if (autoseg && kr == 0 && x >= cl) {
             x = FXL_T_RUN_AT(x);
@@ -316,14 +321,19 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 #if FXL_T_DEPTH
         const uint32_t z0 = s.z;
         uint32_t dz, zz = z0;
-        if (autoseg)
+#endif
+#if FXL_HAVE_AUTO && FXL_T_DEPTH
+        if (quadseg)
             lean_next_uvz_rc(tri, &s, mult);
         else
-            lean_next_uvz(tri, &s, mult);
-#else
-        if (autoseg)
+#elif FXL_HAVE_AUTO
+        if (quadseg)
             lean_next_uv_rc(tri, &s, mult);
         else
+#endif
+#if FXL_T_DEPTH
+            lean_next_uvz(tri, &s, mult);
+#else
             lean_next_uv(tri, &s, mult);
 #endif
 #if FXL_HAVE_AUTO
@@ -383,17 +393,20 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
         }
         /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
          * test keeps a broken caller from writing a negative count */
-#if FXL_T_DEPTH
-        if (quad)
-            written += FXL_T_QLOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv, ddu, ddv);
-        else
-            written += FXL_T_LOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv);
+#if FXL_HAVE_AUTO
+#define FXL_T_QUAD_PICK(call_q, call) (quad ? (call_q) : (call))
 #else
-        if (quad)
-            (void)FXL_T_QLOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv, ddu, ddv);
-        else
-            (void)FXL_T_LOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv);
+#define FXL_T_QUAD_PICK(call_q, call) ((void)ddu, (void)ddv, (call))
 #endif
+#if FXL_T_DEPTH
+        written += FXL_T_QUAD_PICK(
+            FXL_T_QLOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv, ddu, ddv),
+            FXL_T_LOOP(px_cl + (a - cl), zb_cl + (a - cl), b - a, zz, dz, &L, u, v, du, dv));
+#else
+        (void)FXL_T_QUAD_PICK(FXL_T_QLOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv, ddu, ddv),
+                              FXL_T_LOOP(px_cl + (a - cl), 0, b - a, 0u, 0u, &L, u, v, du, dv));
+#endif
+#undef FXL_T_QUAD_PICK
         x += n;
     }
 #undef FXL_T_RUN_AT
@@ -415,13 +428,15 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, i
 }
 
 #if FXL_HAVE_AUTO
-/* The adaptive copy of the lean walk out of line: inlined beside the
- * fixed-length copy, its quadratic segments cost that copy a spill a
- * segment (Cortex-M4 floor subdiv16 point 19.7 -> 19.9 a pixel). */
-static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _auto)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
+/* The quadratic copy of the lean walk, out of line: inlined beside the
+ * others, it cost the fixed-length copy a spill a segment (Cortex-M4
+ * floor subdiv16 point 19.7 -> 19.9 a pixel), and one copy serving both
+ * kinds of adaptive triangle cost the affine ones ~25 instructions a
+ * segment. */
+static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _quad)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
                                                       int32_t cl, int32_t cr)
 {
-    FXL_T_LEAN(tri, 1, row, xl, xr, cl, cr);
+    FXL_T_LEAN(tri, 1, 1, row, xl, xr, cl, cr);
 }
 #endif
 #endif
@@ -469,15 +484,19 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
+        if (tri->auto_quad) {
+            FXL__CAT(FXL_T_LEAN, _quad)(tri, row, xl, xr, cl, cr);
+            return;
+        }
         if (tri->auto_seg) {
-            FXL__CAT(FXL_T_LEAN, _auto)(tri, row, xl, xr, cl, cr);
+            FXL_T_LEAN(tri, 1, 0, row, xl, xr, cl, cr);
             return;
         }
 #endif
         if (k == 0)
             FXL_T_EXACT(tri, row, xl, xr, cl, cr);
         else
-            FXL_T_LEAN(tri, 0, row, xl, xr, cl, cr);
+            FXL_T_LEAN(tri, 0, 0, row, xl, xr, cl, cr);
         return;
     }
 #endif
