@@ -428,9 +428,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 }
 
 #if FXL_HAVE_AUTO
-/* The quadratic copy of the lean walk, out of line: inlined beside the
- * others, it cost the fixed-length copy a spill a segment (Cortex-M4
- * floor subdiv16 point 19.7 -> 19.9 a pixel), and one copy serving both
+/* The quadratic copy of the lean walk, out of line: one copy serving both
  * kinds of adaptive triangle cost the affine ones ~25 instructions a
  * segment. */
 static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _quad)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
@@ -438,7 +436,24 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _quad)(const fxl__tri_t *tri, int
 {
     FXL_T_LEAN(tri, 1, 1, row, xl, xr, cl, cr);
 }
+
+/* The affine adaptive copy out of line as well. */
+static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _auto)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
+                                                      int32_t cl, int32_t cr)
+{
+    FXL_T_LEAN(tri, 1, 0, row, xl, xr, cl, cr);
+}
 #endif
+
+/* And the fixed-length copy: GCC allocates registers per function, and
+ * inlined into the span function its spills moved with every change to
+ * the code beside it (M4 floor subdiv16 point between 19.7 and 20.1).
+ * The call costs ~10 instructions a span. */
+static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
+                                                       int32_t cl, int32_t cr)
+{
+    FXL_T_LEAN(tri, 0, 0, row, xl, xr, cl, cr);
+}
 #endif
 
 #if !FXL_T_MIPLIN
@@ -489,14 +504,14 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
             return;
         }
         if (tri->auto_seg) {
-            FXL_T_LEAN(tri, 1, 0, row, xl, xr, cl, cr);
+            FXL__CAT(FXL_T_LEAN, _auto)(tri, row, xl, xr, cl, cr);
             return;
         }
 #endif
         if (k == 0)
             FXL_T_EXACT(tri, row, xl, xr, cl, cr);
         else
-            FXL_T_LEAN(tri, 0, 0, row, xl, xr, cl, cr);
+            FXL__CAT(FXL_T_LEAN, _fixed)(tri, row, xl, xr, cl, cr);
         return;
     }
 #endif

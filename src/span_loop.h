@@ -64,7 +64,11 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
     (void)shu;    /* one of shu, mu16 is unused, see FXL__IDX */
     (void)mu16;
     uint32_t U = FXL__IDX_TOPU ? (lw ? u << (16u - lw) : 0u) : u, V = v << lw;
+#if FXL_T_QUAD
     uint32_t dU = FXL__IDX_TOPU ? (lw ? du << (16u - lw) : 0u) : du, dV = dv << lw;
+#else
+    const uint32_t dU = FXL__IDX_TOPU ? (lw ? du << (16u - lw) : 0u) : du, dV = dv << lw;
+#endif
 #if FXL_T_QUAD
     /* quadratic segments: the steps change by ddu, ddv a pixel (shifted
      * like the steps: << is exact modulo 2^32) */

@@ -978,7 +978,7 @@ void test_quad_steps_follow_their_parabola(void)
         const int pow2 = (n & 1) != 0;
         const int k = pow2 ? (int)rnd_range(1, FXL__QUAD_CAP) : -1;
         const int32_t len = pow2 ? (int32_t)1 << k : rnd_range(2, 64);
-        const int32_t d[2] = {rnd_range(-(1 << 30), 1 << 30) >> rnd_range(0, 20), rnd_range(-1000, 1000)};
+        const int32_t d[2] = {rnd_range(-(1 << 29), 1 << 29) * 2 / (1 << rnd_range(0, 20)), rnd_range(-1000, 1000)};
         const int32_t g0 = rnd_range(-(1 << 28), 1 << 28) / len, g1 = g0 + rnd_range(-(1 << 20), 1 << 20) / len;
         uint32_t st[4];
         int c;
