@@ -153,6 +153,13 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px */
     while (cap < 8 && ((int32_t)1 << cap) < w)
         cap++;
+    /* Spans of at most 2 pixels have a correction point at every pixel
+     * (the last segment ends on the span's last pixel) whatever the
+     * length: no bound to compute (a tenth of the tunnel's triangles,
+     * ~1,400 Cortex-M4 instructions each). */
+    tri->seg_log2 = cap;
+    if (cap <= 1)
+        return;
     qx = fxl__sf_make(qx_g, 0);
     q0 = fxl__sf_make(tri->q.c, 0);
     qy = fxl__sf_make(tri->q.gy, 0);
