@@ -112,13 +112,18 @@ static uint32_t range3(int32_t a, int32_t b, int32_t c)
     return (uint32_t)hi - (uint32_t)lo;
 }
 
+/* range u + range v of the vertices in q16 texels (normalised q16 times
+ * the level-0 size); 32 x 32 multiplies, not 64-bit shifts (one UMULL,
+ * one UMLAL on a Cortex-M) */
+static uint64_t uv_range_q16(const fxl_texture_t *t, const fxl_vertex_t *v)
+{
+    return (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
+           (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
+}
+
 int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v)
 {
-    const fxl_texture_t *t = d->texture;
-    /* ranges in q16 texels (normalised q16 times the level-0 size); 32 x 32
-     * multiplies, not 64-bit shifts (one UMULL, one UMLAL on a Cortex-M) */
-    const uint64_t duv = (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
-                         (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
+    const uint64_t duv = uv_range_q16(d->texture, v);
     const uint32_t w0 = v[0].inv_w, w1 = v[1].inv_w, w2 = v[2].inv_w;
     const uint32_t qmin = w0 < w1 ? (w0 < w2 ? w0 : w2) : (w1 < w2 ? w1 : w2);
     const uint32_t qmax = w0 > w1 ? (w0 > w2 ? w0 : w2) : (w1 > w2 ? w1 : w2);
@@ -132,7 +137,7 @@ int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v)
     return duv <= INT32_MAX && duv * (qmax - qmin) <= 4u * ((uint64_t)qmin * b);
 }
 
-void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
+void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3], const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
      * u in texels = (S / q) * 2^(shift_u + log2_w - 16). */
@@ -142,7 +147,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     fxl__sf_t qx, q0, qy, A[2], B[2], n[3][2];
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, w;
     int i, j, cap = 0, k, E, quad;
-    int32_t lbq;
+    int32_t lbq, lba;
 
     tri->auto_seg = 0;
     tri->auto_quad = 0;
@@ -161,9 +166,46 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     if (cap <= 1)
         return;
     qx = fxl__sf_make(qx_g, 0);
+    /* The budget's q8 log2, less the margins of the vertex test (affine)
+     * and of quadratic segments. */
+    lb = fxl__log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
+    {
+        const int32_t b = tri->draw->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : tri->draw->auto_budget;
+        const int32_t ba = b - (b >> 4) - FXL_Q16_ONE / 128, bq = b - (b >> 4) - FXL_Q16_ONE / 64;
+        lba = ba > 0 ? fxl__log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
+        lbq = bq > 0 ? fxl__log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
+        quad = !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
+    }
+    {
+        /* Whole spans from the vertex ranges, before the N bound: within a
+         * span of at most 2^cap pixels u and v change by at most
+         * R = range u + range v, and q by 2^cap |q_x|; a chord then errs by
+         * at most R 2^cap |q_x| / (4 q_min), a quadratic segment (auto.h) by
+         * 0.0482 R (2^cap |q_x| / q_min)^2. Where the first fits, the N
+         * bound would give whole spans too (the same pixels); where only
+         * the second does, small triangles (spans <= 8 pixels, whose cost
+         * is this set-up's) take whole quadratic spans. Log2 margins: +2
+         * for each upper and +1 for each lower estimate. */
+        const uint64_t R = uv_range_q16(tri->tex, v);
+        const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
+        if (R == 0)
+            return;   /* u, v constant: no error at any length */
+        if (R <= INT32_MAX && tri->q_min > 0) {
+            const int32_t lr = fxl__log2_q8(R) - 16 * 256;
+            const int32_t lrho = fxl__log2_q8(g) + 2 - (fxl__log2_q8((uint64_t)tri->q_min) - 1);
+            if (lr + 2 + 256 * cap + lrho - 512 <= lba - 1)
+                return;
+            if (quad && cap <= 3 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
+                tri->qx_m = qx.m;
+                tri->qx_e = qx.e;
+                tri->auto_quad = 1;
+                tri->auto_seg = 2;
+                return;
+            }
+        }
+    }
     q0 = fxl__sf_make(tri->q.c, 0);
     qy = fxl__sf_make(tri->q.gy, 0);
-    lb = fxl__log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
     /* N(Y) = A + B (Y - Y0) for u and v, texel-scaled */
     for (j = 0; j < 2; j++) {
         const fxl__plane_t *p = &tri->a[j];
@@ -201,9 +243,6 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
          * coordinates: a parabola may overshoot its ends a little, which
          * a clamped int32 coordinate must not) of a texture with one level
          * (the walks that step several levels are affine only). */
-        const int32_t bq = tri->draw->auto_budget - (tri->draw->auto_budget >> 4) - FXL_Q16_ONE / 64;
-        lbq = bq > 0 ? fxl__log2_q8((uint64_t)bq) - 16 * 256 : 0;
-        quad = !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
         if (quad) {
             const int qcap = cap < FXL__QUAD_CAP ? cap : FXL__QUAD_CAP;
             const int kq = fit_log2_quad(2 * lqx + lnmax / 2 - 4 * lqmin, lbq, qcap);

@@ -290,7 +290,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         return st;
 #if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
-        fxl__auto_setup(&tri, X, Y);
+        fxl__auto_setup(&tri, v, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

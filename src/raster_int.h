@@ -215,7 +215,7 @@ void fxl__edge_step(fxl__edge_t *e);
  * one length suits the whole triangle, else auto_seg and the per-row terms
  * of auto.h. */
 int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v);
-void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
+void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3], const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);

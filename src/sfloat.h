@@ -17,14 +17,16 @@
 static inline fxl__sf_t fxl__sf_make(int64_t m, int e)
 {
     fxl__sf_t r;
-    uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
+    const uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
+    const uint32_t ahi = (uint32_t)(a >> 32), alo = (uint32_t)a;
     int sh = 0;
-    if (a >> 31) {
-        const int bits = 64 - fxl__clz64_inline(a);
+    if (ahi | (alo >> 31)) {
+        /* the bit length of a, from 32-bit CLZs */
+        const int bits = ahi ? 64 - fxl__clz32_inline(ahi) : 32 - fxl__clz32_inline(alo);
         sh = bits - 31;
     }
     /* floor(m / 2^sh) has magnitude <= 2^31: INT32_MIN at worst */
-    r.m = (int32_t)fxl__asr64(m, sh);
+    r.m = fxl__asr64_to_i32(m, sh);
     r.e = e + sh;
     return r;
 }
