@@ -14,7 +14,16 @@
 
 /* fxl__sf_t is declared in raster_int.h (the triangle keeps some). */
 
-static inline fxl__sf_t fxl__sf_make(int64_t m, int e)
+/* Inline where speed counts: out of line (GCC's choice once the shift
+ * became 32-bit words) every per-segment LOD paid ~20 calls, M4
+ * trilinear 109 -> 118 instructions a pixel. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__SF_INLINE inline __attribute__((always_inline))
+#else
+#define FXL__SF_INLINE inline
+#endif
+
+static FXL__SF_INLINE fxl__sf_t fxl__sf_make(int64_t m, int e)
 {
     fxl__sf_t r;
     const uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
@@ -31,13 +40,13 @@ static inline fxl__sf_t fxl__sf_make(int64_t m, int e)
     return r;
 }
 
-static inline fxl__sf_t fxl__sf_mul(fxl__sf_t a, fxl__sf_t b)
+static FXL__SF_INLINE fxl__sf_t fxl__sf_mul(fxl__sf_t a, fxl__sf_t b)
 {
     return fxl__sf_make((int64_t)a.m * b.m, a.e + b.e);   /* |a.m * b.m| <= 2^62 */
 }
 
 /* a + sign * b, sign = +1 or -1 */
-static inline fxl__sf_t fxl__sf_addsub(fxl__sf_t a, fxl__sf_t b, int sign)
+static FXL__SF_INLINE fxl__sf_t fxl__sf_addsub(fxl__sf_t a, fxl__sf_t b, int sign)
 {
     const int64_t sb = sign < 0 ? -(int64_t)b.m : (int64_t)b.m;
     int d = a.e - b.e;

@@ -374,13 +374,13 @@ static inline int32_t shift_step(int64_t d, int level)
 /* (S_g 2^sh - u q_g) / q for one gradient g, in q16 texels per pixel. */
 /* d(S/q)/dx = (S_x - (S/q) q_x) / q from the gradient s (texel-scaled,
  * fxl__span_setup), the value a = S/q and q's gradient; rq = 1/q. */
-static inline fxl__sf_t deriv(fxl__sf_t s, fxl__sf_t a, fxl__sf_t q_g, fxl__sf_t rq)
+static FXL__SF_INLINE fxl__sf_t deriv(fxl__sf_t s, fxl__sf_t a, fxl__sf_t q_g, fxl__sf_t rq)
 {
     return fxl__sf_mul(fxl__sf_addsub(s, fxl__sf_mul(a, q_g), -1), rq);
 }
 
 /* log2 of |(a, b)| in q8 for a, b in q16 texels per pixel. */
-static inline int32_t log2_len_q8(fxl__sf_t a, fxl__sf_t b)
+static FXL__SF_INLINE int32_t log2_len_q8(fxl__sf_t a, fxl__sf_t b)
 {
     fxl__sf_t sq = fxl__sf_addsub(fxl__sf_mul(a, a), fxl__sf_mul(b, b), 1);
     if (sq.m <= 0)
@@ -699,8 +699,6 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         pz[0] = s->z;
     for (;;) {
         fxl__pt_t pt;
-        fxl__recip_t rc;
-        int64_t rc_q;
         int32_t x;
         int longer = 0;   /* a segment longer than 1 starts at x */
         m++;
@@ -710,10 +708,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         sq += gq;
         su += gu;
         sv += gv;
-        /* fast_correct_batch, with 1/q kept for the walk's next segment */
-        rc_q = (int64_t)sq < tri->q_min ? tri->q_min : (int64_t)sq;
-        fxl__recip(rc_q, &rc);
-        fast_correct_rc(tri, &rc, (int64_t)su, (int64_t)sv, &pt);
+        fast_correct_batch(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
@@ -725,7 +720,13 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
             /* the run ends at x, or (a full chunk) goes on there */
             s->u = pt.u;
             s->v = pt.v;
-            s->rc = rc;
+#if FXL_HAVE_AUTO
+            /* the quadratic walk's next segment needs 1/q here: computed
+             * again (once a run) rather than kept through the loop, which
+             * cost exact mode ~10 Cortex-M4 instructions a pixel in spills */
+            if (autoseg && tri->auto_quad)
+                recip_at(tri, (int64_t)sq, &s->rc);
+#endif
             go_on = !longer;
             break;
         }
@@ -747,21 +748,55 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
     return m;
 }
 
-static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
-                                                      fxl__lean_t *s, const int32_t x0, const int32_t xl,
-                                                      const int32_t xr, const int32_t cr, uint32_t *puv,
-                                                      int *more, uint32_t *ndiv)
+/* One copy for exact mode and one for AUTO's runs: with the adaptive
+ * chooser in the same loop, exact mode spilled ~7 Cortex-M4 instructions
+ * a pixel. */
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                            const int32_t xl, const int32_t xr, const int32_t cr,
+                                                            uint32_t *puv, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, autoseg, t_row, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+}
+
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_auto(const fxl__tri_t *tri, const int32_t t_row, fxl__lean_t *s,
+                                                           const int32_t x0, const int32_t xl, const int32_t xr,
+                                                           const int32_t cr, uint32_t *puv, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+}
+
+static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                         fxl__lean_t *s, const int32_t x0, const int32_t xl, const int32_t xr,
+                                         const int32_t cr, uint32_t *puv, int *more, uint32_t *ndiv)
+{
+    if (autoseg)
+        return lean_run_uv_auto(tri, t_row, s, x0, xl, xr, cr, puv, more, ndiv);
+    return lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
 }
 
 #if FXL_HAVE_DEPTH
-static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
-                                                       fxl__lean_t *s, const int32_t x0, const int32_t xl,
-                                                       const int32_t xr, const int32_t cr, uint32_t *puv,
-                                                       uint32_t *pz, int *more, uint32_t *ndiv)
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                             const int32_t xl, const int32_t xr, const int32_t cr,
+                                                             uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, autoseg, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+}
+
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_auto(const fxl__tri_t *tri, const int32_t t_row,
+                                                            fxl__lean_t *s, const int32_t x0, const int32_t xl,
+                                                            const int32_t xr, const int32_t cr, uint32_t *puv,
+                                                            uint32_t *pz, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+}
+
+static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
+                                          fxl__lean_t *s, const int32_t x0, const int32_t xl, const int32_t xr,
+                                          const int32_t cr, uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
+{
+    if (autoseg)
+        return lean_run_uvz_auto(tri, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    return lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
 }
 #endif
 #endif /* FXL__FAST_SPANS */
