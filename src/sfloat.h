@@ -14,10 +14,11 @@
 
 /* fxl__sf_t is declared in raster_int.h (the triangle keeps some). */
 
-/* Inline where speed counts: out of line (GCC's choice once the shift
- * became 32-bit words) every per-segment LOD paid ~20 calls, M4
- * trilinear 109 -> 118 instructions a pixel. */
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+/* Inline on 32-bit cores outside -Os: out of line (GCC's choice once the
+ * shift became 32-bit words) every per-segment LOD paid ~20 calls, M4
+ * trilinear 109 -> 118 instructions a pixel. x86-64 keeps GCC's choice
+ * (forced, its trilinear went 134 -> 137). */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__) && UINTPTR_MAX <= 0xFFFFFFFFu
 #define FXL__SF_INLINE inline __attribute__((always_inline))
 #else
 #define FXL__SF_INLINE inline
@@ -27,15 +28,21 @@ static FXL__SF_INLINE fxl__sf_t fxl__sf_make(int64_t m, int e)
 {
     fxl__sf_t r;
     const uint64_t a = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
-    const uint32_t ahi = (uint32_t)(a >> 32), alo = (uint32_t)a;
     int sh = 0;
-    if (ahi | (alo >> 31)) {
-        /* the bit length of a, from 32-bit CLZs */
-        const int bits = ahi ? 64 - fxl__clz32_inline(ahi) : 32 - fxl__clz32_inline(alo);
-        sh = bits - 31;
+    if (FXL__WORD32) {
+        /* 32-bit cores: the bit length from 32-bit CLZs and the shift on
+         * the two words (a 64-bit shift by a variable is ~10 instructions
+         * and a branch there); the same values */
+        const uint32_t ahi = (uint32_t)(a >> 32), alo = (uint32_t)a;
+        if (ahi | (alo >> 31))
+            sh = (ahi ? 64 - fxl__clz32_inline(ahi) : 32 - fxl__clz32_inline(alo)) - 31;
+        r.m = fxl__asr64_to_i32(m, sh);
+    } else {
+        if (a >> 31)
+            sh = 64 - fxl__clz64_inline(a) - 31;
+        /* floor(m / 2^sh) has magnitude <= 2^31: INT32_MIN at worst */
+        r.m = (int32_t)fxl__asr64(m, sh);
     }
-    /* floor(m / 2^sh) has magnitude <= 2^31: INT32_MIN at worst */
-    r.m = fxl__asr64_to_i32(m, sh);
     r.e = e + sh;
     return r;
 }
