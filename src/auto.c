@@ -174,7 +174,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
         const int32_t ba = b - (b >> 4) - FXL_Q16_ONE / 128, bq = b - (b >> 4) - FXL_Q16_ONE / 64;
         lba = ba > 0 ? fxl__log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
         lbq = bq > 0 ? fxl__log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
-        quad = !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
+        quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
     }
     {
         /* Whole spans from the vertex ranges, before the N bound: within a

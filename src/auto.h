@@ -208,7 +208,7 @@ static inline int32_t fxl__auto_first(const fxl__tri_t *tri, int32_t t_row, int3
     const int64_t qc = fxl__auto_q32(fxl__plane_eval(&tri->q, cl * FXL__ONE + FXL__HALF - tri->X0, dY));
     int k = fxl__auto_fit(t_row, qc, tri->auto_cap);
     int32_t bs = cl;
-    if (tri->auto_quad) {
+    if (fxl__auto_quad(tri)) {
         const int kq = fxl__auto_fit_quad(tri, t_row, qc, tri->auto_cap < FXL__QUAD_CAP ? tri->auto_cap : FXL__QUAD_CAP);
         k = kq > k ? kq : k;
     }
@@ -217,7 +217,7 @@ static inline int32_t fxl__auto_first(const fxl__tri_t *tri, int32_t t_row, int3
         bs = xl + ((cl - xl) >> k << k);
         q32 = fxl__auto_q32(fxl__plane_eval(&tri->q, bs * FXL__ONE + FXL__HALF - tri->X0, dY));
         if (fxl__auto_block_fits(tri, t_row, bs, xr, q32, k) ||
-            (tri->auto_quad && k <= FXL__QUAD_CAP && fxl__auto_block_fits_quad(tri, t_row, bs, xr, q32, k)))
+            (fxl__auto_quad(tri) && k <= FXL__QUAD_CAP && fxl__auto_block_fits_quad(tri, t_row, bs, xr, q32, k)))
             break;
     }
     return k ? bs : cl;

@@ -148,6 +148,11 @@ static inline int fxl__has_color(const fxl__tri_t *tri)
 {
     return FXL_HAVE_GENERIC && tri->has_color;
 }
+/* Quadratic segments in this triangle (0 at compile time without them). */
+static inline int fxl__auto_quad(const fxl__tri_t *tri)
+{
+    return FXL_HAVE_QUAD && tri->auto_quad;
+}
 static inline int fxl__signed_u(const fxl__tri_t *tri)
 {
     return FXL_HAVE_GENERIC && tri->signed_u;

@@ -220,7 +220,7 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
         }
         u += du;
         v += dv;
-#if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
         du += (uint32_t)s->ddu;   /* quadratic segments */
         dv += (uint32_t)s->ddv;
 #endif
@@ -295,7 +295,7 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     if (tri->stats)
         tri->stats->divisions++;
 #if FXL_HAVE_AUTO
-    pt->g = tri->auto_quad ? fxl__quad_g(tri, &rc) : 0;
+    pt->g = fxl__auto_quad(tri) ? fxl__quad_g(tri, &rc) : 0;
 #endif
     if (fxl__has_uv(tri)) {
         int64_t u = fxl__persp(pv[PA + FXL__AU], &rc, tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
@@ -629,7 +629,7 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 }
 #endif
 
-#if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
 /* The quadratic walks' copies: they also keep 1/q (s->rc). */
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
@@ -713,7 +713,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
             sz += gz;
 #if FXL_HAVE_AUTO
         longer = autoseg && !((uint32_t)(x - xl) & 1u) &&
-                 (tri->auto_quad ? fxl__auto_next_q(tri, t_row, x, xl, xr, (int64_t)sq)
+                 (fxl__auto_quad(tri) ? fxl__auto_next_q(tri, t_row, x, xl, xr, (int64_t)sq)
                                  : fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq)) != 0;
 #endif
         if (longer || m == FXL__BATCH) {
@@ -724,7 +724,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
             /* the quadratic walk's next segment needs 1/q here: computed
              * again (once a run) rather than kept through the loop, which
              * cost exact mode ~10 Cortex-M4 instructions a pixel in spills */
-            if (autoseg && tri->auto_quad)
+            if (autoseg && fxl__auto_quad(tri))
                 recip_at(tri, (int64_t)sq, &s->rc);
 #endif
             go_on = !longer;
@@ -1153,7 +1153,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         (void)quad;   /* without FXL_HAVE_AUTO */
 #if FXL_HAVE_AUTO
         if (tri->auto_seg == 1) {
-            ki = tri->auto_quad ? fxl__auto_next_q(tri, t_row, x, xl, xr, pv[PQ])
+            ki = fxl__auto_quad(tri) ? fxl__auto_next_q(tri, t_row, x, xl, xr, pv[PQ])
                                 : fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
             quad = ki >= FXL__AUTO_QUAD;
             ki = FXL__AUTO_LOG2(ki);

@@ -46,7 +46,7 @@
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
 #include "span_loop.h"
-#if !FXL_T_MIPLIN && FXL_HAVE_AUTO
+#if !FXL_T_MIPLIN && FXL_HAVE_QUAD
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
 #define FXL_T_LOOPFN FXL_T_QLOOP
@@ -60,7 +60,7 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
     FXL_T_LV L;
     FXL_T_LV_INIT(&L, s->lvl);
     (void)tri;
-#if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
     if (s->ddu | s->ddv)
         return FXL_T_QLOOP(s->dst, s->zb, s->n, s->z, (uint32_t)s->dz, &L, s->u, s->v, (uint32_t)s->du,
                            (uint32_t)s->dv, (uint32_t)s->ddu, (uint32_t)s->ddv);
@@ -322,11 +322,11 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
         const uint32_t z0 = s.z;
         uint32_t dz, zz = z0;
 #endif
-#if FXL_HAVE_AUTO && FXL_T_DEPTH
+#if FXL_HAVE_QUAD && FXL_T_DEPTH
         if (quadseg)
             lean_next_uvz_rc(tri, &s, mult);
         else
-#elif FXL_HAVE_AUTO
+#elif FXL_HAVE_QUAD
         if (quadseg)
             lean_next_uv_rc(tri, &s, mult);
         else
@@ -393,7 +393,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
         }
         /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
          * test keeps a broken caller from writing a negative count */
-#if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
 #define FXL_T_QUAD_PICK(call_q, call) (quad ? (call_q) : (call))
 #else
 #define FXL_T_QUAD_PICK(call_q, call) ((void)ddu, (void)ddv, (call))
@@ -428,6 +428,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 }
 
 #if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
 /* The quadratic copy of the lean walk, out of line: one copy serving both
  * kinds of adaptive triangle cost the affine ones ~25 instructions a
  * segment. */
@@ -436,6 +437,7 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _quad)(const fxl__tri_t *tri, int
 {
     FXL_T_LEAN(tri, 1, 1, row, xl, xr, cl, cr);
 }
+#endif
 
 /* The affine adaptive copy out of line as well. */
 static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _auto)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
@@ -499,10 +501,12 @@ static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t x
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
+#if FXL_HAVE_QUAD
         if (tri->auto_quad) {
             FXL__CAT(FXL_T_LEAN, _quad)(tri, row, xl, xr, cl, cr);
             return;
         }
+#endif
         if (tri->auto_seg) {
             FXL__CAT(FXL_T_LEAN, _auto)(tri, row, xl, xr, cl, cr);
             return;
