@@ -183,7 +183,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
          * at most R 2^cap |q_x| / (4 q_min), a quadratic segment (auto.h) by
          * 0.0482 R (2^cap |q_x| / q_min)^2. Where the first fits, the N
          * bound would give whole spans too (the same pixels); where only
-         * the second does, small triangles (spans <= 8 pixels, whose cost
+         * the second does, small triangles (spans <= 16 pixels, whose cost
          * is this set-up's) take whole quadratic spans. Log2 margins: +2
          * for each upper and +1 for each lower estimate. */
         const uint64_t R = uv_range_q16(tri->tex, v);
@@ -195,7 +195,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
             const int32_t lrho = fxl__log2_q8(g) + 2 - (fxl__log2_q8((uint64_t)tri->q_min) - 1);
             if (lr + 2 + 256 * cap + lrho - 512 <= lba - 1)
                 return;
-            if (quad && cap <= 3 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
+            if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
                 tri->qx_m = qx.m;
                 tri->qx_e = qx.e;
                 tri->auto_quad = 1;
