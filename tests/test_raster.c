@@ -467,6 +467,34 @@ static double wrap_err(double got, double want, double period)
     return e > period / 2 ? period - e : e;
 }
 
+/* An FXL_PERSP_AUTO draw (default budget, no depth) of a 64 x 64 RGB565
+ * texture with one level, over the caller's texels. */
+static void auto_draw_64(fxl_draw_t *d, fxl_texture_t *tex, uint16_t *texels)
+{
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(d);
+    d->texture = tex;
+    d->depth = 0;
+    d->persp = FXL_PERSP_AUTO;
+}
+
+/* The largest Euclidean (u, v) error, in texels of a 64 x 64 texture, over
+ * the pixels probe_seg recorded for triangle v (320 x 240 target). */
+static double probed_max_error(const fxl_vertex_t v[3])
+{
+    double e_max = 0;
+    int x, y;
+    for (y = 0; y < 240; y++)
+        for (x = 0; x < 320; x++)
+            if (probe_count[y * 320 + x]) {
+                double eu, ev, e;
+                exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
+                e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
+                e_max = e > e_max ? e : e_max;
+            }
+    return e_max;
+}
+
 /* View-space point -> vertex, 60 degree vertical fov, 320x240, near 1. */
 
 typedef struct { fxl_vertex_t v[3]; } tri_t;
@@ -813,11 +841,7 @@ void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
     double worst = 0;
     char msg[200];
     lcg_state = 777u;
-    fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
-    fxl_draw_defaults(&d);
-    d.texture = &tex;
-    d.depth = 0;
-    d.persp = FXL_PERSP_AUTO;
+    auto_draw_64(&d, &tex, texels);
     for (b = 0; b < 3; b++) {
         d.auto_budget = budgets[b];
         for (i = 0; i < 200; i++) {
@@ -881,14 +905,7 @@ void test_auto_vertex_test_keeps_small_triangles_within_budget(void)
                 probe_target(&t, buf, 320, 240);
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_len));
             }
-            for (y = 0; y < 240; y++)
-                for (x = 0; x < 320; x++)
-                    if (probe_count[y * 320 + x]) {
-                        double eu, ev, e;
-                        exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
-                        e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
-                        e_max = e > e_max ? e : e_max;
-                    }
+            e_max = probed_max_error(v);
             if (e_max / (budgets[b] / 65536.0) > worst)
                 worst = e_max / (budgets[b] / 65536.0);
             snprintf(msg, sizeof msg, "budget %.4f tri %d: max error %.4f texels, vertex bound %.4f, log2 length %d",
@@ -923,15 +940,11 @@ void test_auto_quadratic_segments_stay_within_budget(void)
     fxl_target_t t;
     fxl_draw_t d;
     fxl_texture_t tex;
-    int b, i, j, x, y, quad_tris = 0;
+    int b, i, j, quad_tris = 0;
     double worst = 0;
     char msg[200];
     lcg_state = 4242u;
-    fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
-    fxl_draw_defaults(&d);
-    d.texture = &tex;
-    d.depth = 0;
-    d.persp = FXL_PERSP_AUTO;
+    auto_draw_64(&d, &tex, texels);
     probe_quad_segs = 0;
     for (b = 0; b < 3; b++) {
         d.auto_budget = budgets[b];
@@ -946,14 +959,7 @@ void test_auto_quadratic_segments_stay_within_budget(void)
             probe_last_quad = 0;
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_quad));
             quad_tris += probe_last_quad;
-            for (y = 0; y < 240; y++)
-                for (x = 0; x < 320; x++)
-                    if (probe_count[y * 320 + x]) {
-                        double eu, ev, e;
-                        exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
-                        e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
-                        e_max = e > e_max ? e : e_max;
-                    }
+            e_max = probed_max_error(v);
             if (e_max / (budgets[b] / 65536.0) > worst)
                 worst = e_max / (budgets[b] / 65536.0);
             snprintf(msg, sizeof msg, "budget %.4f tri %d: max error %.4f texels", budgets[b] / 65536.0, i, e_max);
