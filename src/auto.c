@@ -52,7 +52,7 @@ static int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
 }
 
 /* Is a quadratic length 2^kq worth it over the affine 2^k? A quadratic
- * pixel costs ~4 Cortex-M4 instructions more (the two steps' steps), and
+ * pixel costs ~4 Cortex-M4 instructions more (the steps of the steps), and
  * its segment ~60 more (fxl__quad_steps, q_x/q) than a division's ~150;
  * exact pixels (k = 0) run at ~80 each. Per pixel, ~(150 + 60) / 2^kq + 4
  * against 150 / 2^k (80 at k = 0): two doublings pay from k = 0 to 4, one
@@ -66,6 +66,16 @@ static int quad_pays(int k, int kq)
     if (k <= 3)
         return 1;
     return k == 4 && kq >= 6;
+}
+
+/* Quadratic segments for tri: one length (auto_seg 2, seg_log2) or per
+ * segment (auto_seg 1); q_x as fxl__quad_g takes it. */
+static void use_quad(fxl__tri_t *tri, fxl__sf_t qx, uint8_t auto_seg)
+{
+    tri->qx_m = qx.m;
+    tri->qx_e = qx.e;
+    tri->auto_quad = 1;
+    tri->auto_seg = auto_seg;
 }
 
 /* floor(x / 256) for either sign (>> of a negative int is
@@ -147,7 +157,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
     fxl__sf_t qx, q0, qy, A[2], B[2], n[3][2];
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, w;
     int i, j, cap = 0, k, E, quad;
-    int32_t lbq, lba;
+    int32_t lbq, lba, lqmin;
 
     tri->auto_seg = 0;
     tri->auto_quad = 0;
@@ -196,10 +206,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
             if (lr + 2 + 256 * cap + lrho - 512 <= lba - 1)
                 return;
             if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
-                tri->qx_m = qx.m;
-                tri->qx_e = qx.e;
-                tri->auto_quad = 1;
-                tri->auto_seg = 2;
+                use_quad(tri, qx, 2);
                 return;
             }
         }
@@ -227,7 +234,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
     lqx = fxl__sf_log2_q8(qx);
-    k = fit_log2(lqx + lnmax / 2 - 3 * fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0)), lb, cap);
+    lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
+    k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
     tri->seg_log2 = k;
     if (k >= cap)
         return;
@@ -236,7 +244,6 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
          * the bound; it only wins where q varies enough that the longest
          * allowed length (at the largest vertex q) is 4x the one the whole
          * triangle allows. */
-        const int32_t lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
         const int32_t lqmax = fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
         int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, cap);
         /* Quadratic segments (auto.h) on repeat and mirror axes (modular
@@ -251,10 +258,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
             if (quad_pays(k, kq) && seg_max < kq + 2) {
                 /* one quadratic length for the whole triangle */
                 tri->seg_log2 = kq;
-                tri->qx_m = qx.m;
-                tri->qx_e = qx.e;
-                tri->auto_quad = 1;
-                tri->auto_seg = 2;
+                use_quad(tri, qx, 2);
                 return;
             }
             /* per segment: quadratic where it pays at the nearest
@@ -303,12 +307,12 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
          * (4 log2 q_min: -4). */
         const int32_t t0q = lbq - 1 + 1120 - 2 * (lqx + 2) - 256 * E - 4 + 4 * 256 * FXL__PF;
         tri->auto_tq = t0q - tri->auto_t0;
-        tri->qx_m = qx.m;
-        tri->qx_e = qx.e;
-        tri->auto_quad = 1;
     }
     tri->auto_cap = (int8_t)cap;
     tri->seg_log2 = cap;
-    tri->auto_seg = 1;
+    if (quad)
+        use_quad(tri, qx, 1);
+    else
+        tri->auto_seg = 1;
 }
 #endif /* FXL_HAVE_AUTO */

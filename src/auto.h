@@ -78,9 +78,11 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
     return tri->auto_t0 - ((fxl__log2_q8_inline(s) + 3) >> 1);
 }
 
-/* Quadratic segments: at most 2^6 pixels (the fixed-point second
- * difference then errs by < 1/100 texel, fxl__quad_steps), and the flag
- * fxl__auto_next_q adds to their log2 length. */
+/* Quadratic segments: at most 2^5 pixels (the fixed-point steps then err
+ * by < 0.003 texel, fxl__quad_steps; beyond that, where chords would need
+ * 32 pixels or more, a quadratic pixel's two extra adds cost more than
+ * the divisions they save), and the flag fxl__auto_next_q adds to their
+ * log2 length. */
 #define FXL__QUAD_CAP 5
 #define FXL__AUTO_QUAD 16
 #define FXL__AUTO_LOG2(k) ((k) & (FXL__AUTO_QUAD - 1))
@@ -271,7 +273,7 @@ static inline int32_t fxl__quad_c1(int32_t d, int32_t gbar)
  * dd = -(c1 >> (k - 1)) is exact) and du = (d >> k) + c1 - (c1 >> k); all
  * modulo 2^32, as the walk steps. The rounding of c1 moves C by < len^2/2
  * q16 units (the parabola by < len^2/8), the two floors the far end by
- * < 2 len: < 0.01 texel at len = 64, within the 1/64 texel auto.c
+ * < 2 len: < 0.003 texel at len = 32, within the 1/64 texel auto.c
  * reserves. The last segment divides, truncating: dd = -2 c1 / len,
  * du = (d - dd len (len - 1) / 2) / len (< len + len^2/8 units).
  * A saturated g only shrinks |C|, its sign kept: the error then stays

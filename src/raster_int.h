@@ -95,8 +95,9 @@ typedef struct fxl__tri {
     fxl__recip_t rc_qmin;        /* fxl__recip(q_min), with q_const */
 
     int seg_log2;                /* log2 of the segment length; -1: whole span */
-    /* FXL_PERSP_AUTO per segment (auto.c, auto.h): with auto_seg set, each
-     * segment's length comes from the error bound at its correction point */
+    /* FXL_PERSP_AUTO (auto.c, auto.h): auto_seg 1, each segment's length
+     * comes from the error bound at its correction point; 2, every segment
+     * is quadratic, of length 2^seg_log2 (0: one fixed length, as other modes) */
     uint8_t auto_seg;
     int8_t auto_cap;             /* longest log2 length: the widest span */
     uint32_t auto_gx32;          /* ceil(|q_x| per pixel >> PF), saturated at 2^31 */
@@ -106,7 +107,7 @@ typedef struct fxl__tri {
     /* Second-order (quadratic) segments (auto.h, fxl__quad_steps): a
      * segment the affine bound rejects may still fit the bound of a
      * parabola through its exact ends, which also follows the curvature. */
-    uint8_t auto_quad;
+    uint8_t auto_quad;           /* read through fxl__auto_quad() */
     int32_t auto_tq;             /* the quadratic bound's t_row minus the affine one's, q8 */
     int32_t qx_m;                /* q_x per pixel = qx_m * 2^qx_e, |qx_m| in [2^30, 2^31) */
     int qx_e;
@@ -216,9 +217,9 @@ void fxl__edge_step(fxl__edge_t *e);
 /* FXL_PERSP_AUTO (auto.c). Before set-up: does the vertex bound prove the
  * triangle within d->auto_budget drawn affine (d has a texture)? Then it
  * is set up as FXL_PERSP_AFFINE. Otherwise fxl__auto_setup, after
- * fxl__setup (X, Y are the snapped vertices), sets seg_log2 (0..8) when
- * one length suits the whole triangle, else auto_seg and the per-row terms
- * of auto.h. */
+ * fxl__setup (v the vertices, X, Y snapped), sets seg_log2 (0..8) when
+ * one length suits the whole triangle (with auto_quad and auto_seg 2 when
+ * it is quadratic), else auto_seg 1 and the per-row terms of auto.h. */
 int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v);
 void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3], const int32_t Y[3]);
 
