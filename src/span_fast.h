@@ -265,7 +265,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
     uint32_t written = 0;
 #endif
     fxl__lean_t s;
-    uint32_t segments = 1;
+    uint32_t segments = 1, skipped = 0;
     FXL_T_LV L;
 
     (void)autoseg;
@@ -293,6 +293,19 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #endif
     while (x < cr) {
         const uint32_t u0 = s.u, v0 = s.v;
+        if (xr - x == 1) {
+            /* The span's last pixel as a segment of its own: it is the
+             * correction point just computed, so the division at its end
+             * (which no pixel uses) is skipped. x >= cl here (cl < cr <= xr).
+             * 15% of the tunnel's segments; the pixels are the same. */
+#if FXL_T_DEPTH
+            written += FXL_T_LOOP(px_cl + (x - cl), zb_cl + (x - cl), 1, s.z, 0u, &L, u0, v0, 0u, 0u);
+#else
+            (void)FXL_T_LOOP(px_cl + (x - cl), 0, 1, 0u, 0u, &L, u0, v0, 0u, 0u);
+#endif
+            skipped = 1u;
+            break;
+        }
 #if FXL_HAVE_AUTO
         const int kr = !autoseg  ? k
                        : !quadseg ? fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)s.sq)
@@ -416,7 +429,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
          * x0 (the last one shorter), plus the division at x0 (AUTO counts
          * its divisions as it goes) */
         if (!autoseg)
-            segments = 1u + (uint32_t)((cr - x0 + ((int32_t)1 << k) - 1) >> k);
+            segments = 1u + (uint32_t)((cr - x0 + ((int32_t)1 << k) - 1) >> k) - skipped;
         tri->stats->divisions += segments;
 #if FXL_T_DEPTH
         tri->stats->pixels += written;
