@@ -1180,10 +1180,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             for (i = 0; i < np; i++)
                 pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div);
         }
-        if (full || div)
-            correct(tri, pv, &p1);
-        else
-            p1 = p0;   /* a 1-pixel last segment ends where it starts */
+        correct(tri, pv, &p1);
 #define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
         a = x > cl ? x : cl;
