@@ -68,6 +68,14 @@ static int quad_pays(int k, int kq)
     return k == 4 && kq >= 6;
 }
 
+/* fxl__log2_q8 of x > 0, inline where speed counts: six calls a triangle
+ * were ~1 Cortex-M4 instruction a pixel of the tunnel. */
+#if defined(__OPTIMIZE_SIZE__)
+#define log2_q8(x) fxl__log2_q8(x)
+#else
+#define log2_q8(x) fxl__log2_q8_inline(x)
+#endif
+
 /* Quadratic segments for tri: one length (auto_seg 2, seg_log2) or per
  * segment (auto_seg 1); q_x as fxl__quad_g takes it. */
 static void use_quad(fxl__tri_t *tri, fxl__sf_t qx, uint8_t auto_seg)
@@ -178,12 +186,12 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
     qx = fxl__sf_make(qx_g, 0);
     /* The budget's q8 log2, less the margins of the vertex test (affine)
      * and of quadratic segments. */
-    lb = fxl__log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
+    lb = log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
     {
         const int32_t b = tri->draw->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : tri->draw->auto_budget;
         const int32_t ba = b - (b >> 4) - FXL_Q16_ONE / 128, bq = b - (b >> 4) - FXL_Q16_ONE / 64;
-        lba = ba > 0 ? fxl__log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
-        lbq = bq > 0 ? fxl__log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
+        lba = ba > 0 ? log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
+        lbq = bq > 0 ? log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
     }
     {
@@ -201,8 +209,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
         if (R == 0)
             return;   /* u, v constant: no error at any length */
         if (R <= INT32_MAX && tri->q_min > 0) {
-            const int32_t lr = fxl__log2_q8(R) - 16 * 256;
-            const int32_t lrho = fxl__log2_q8(g) + 2 - (fxl__log2_q8((uint64_t)tri->q_min) - 1);
+            const int32_t lr = log2_q8(R) - 16 * 256;
+            const int32_t lrho = log2_q8(g) + 2 - (log2_q8((uint64_t)tri->q_min) - 1);
             if (lr + 2 + 256 * cap + lrho - 512 <= lba - 1)
                 return;
             if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
