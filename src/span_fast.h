@@ -2,7 +2,9 @@
  * span.c several times).
  *
  * Macro contract, all defined by the includer and undefined here:
- *   FXL_T_LOOP      name of the generated pixel loop (static inline)
+ *   FXL_T_LOOP      name of the generated pixel loop (span_loop.h, static
+ *                   inline); with FXL_HAVE_QUAD a second, FXL_T_LOOP##_quad,
+ *                   steps quadratic segments (one-level variants only)
  *   FXL_T_SPAN      name of the generated span function (fxl__span_fast_fn)
  *   FXL_T_SEG       name of the generated fxl__seg_fn, or leave undefined
  *                   (the mip-linear variants have none: pick_seg_fn hands out
