@@ -130,32 +130,34 @@ static uint32_t range3(int32_t a, int32_t b, int32_t c)
     return (uint32_t)hi - (uint32_t)lo;
 }
 
-/* range u + range v of the vertices in q16 texels (normalised q16 times
- * the level-0 size); 32 x 32 multiplies, not 64-bit shifts (one UMULL,
- * one UMLAL on a Cortex-M) */
-static uint64_t uv_range_q16(const fxl_texture_t *t, const fxl_vertex_t *v)
+uint64_t fxl__auto_uv_range(const fxl_texture_t *t, const fxl_vertex_t v[3])
 {
+    /* 32 x 32 multiplies, not 64-bit shifts (one UMULL, one UMLAL on a
+     * Cortex-M) */
     return (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
            (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
 }
 
-int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v)
+/* The budget (> 0, check_draw) capped at 256 texels, less 1/16 of itself
+ * and `texels` (q16) for the walk's rounding; <= 0 when nothing is left. */
+static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
 {
-    const uint64_t duv = uv_range_q16(d->texture, v);
+    const int32_t b = d->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : d->auto_budget;
+    return b - (b >> 4) - texels;
+}
+
+int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v, uint64_t duv)
+{
+    const int32_t b = budget_less_margins(d, FXL_Q16_ONE / 128);
     const uint32_t w0 = v[0].inv_w, w1 = v[1].inv_w, w2 = v[2].inv_w;
     const uint32_t qmin = w0 < w1 ? (w0 < w2 ? w0 : w2) : (w1 < w2 ? w1 : w2);
     const uint32_t qmax = w0 > w1 ? (w0 > w2 ? w0 : w2) : (w1 > w2 ? w1 : w2);
-    /* the budget (> 0, check_draw) capped at 256 texels, less the margins */
-    uint32_t b = d->auto_budget > ((int32_t)1 << 24) ? (uint32_t)1 << 24 : (uint32_t)d->auto_budget;
-    if (b <= (b >> 4) + FXL_Q16_ONE / 128)
-        return 0;
-    b -= (b >> 4) + FXL_Q16_ONE / 128;
     /* duv < 2^31 and qmax - qmin < 2^32: the product < 2^63; the right side
      * < 2^2 * 2^32 * 2^24 */
-    return duv <= INT32_MAX && duv * (qmax - qmin) <= 4u * ((uint64_t)qmin * b);
+    return b > 0 && duv <= INT32_MAX && duv * (qmax - qmin) <= 4u * ((uint64_t)qmin * (uint32_t)b);
 }
 
-void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3], const int32_t Y[3])
+void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
      * u in texels = (S / q) * 2^(shift_u + log2_w - 16). */
@@ -188,8 +190,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
      * and of quadratic segments. */
     lb = log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
     {
-        const int32_t b = tri->draw->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : tri->draw->auto_budget;
-        const int32_t ba = b - (b >> 4) - FXL_Q16_ONE / 128, bq = b - (b >> 4) - FXL_Q16_ONE / 64;
+        const int32_t ba = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
+        const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
         lba = ba > 0 ? log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
         lbq = bq > 0 ? log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
@@ -204,7 +206,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3
          * the second does, small triangles (spans <= 16 pixels, whose cost
          * is this set-up's) take whole quadratic spans. Log2 margins: +2
          * for each upper and +1 for each lower estimate. */
-        const uint64_t R = uv_range_q16(tri->tex, v);
+        const uint64_t R = duv;
         const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
         if (R == 0)
             return;   /* u, v constant: no error at any length */

@@ -200,6 +200,14 @@ static inline int fxl__auto_next_q(const fxl__tri_t *tri, int32_t t_row, int32_t
     return kq > k ? kq | FXL__AUTO_QUAD : k;
 }
 
+/* The chooser the triangle's segments take (walks where that is not a
+ * compile-time constant). */
+static inline int fxl__auto_next_tri(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xl, int32_t xr,
+                                     int64_t q)
+{
+    return fxl__auto_quad(tri) ? fxl__auto_next_q(tri, t_row, x, xl, xr, q) : fxl__auto_next(tri, t_row, x, xl, xr, q);
+}
+
 /* Start of the segment that contains pixel cl (cl > xl: the walk begins
  * there instead of at xl). dY as for fxl__plane_eval. */
 static inline int32_t fxl__auto_first(const fxl__tri_t *tri, int32_t t_row, int32_t xl, int32_t xr, int32_t cl,

@@ -208,6 +208,9 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
     int64_t det;
     int mid_left, odd = 0;
+#if FXL_HAVE_AUTO
+    uint64_t auto_duv = 0;   /* range u + range v, q16 texels (AUTO) */
+#endif
 
     if (!target || !draw || !v)
         return FXL_ERR_ARG;
@@ -276,9 +279,13 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.affine = draw->persp == FXL_PERSP_AFFINE;
 #if FXL_HAVE_AUTO
     /* AUTO: where the vertex bound holds, no division is needed (auto.c).
-     * Gouraud colours stay perspective-correct: the budget is in texels. */
-    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.has_color && fxl__auto_affine(draw, v))
-        tri.affine = 1;
+     * Gouraud colours stay perspective-correct: the budget is in texels.
+     * The vertices' texel ranges serve the vertex test and the set-up. */
+    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv) {
+        auto_duv = fxl__auto_uv_range(tri.tex, v);
+        if (!tri.has_color && fxl__auto_affine(draw, v, auto_duv))
+            tri.affine = 1;
+    }
 #endif
     tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.nlevels = 0;
@@ -290,7 +297,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         return st;
 #if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
-        fxl__auto_setup(&tri, v, X, Y);
+        fxl__auto_setup(&tri, auto_duv, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

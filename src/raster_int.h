@@ -217,11 +217,13 @@ void fxl__edge_step(fxl__edge_t *e);
 /* FXL_PERSP_AUTO (auto.c). Before set-up: does the vertex bound prove the
  * triangle within d->auto_budget drawn affine (d has a texture)? Then it
  * is set up as FXL_PERSP_AFFINE. Otherwise fxl__auto_setup, after
- * fxl__setup (v the vertices, X, Y snapped), sets seg_log2 (0..8) when
+ * fxl__setup (X, Y the snapped vertices), sets seg_log2 (0..8) when
  * one length suits the whole triangle (with auto_quad and auto_seg 2 when
  * it is quadratic), else auto_seg 1 and the per-row terms of auto.h. */
-int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v);
-void fxl__auto_setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3], const int32_t Y[3]);
+/* range u + range v of the vertices, q16 texels of level 0 */
+uint64_t fxl__auto_uv_range(const fxl_texture_t *t, const fxl_vertex_t v[3]);
+int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v, uint64_t duv);
+void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);

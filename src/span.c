@@ -712,9 +712,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
-        longer = autoseg && !((uint32_t)(x - xl) & 1u) &&
-                 (fxl__auto_quad(tri) ? fxl__auto_next_q(tri, t_row, x, xl, xr, (int64_t)sq)
-                                 : fxl__auto_next(tri, t_row, x, xl, xr, (int64_t)sq)) != 0;
+        longer = autoseg && !((uint32_t)(x - xl) & 1u) && fxl__auto_next_tri(tri, t_row, x, xl, xr, (int64_t)sq) != 0;
 #endif
         if (longer || m == FXL__BATCH) {
             /* the run ends at x, or (a full chunk) goes on there */
@@ -1153,8 +1151,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         (void)quad;   /* without FXL_HAVE_AUTO */
 #if FXL_HAVE_AUTO
         if (tri->auto_seg == 1) {
-            ki = fxl__auto_quad(tri) ? fxl__auto_next_q(tri, t_row, x, xl, xr, pv[PQ])
-                                : fxl__auto_next(tri, t_row, x, xl, xr, pv[PQ]);
+            ki = fxl__auto_next_tri(tri, t_row, x, xl, xr, pv[PQ]);
             quad = ki >= FXL__AUTO_QUAD;
             ki = FXL__AUTO_LOG2(ki);
         } else {
