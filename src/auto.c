@@ -198,14 +198,15 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     }
     {
         /* Whole spans from the vertex ranges, before the N bound: within a
-         * span of at most 2^cap pixels u and v change by at most
-         * R = range u + range v, and q by 2^cap |q_x|; a chord then errs by
-         * at most R 2^cap |q_x| / (4 q_min), a quadratic segment (auto.h) by
-         * 0.0482 R (2^cap |q_x| / q_min)^2. Where the first fits, the N
-         * bound would give whole spans too (the same pixels); where only
-         * the second does, small triangles (spans <= 16 pixels, whose cost
-         * is this set-up's) take whole quadratic spans. Log2 margins: +2
-         * for each upper and +1 for each lower estimate. */
+         * span of at most w pixels u and v change by at most
+         * R = range u + range v, and q by w |q_x|; a chord then errs by
+         * at most R w |q_x| / (4 q_min), a quadratic segment (auto.h) by
+         * 0.0482 R (w |q_x| / q_min)^2. Where the first fits, spans are
+         * drawn whole and affine; where only the second does, small
+         * triangles (spans <= 16 pixels, whose cost is this set-up's) take
+         * whole quadratic spans. w itself rather than 2^cap makes the test
+         * up to 2x (4x) tighter. Log2 margins: +2 for each upper and +1 for
+         * each lower estimate. */
         const uint64_t R = duv;
         const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
         if (R == 0)
@@ -213,9 +214,10 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
         if (R <= INT32_MAX && tri->q_min > 0) {
             const int32_t lr = log2_q8(R) - 16 * 256;
             const int32_t lrho = log2_q8(g) + 2 - (log2_q8((uint64_t)tri->q_min) - 1);
-            if (lr + 2 + 256 * cap + lrho - 512 <= lba - 1)
+            const int32_t lw = log2_q8((uint64_t)w) + 2;
+            if (lr + 2 + lw + lrho - 512 <= lba - 1)
                 return;
-            if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (256 * cap + lrho) <= lbq - 1 + 1120) {
+            if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (lw + lrho) <= lbq - 1 + 1120) {
                 use_quad(tri, qx, 2);
                 return;
             }
