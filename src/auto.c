@@ -237,8 +237,11 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
      * are largest on its top or bottom row: the vertices of least and
      * greatest Y (a third evaluation was ~0.8 Cortex-M4 instructions a
      * pixel of the tunnel). */
-    ys[0] = Y[0] <= Y[1] ? (Y[0] <= Y[2] ? Y[0] : Y[2]) : (Y[1] <= Y[2] ? Y[1] : Y[2]);
-    ys[1] = Y[0] >= Y[1] ? (Y[0] >= Y[2] ? Y[0] : Y[2]) : (Y[1] >= Y[2] ? Y[1] : Y[2]);
+    ys[0] = ys[1] = Y[0];
+    for (i = 1; i < 3; i++) {
+        ys[0] = Y[i] < ys[0] ? Y[i] : ys[0];
+        ys[1] = Y[i] > ys[1] ? Y[i] : ys[1];
+    }
     for (i = 0; i < 2; i++) {
         fxl__sf_t dy = fxl__sf_make((int64_t)ys[i] - tri->Y0, 0), n2;
         int32_t l;
