@@ -296,8 +296,9 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
             return;
     }
     /* Per segment. N is linear in Y, so inside the triangle |N_u|, |N_v| <=
-     * their value at the top or bottom vertex < 2^(lmax + 2 steps): units of 2^E put them
-     * below 2^29. The slope keeps 16 more bits (|dN/dY| * height <= 2 max). */
+     * their value at the top or bottom vertex < 2^(lmax + 2 steps): units
+     * of 2^E put them below 2^29. The slope keeps 16 more bits
+     * (|dN/dY| * height <= 2 max). */
     for (i = 0; i < 2; i++)
         for (j = 0; j < 2; j++) {
             const int32_t l = fxl__sf_log2_q8(n[i][j]);
