@@ -187,9 +187,9 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     if (cap <= 1)
         return;
     qx = fxl__sf_make(qx_g, 0);
-    /* The budget's q8 log2, less the margins of the vertex test (affine)
-     * and of quadratic segments. */
-    lb = log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
+    /* The budget's q8 log2 less the margins of the vertex test (affine)
+     * and of quadratic segments (the plain budget's, lb, once the vertex
+     * test has not settled the triangle). */
     {
         const int32_t ba = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
         const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
@@ -255,6 +255,7 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     if (lnmax == INT32_MIN / 4)
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
+    lb = log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
     lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
