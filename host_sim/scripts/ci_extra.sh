@@ -5,7 +5,10 @@
 #      reproduces with the printed bytes);
 #   2. the libFuzzer target for 20 s when clang is installed;
 #   3. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, Cortex-M4 on
-#      qemu where the tools exist).
+#      qemu where the tools exist);
+#   4. bench/experiments/*.c compile warning-free (host, and Cortex-M4 where
+#      the cross compiler exists), so the measurements they record stay
+#      reproducible.
 # Environment: FXL_BUILD_DIR (host build, default build), FXL_ASAN_DIR
 # (sanitizer build from `make sanitize`, default build-asan; configured here
 # when missing), FXL_FUZZ_CASES (default 1000000), FXL_FUZZ_SEED (default 1).
@@ -56,4 +59,15 @@ fi
 
 echo "== determinism"
 FXL_BUILD_DIR="$bdir" bash host_sim/scripts/determinism.sh || status=1
+
+echo "== experiments"
+for src in bench/experiments/*.c; do
+    obj="$bdir/$(basename "$src" .c)"
+    "${CC:-cc}" -std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -c "$src" -o "$obj.o" || status=1
+    if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+        arm-none-eabi-gcc -std=c99 -Wall -Wextra -Wpedantic -Werror -mcpu=cortex-m4 -mthumb -O2 \
+            -c "$src" -o "$obj.m4.o" || status=1
+    fi
+    echo "$src: compiled"
+done
 exit $status
