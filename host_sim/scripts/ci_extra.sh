@@ -63,11 +63,12 @@ FXL_BUILD_DIR="$bdir" bash host_sim/scripts/determinism.sh || status=1
 echo "== experiments"
 for src in bench/experiments/*.c; do
     obj="$bdir/$(basename "$src" .c)"
-    "${CC:-cc}" -std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -c "$src" -o "$obj.o" || status=1
+    ok=1
+    "${CC:-cc}" -std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -c "$src" -o "$obj.o" || ok=0
     if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
         arm-none-eabi-gcc -std=c99 -Wall -Wextra -Wpedantic -Werror -mcpu=cortex-m4 -mthumb -O2 \
-            -c "$src" -o "$obj.m4.o" || status=1
+            -c "$src" -o "$obj.m4.o" || ok=0
     fi
-    echo "$src: compiled"
+    if [ "$ok" = 1 ]; then echo "$src: compiled"; else echo "$src: FAILED"; status=1; fi
 done
 exit $status
