@@ -122,9 +122,15 @@ typedef struct fxl__tri {
     fxl__level_t level[FXL_TEX_MAX_LEVELS];
     uint8_t mip_linear;          /* blend two levels */
     int32_t lod_max_q8;          /* (levels - 1) * 256 */
-    /* per-segment LOD's constant factors (fxl__span_setup, sfloat.h):
-     * the u, v gradients along x and y, texel-scaled, and q's */
-    fxl__sf_t lod_sux, lod_svx, lod_suy, lod_svy, lod_qx, lod_qy;
+    /* per-segment LOD's constant factors (span.c, lod_setup): for each
+     * direction g (x, y) the numerators S_g - u q_g of du/dg, dv/dg are
+     * lod_s[g][u or v] - u' * lod_mq[g] in units of 2^e, lod_e512[g] =
+     * 512 e, with u' = u >> lod_ash (q16 texels of level 0, saturated) */
+    int64_t lod_s[2][2];
+    int32_t lod_mq[2];
+    int32_t lod_e512[2];
+    uint8_t lod_ash;
+    uint8_t uv_len[2];           /* bit length of the largest rebased vertex u, v (normalised q16, setup.c) */
 
     /* derived once per triangle for the span walk (fxl__span_setup) */
     int np;                             /* planes in use: 2, 4 or 7 */

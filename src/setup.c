@@ -217,10 +217,16 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         for (i = 0; i < 3; i++)
             c[i] = v[i].u;
         rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a);
+#if FXL_HAVE_MIPMAP
+        tri->uv_len[0] = (uint8_t)fit_shift(a, 0);   /* per-segment LOD (span.c) */
+#endif
         persp_plane(tri, FXL__AU, a, q, X, Y, det);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
         rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
+#if FXL_HAVE_MIPMAP
+        tri->uv_len[1] = (uint8_t)fit_shift(a, 0);   /* per-segment LOD (span.c) */
+#endif
         persp_plane(tri, FXL__AV, a, q, X, Y, det);
     }
     if (fxl__has_color(tri)) {

@@ -367,26 +367,43 @@ static inline int32_t shift_step(int64_t d, int level)
 
 #if FXL_HAVE_MIPMAP
 /* ---- level of detail from the plane gradients ----------------------------
- * u = S / q with S, q planes, so du/dx = (S_x - u q_x) / q (likewise y, v).
- * The terms span many octaves (a sliver's gradients, a far q), so they are
- * carried as m * 2^e with |m| < 2^31: a few integer operations, no floats,
- * ~2^-30 relative precision - far more than the 1/256 level LOD needs. */
-/* (S_g 2^sh - u q_g) / q for one gradient g, in q16 texels per pixel. */
-/* d(S/q)/dx = (S_x - (S/q) q_x) / q from the gradient s (texel-scaled,
- * fxl__span_setup), the value a = S/q and q's gradient; rq = 1/q. */
-static FXL__SF_INLINE fxl__sf_t deriv(fxl__sf_t s, fxl__sf_t a, fxl__sf_t q_g, fxl__sf_t rq)
+ * u = S / q with S, q planes, so du/dg = (S_g - u q_g) / q for g = x, y
+ * (likewise v) and, in texels of level 0 (u in q16),
+ *   LOD = log2 max_g |(S_ug - u q_g, S_vg - v q_g)| - log2 q - 16.
+ * lod_setup puts each direction's three gradients on one integer scale, so
+ * a correction point pays four 32 x 32-bit products, two squared lengths
+ * of 15 significant bits and three table logarithms. The 1/q of the
+ * derivatives becomes the subtracted log2 q: no division. (Carried as
+ * soft floats with a reciprocal, the same LOD cost ~360 x86-64 and ~460
+ * Cortex-M4 instructions a correction point.) */
+
+/* s as an integer in units of 2^e: exact when s.e >= e (the caller keeps
+ * s.e - e <= 30, so |result| <= 2^61), else floor-shifted. */
+static int64_t lod_fix(fxl__sf_t s, int e)
 {
-    return fxl__sf_mul(fxl__sf_addsub(s, fxl__sf_mul(a, q_g), -1), rq);
+    const int d = s.e - e;
+    if (d >= 0)
+        return (int64_t)s.m * ((int64_t)1 << d);
+    return fxl__asr32(s.m, d < -31 ? 31 : -d);
 }
 
-/* log2 of |(a, b)| in q8 for a, b in q16 texels per pixel. */
-static FXL__SF_INLINE int32_t log2_len_q8(fxl__sf_t a, fxl__sf_t b)
+/* The numerators' common scale for direction g: S_u, S_v and q's gradient
+ * (soft floats, |m| <= 2^31) and the shift ash that brings u, v into int32.
+ * e is the smallest exponent at which S_u, S_v are below 2^61, given that
+ * the product u' m_q (|u'| <= 2^31) is in units of 2^(ash + q's exponent)
+ * or coarser: every numerator fits int64, and a term the shifts cut short
+ * is below 2^-30 of the one that dominates. */
+static void lod_scale(fxl__tri_t *tri, int g, const fxl__sf_t s[2], fxl__sf_t qg, int ash)
 {
-    fxl__sf_t sq = fxl__sf_addsub(fxl__sf_mul(a, a), fxl__sf_mul(b, b), 1);
-    if (sq.m <= 0)
-        return INT32_MIN / 4;
-    /* log2(len) = (log2(len_q16^2) - 32) / 2 */
-    return (fxl__log2_q8((uint64_t)sq.m) + sq.e * 256 - 32 * 256) / 2;
+    int e = ash + qg.e, i;
+
+    for (i = 0; i < 2; i++)
+        if (s[i].m != 0 && s[i].e - 30 > e)
+            e = s[i].e - 30;
+    tri->lod_mq[g] = (int32_t)lod_fix(qg, e - ash);
+    for (i = 0; i < 2; i++)
+        tri->lod_s[g][i] = lod_fix(s[i], e);
+    tri->lod_e512[g] = 512 * e;
 }
 
 /* lod_at's per-triangle factors (fxl__span_setup). */
@@ -394,31 +411,107 @@ static void lod_setup(fxl__tri_t *tri)
 {
     const int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
     const int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
-    tri->lod_sux = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
-    tri->lod_svx = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
-    tri->lod_suy = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
-    tri->lod_svy = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
-    tri->lod_qx = fxl__sf_make(tri->gpx[PQ], 0);
-    tri->lod_qy = fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0);
+    /* u, v at a correction point lie between the vertices' values (convex
+     * combinations): the shift that keeps those below 2^30 (one bit of
+     * margin for rounding; the conversion saturates beyond it) */
+    int ash = tri->uv_len[0] + (int)tri->tex->log2_w + 1 - 30;
+    const int ashv = tri->uv_len[1] + (int)tri->tex->log2_h + 1 - 30;
+    fxl__sf_t s[2];
+
+    if (ashv > ash)
+        ash = ashv;
+    if (ash < 0)
+        ash = 0;
+    tri->lod_ash = (uint8_t)ash;
+    s[0] = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
+    s[1] = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
+    lod_scale(tri, 0, s, fxl__sf_make(tri->gpx[PQ], 0), ash);
+    s[0] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
+    s[1] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
+    lod_scale(tri, 1, s, fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0), ash);
+}
+
+/* 2 log2 |(a, b)| in q8 for int64 a, b (INT32_MIN / 4 for (0, 0)): the top
+ * 15 bits of the larger magnitude and the same bits of the other squared
+ * in 32 bits, i.e. within 2^-13 relative before the table. */
+static FXL__SF_INLINE int32_t lod_len2_q8(int64_t a, int64_t b)
+{
+    const uint64_t aa = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    const uint64_t ab = b < 0 ? (uint64_t)0 - (uint64_t)b : (uint64_t)b;
+    const uint64_t m = aa | ab;
+    uint32_t x, y, l;
+    int s, msb;
+
+    if (m == 0)
+        return INT32_MIN / 4;
+    s = 64 - fxl__clz64_inline(m) - 15;
+    if (s >= 0) {
+        x = (uint32_t)(aa >> s);
+        y = (uint32_t)(ab >> s);
+    } else {
+        x = (uint32_t)aa << -s;
+        y = (uint32_t)ab << -s;
+    }
+    l = x * x + y * y;   /* [2^28, 2^31) */
+    msb = 31 - fxl__clz32_inline(l);
+    return (int32_t)msb * 256 + fxl__log2_frac_q8[(l >> (msb - 8)) & 0xFFu] + 512 * s;
+}
+
+/* x >> k (floor) saturated to int32, on 32-bit words: u, v lie within the
+ * vertices' range, so the saturation only guards against a broken bound. */
+static FXL__SF_INLINE int32_t lod_coord(int64_t x, int k)
+{
+    const int64_t y = k ? fxl__asr64(x, k) : x;
+    const uint32_t lo = (uint32_t)(uint64_t)y;
+    const int32_t hi = fxl__i32_of_bits((uint32_t)((uint64_t)y >> 32));
+    if (hi != fxl__asr32(fxl__i32_of_bits(lo), 31))
+        return hi < 0 ? INT32_MIN : INT32_MAX;
+    return fxl__i32_of_bits(lo);
+}
+
+/* 2 log2 of direction g's numerator length, q8, scale included. */
+static FXL__SF_INLINE int32_t lod_dir(const fxl__tri_t *tri, int g, int32_t u, int32_t v)
+{
+    /* |s| <= 2^61 and |u m_q| <= 2^62: no overflow */
+    return lod_len2_q8(tri->lod_s[g][0] - fxl__mul_s32(u, tri->lod_mq[g]),
+                       tri->lod_s[g][1] - fxl__mul_s32(v, tri->lod_mq[g])) +
+           tri->lod_e512[g];
+}
+
+/* log2 q in q8 (q_min <= q <= q_max): fxl__log2_q8's value. On 32-bit
+ * cores from q >> (PF - 1), which fits 32 bits (q_max < 2^(31 + PF),
+ * setup.c) and holds the same top 9 bits whenever it is >= 256. */
+static FXL__SF_INLINE int32_t lod_log2_q(int64_t q)
+{
+#if defined(__OPTIMIZE_SIZE__)
+    return fxl__log2_q8((uint64_t)q);
+#else
+    if (FXL__WORD32) {
+        const uint32_t q32 = (uint32_t)((uint64_t)q >> (FXL__PF - 1));
+        if (q32 >= 256u) {
+            const int msb = 31 - fxl__clz32_inline(q32);
+            return (int32_t)(msb + FXL__PF - 1) * 256 + fxl__log2_frac_q8[(q32 >> (msb - 8)) & 0xFFu];
+        }
+    }
+    return fxl__log2_q8_inline((uint64_t)q);
+#endif
 }
 
 #if defined(__GNUC__)
-__attribute__((noinline))   /* once per segment; inlined into every walk it is ~2 KB each */
+__attribute__((noinline))   /* once per segment, from every walk with mip levels */
 #endif
 static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
-    fxl__recip_t rc;
-    fxl__sf_t u, v, rq;
-    int32_t lx, ly;
+    const int32_t u = lod_coord(u64, tri->lod_ash), v = lod_coord(v64, tri->lod_ash);
+    const int32_t lx = lod_dir(tri, 0, u, v), ly = lod_dir(tri, 1, u, v);
 
-    recip_at(tri, qv, &rc);
-    /* 1 / q = r * 2^-62 * 2^-(32 - n) */
-    rq = fxl__sf_make((int64_t)rc.r, rc.n - 94);
-    u = fxl__sf_make(u64, 0);
-    v = fxl__sf_make(v64, 0);
-    lx = log2_len_q8(deriv(tri->lod_sux, u, tri->lod_qx, rq), deriv(tri->lod_svx, v, tri->lod_qx, rq));
-    ly = log2_len_q8(deriv(tri->lod_suy, u, tri->lod_qy, rq), deriv(tri->lod_svy, v, tri->lod_qy, rq));
-    return lx > ly ? lx : ly;
+    /* inside the triangle q_min <= q <= q_max; the clamps catch rounding
+     * at a sliver's tips */
+    if (qv < tri->q_min)
+        qv = tri->q_min;
+    if (qv > tri->q_max)
+        qv = tri->q_max;
+    return fxl__asr32(lx > ly ? lx : ly, 1) - lod_log2_q(qv) - 16 * 256;
 }
 #endif
 

@@ -137,6 +137,89 @@ void test_lod_per_segment_matches_exact_derivatives_on_floor(void)
     TEST_ASSERT_TRUE_MESSAGE(maxcp <= 4.0 / 256, msg);
 }
 
+/* Largest |LOD - exact| at the correction points of one triangle (full
+ * 16-pixel segments), over pixels whose exact LOD is inside the chain by
+ * half a level (clamping would hide an error there). Counts them in *n. */
+static double lod_error_at_correction_points(const fxl_texture_t *t, const fxl_vertex_t tri[3], int *n)
+{
+    static uint16_t buf[320 * 240];
+    fxl_target_t tg;
+    fxl_draw_t d;
+    double maxcp = 0;
+    int x, y;
+    const double top = t->levels - 1.5;
+    fxl_draw_defaults(&d);
+    d.texture = t;
+    d.depth = 0;
+    d.mip = FXL_MIP_NEAREST;
+    d.lod = FXL_LOD_SEGMENT;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
+    probe_base = buf;
+    for (x = 0; x < 320 * 240; x++) {
+        probe_lod[x] = INT32_MIN;
+        probe_cp[x] = 0;
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
+    *n = 0;
+    for (y = 0; y < 240; y++)
+        for (x = 0; x < 320; x++) {
+            double u, v, du[2], dv[2], want, diff;
+            if (probe_lod[y * 320 + x] == INT32_MIN || !probe_cp[y * 320 + x])
+                continue;
+            TEST_ASSERT_EQUAL_INT(0, ref_uv_at(tri, x + 0.5, y + 0.5, 0, &u, &v, du, dv));
+            want = ref_lod_pixel(t, du, dv) + d.lod_bias_q8 / 256.0;
+            if (want < 0.5 || want > top)
+                continue;
+            diff = fabs(probe_lod[y * 320 + x] / 256.0 - want);
+            if (diff > maxcp)
+                maxcp = diff;
+            (*n)++;
+        }
+    return maxcp;
+}
+
+/* The per-segment LOD where its integer scaling is stressed: texture
+ * coordinates 200 periods from the origin with clamp (not rebased, so u
+ * needs more than 32 bits of q16), a depth ratio of 1000 across the
+ * triangle, and rotated triangles whose u and v both change along x and y.
+ * At correction points the LOD is exact up to the log2 table: within
+ * 4/256 level, as on the floor. */
+void test_lod_per_segment_exact_at_extremes(void)
+{
+    static const double off[2] = {0.0, 200.0};
+    static const double depth[3][3] = {{1, 1, 1}, {1, 0.3, 0.05}, {1, 0.01, 0.001}};
+    fxl_texture_t t;
+    int w, dp, rot, n, total = 0;
+    double worst = 0;
+    char msg[160];
+    tex512(&t);
+    for (w = 0; w < 2; w++)
+        for (dp = 0; dp < 3; dp++)
+            for (rot = 0; rot < 4; rot++) {
+                const double a = rot * 0.7 + 0.3, c = cos(a), s = sin(a);
+                fxl_vertex_t tri[3];
+                double err;
+                int i;
+                t.wrap_u = t.wrap_v = (uint8_t)(w ? FXL_WRAP_CLAMP : FXL_WRAP_REPEAT);
+                for (i = 0; i < 3; i++) {
+                    static const double px[3][2] = {{20, 20}, {300, 40}, {60, 230}};
+                    /* u, v rotated against the screen, 8 periods across */
+                    const double uu = (px[i][0] * c - px[i][1] * s) / 40.0, vv = (px[i][0] * s + px[i][1] * c) / 40.0;
+                    tri[i] = vtx(px[i][0], px[i][1], depth[dp][i], off[w] + uu, off[w] + vv);
+                }
+                err = lod_error_at_correction_points(&t, tri, &n);
+                if (err > worst)
+                    worst = err;
+                total += n;
+                snprintf(msg, sizeof msg, "wrap %d depth %d rotation %d: %d points, max |LOD - exact| %.5f", w,
+                         dp, rot, n, err);
+                TEST_ASSERT_TRUE_MESSAGE(err <= 4.0 / 256, msg);
+            }
+    snprintf(msg, sizeof msg, "%d correction points, max |LOD - exact| = %.5f level", total, worst);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_GREATER_THAN(1000, total);
+}
+
 /* Bias shifts the LOD by exactly the bias (before clamping); per-triangle
  * mode uses the triangle value for every pixel. */
 void test_lod_bias_and_per_triangle_mode(void)
@@ -237,6 +320,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_lod_per_triangle_matches_lecture_values);
     RUN_TEST(test_lod_per_segment_matches_exact_derivatives_on_floor);
+    RUN_TEST(test_lod_per_segment_exact_at_extremes);
     RUN_TEST(test_lod_bias_and_per_triangle_mode);
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
     return UNITY_END();
