@@ -111,7 +111,7 @@ int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, 
 }
 
 /* Smallest k >= 0 with |a_i| >> k < 2^bits for all three. */
-static int fit_shift(const int64_t a[3], int bits)
+static inline int fit_shift(const int64_t a[3], int bits)
 {
     uint64_t m = 0;
     int i, len;
@@ -218,14 +218,16 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
             c[i] = v[i].u;
         rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a);
 #if FXL_HAVE_MIPMAP
-        tri->uv_len[0] = (uint8_t)fit_shift(a, 0);   /* per-segment LOD (span.c) */
+        if (tri->lod_per_segment)   /* span.c, lod_setup */
+            tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
 #endif
         persp_plane(tri, FXL__AU, a, q, X, Y, det);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
         rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
 #if FXL_HAVE_MIPMAP
-        tri->uv_len[1] = (uint8_t)fit_shift(a, 0);   /* per-segment LOD (span.c) */
+        if (tri->lod_per_segment)   /* span.c, lod_setup */
+            tri->uv_len[1] = (uint8_t)fit_shift(a, 0);
 #endif
         persp_plane(tri, FXL__AV, a, q, X, Y, det);
     }
