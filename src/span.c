@@ -378,10 +378,12 @@ static inline int32_t shift_step(int64_t d, int level)
  * Cortex-M4 instructions a correction point.) */
 
 /* s as an integer in units of 2^e: exact when s.e >= e (the caller keeps
- * s.e - e <= 30, so |result| <= 2^61), else floor-shifted. */
+ * s.e - e <= 30 for s != 0, so |result| <= 2^61), else floor-shifted. */
 static int64_t lod_fix(fxl__sf_t s, int e)
 {
     const int d = s.e - e;
+    if (s.m == 0)
+        return 0;   /* a zero's exponent is arbitrary */
     if (d >= 0)
         return (int64_t)s.m * ((int64_t)1 << d);
     return fxl__asr32(s.m, d < -31 ? 31 : -d);
