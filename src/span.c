@@ -442,7 +442,7 @@ static FXL__SF_INLINE int32_t lod_len2_q8(int64_t a, int64_t b)
     const uint64_t ab = b < 0 ? (uint64_t)0 - (uint64_t)b : (uint64_t)b;
     const uint64_t m = aa | ab;
     uint32_t x, y, l;
-    int s, msb;
+    int s;
 
     if (m == 0)
         return INT32_MIN / 4;
@@ -455,8 +455,7 @@ static FXL__SF_INLINE int32_t lod_len2_q8(int64_t a, int64_t b)
         y = (uint32_t)ab << -s;
     }
     l = x * x + y * y;   /* [2^28, 2^31) */
-    msb = 31 - fxl__clz32_inline(l);
-    return (int32_t)msb * 256 + fxl__log2_frac_q8[(l >> (msb - 8)) & 0xFFu] + 512 * s;
+    return fxl__log2_q8_u32(l) + 512 * s;
 }
 
 /* x >> k (floor) saturated to int32, on 32-bit words: u, v lie within the
@@ -490,10 +489,8 @@ static FXL__SF_INLINE int32_t lod_log2_q(int64_t q)
 #else
     if (FXL__WORD32) {
         const uint32_t q32 = (uint32_t)((uint64_t)q >> (FXL__PF - 1));
-        if (q32 >= 256u) {
-            const int msb = 31 - fxl__clz32_inline(q32);
-            return (int32_t)(msb + FXL__PF - 1) * 256 + fxl__log2_frac_q8[(q32 >> (msb - 8)) & 0xFFu];
-        }
+        if (q32 >= 256u)
+            return fxl__log2_q8_u32(q32) + (FXL__PF - 1) * 256;
     }
     return fxl__log2_q8_inline((uint64_t)q);
 #endif
