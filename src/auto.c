@@ -69,11 +69,15 @@ static int quad_pays(int k, int kq)
 }
 
 /* fxl__log2_q8 of x > 0, inline where speed counts: six calls a triangle
- * were ~1 Cortex-M4 instruction a pixel of the tunnel. */
+ * were ~1 Cortex-M4 instruction a pixel of the tunnel. Values known to fit
+ * 32 bits take the 32-bit form (a 64-bit CLZ and shift are ~15 M4
+ * instructions more); -Os builds share the one out-of-line copy. */
 #if defined(__OPTIMIZE_SIZE__)
 #define log2_q8(x) fxl__log2_q8(x)
+#define log2_q8_32(x) fxl__log2_q8((uint64_t)(x))
 #else
 #define log2_q8(x) fxl__log2_q8_inline(x)
+#define log2_q8_32(x) fxl__log2_q8_32(x)
 #endif
 
 /* Quadratic segments for tri: one length (auto_seg 2, seg_log2) or per
@@ -107,6 +111,22 @@ static int64_t sf_fixed(fxl__sf_t a, int E)
     return fxl__asr64(a.m + ((int64_t)1 << (-sh - 1)), -sh);
 }
 
+/* hi - lo of three int32 values, exact as uint32 */
+static uint32_t range3(int32_t a, int32_t b, int32_t c)
+{
+    const int32_t lo = a < b ? (a < c ? a : c) : (b < c ? b : c);
+    const int32_t hi = a > b ? (a > c ? a : c) : (b > c ? b : c);
+    return (uint32_t)hi - (uint32_t)lo;
+}
+
+/* The budget (> 0, check_draw) capped at 256 texels, less 1/16 of itself
+ * and `texels` (q16) for the walk's rounding; <= 0 when nothing is left. */
+static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
+{
+    const int32_t b = d->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : d->auto_budget;
+    return b - (b >> 4) - texels;
+}
+
 /* The vertex test: perspective interpolation at a point with screen-space
  * barycentrics l_i gives u = sum m_i u_i with m_i = l_i q_i / q, q = sum
  * l_i q_i, and the affine map gives sum l_i u_i. Their difference is
@@ -122,42 +142,26 @@ static int64_t sf_fixed(fxl__sf_t a, int E)
  * division at all. q is 1/w up to a common factor, so the vertices' inv_w
  * serve exactly; the ranges are of the q16 vertex values, which rebasing
  * by whole periods does not change. */
-/* hi - lo of three int32 values, exact as uint32 */
-static uint32_t range3(int32_t a, int32_t b, int32_t c)
+void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3])
 {
-    const int32_t lo = a < b ? (a < c ? a : c) : (b < c ? b : c);
-    const int32_t hi = a > b ? (a > c ? a : c) : (b > c ? b : c);
-    return (uint32_t)hi - (uint32_t)lo;
-}
-
-uint64_t fxl__auto_uv_range(const fxl_texture_t *t, const fxl_vertex_t v[3])
-{
+    const fxl_texture_t *t = tri->tex;
     /* 32 x 32 multiplies, not 64-bit shifts (one UMULL, one UMLAL on a
      * Cortex-M) */
-    return (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
-           (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
-}
-
-/* The budget (> 0, check_draw) capped at 256 texels, less 1/16 of itself
- * and `texels` (q16) for the walk's rounding; <= 0 when nothing is left. */
-static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
-{
-    const int32_t b = d->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : d->auto_budget;
-    return b - (b >> 4) - texels;
-}
-
-int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v, uint64_t duv)
-{
-    const int32_t b = budget_less_margins(d, FXL_Q16_ONE / 128);
+    const uint64_t r = (uint64_t)range3(v[0].u, v[1].u, v[2].u) * ((uint32_t)1 << t->log2_w) +
+                       (uint64_t)range3(v[0].v, v[1].v, v[2].v) * ((uint32_t)1 << t->log2_h);
+    const int32_t b = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
     const uint32_t w0 = v[0].inv_w, w1 = v[1].inv_w, w2 = v[2].inv_w;
     const uint32_t qmin = w0 < w1 ? (w0 < w2 ? w0 : w2) : (w1 < w2 ? w1 : w2);
     const uint32_t qmax = w0 > w1 ? (w0 > w2 ? w0 : w2) : (w1 > w2 ? w1 : w2);
-    /* duv < 2^31 and qmax - qmin < 2^32: the product < 2^63; the right side
+    tri->auto_duv = r;
+    /* Gouraud colours stay perspective-correct: the budget is in texels.
+     * r < 2^31 and qmax - qmin < 2^32: the product < 2^63; the right side
      * < 2^2 * 2^32 * 2^24 */
-    return b > 0 && duv <= INT32_MAX && duv * (qmax - qmin) <= 4u * ((uint64_t)qmin * (uint32_t)b);
+    if (!tri->has_color && b > 0 && r <= INT32_MAX && r * (qmax - qmin) <= 4u * ((uint64_t)qmin * (uint32_t)b))
+        tri->affine = 1;
 }
 
-void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const int32_t Y[3])
+void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
      * u in texels = (S / q) * 2^(shift_u + log2_w - 16). */
@@ -176,9 +180,11 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     if (!fxl__has_uv(tri) || qx_g == 0)
         return;   /* constant depth along every span: affine is exact */
     /* No span is longer than the bounding box: a longer L changes nothing. */
-    w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px */
-    while (cap < 8 && ((int32_t)1 << cap) < w)
-        cap++;
+    w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px, < 2^17 */
+    /* the least cap <= 8 with 2^cap >= w */
+    if (w > 1)
+        cap = 32 - fxl__clz32_inline((uint32_t)w - 1u);
+    cap = cap < 8 ? cap : 8;
     /* Spans of at most 2 pixels have a correction point at every pixel
      * (the last segment ends on the span's last pixel) whatever the
      * length: no bound to compute (a tenth of the tunnel's triangles,
@@ -193,8 +199,8 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     {
         const int32_t ba = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
         const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
-        lba = ba > 0 ? log2_q8((uint64_t)ba) - 16 * 256 : INT32_MIN / 4;
-        lbq = bq > 0 ? log2_q8((uint64_t)bq) - 16 * 256 : INT32_MIN / 4;
+        lba = ba > 0 ? log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
+        lbq = bq > 0 ? log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
     }
     {
@@ -208,14 +214,14 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
          * whole quadratic spans. w itself rather than 2^cap makes the test
          * up to 2x (4x) tighter. Log2 margins: +2 for each upper and +1 for
          * each lower estimate. */
-        const uint64_t R = duv;
+        const uint64_t R = tri->auto_duv;
         const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
         if (R == 0)
             return;   /* u, v constant: no error at any length */
         if (R <= INT32_MAX && tri->q_min > 0) {
-            const int32_t lr = log2_q8(R) - 16 * 256;
+            const int32_t lr = log2_q8_32((uint32_t)R) - 16 * 256;
             const int32_t lrho = log2_q8(g) + 2 - (log2_q8((uint64_t)tri->q_min) - 1);
-            const int32_t lw = log2_q8((uint64_t)w) + 2;
+            const int32_t lw = log2_q8_32((uint32_t)w) + 2;
             if (lr + 2 + lw + lrho - 512 <= lba - 1)
                 return;
             if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (lw + lrho) <= lbq - 1 + 1120) {
@@ -257,7 +263,7 @@ void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const in
     if (lnmax == INT32_MIN / 4)
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
-    lb = log2_q8((uint64_t)tri->draw->auto_budget) - 16 * 256;
+    lb = log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
     lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);

@@ -82,6 +82,14 @@ static inline int32_t fxl__log2_q8_u32(uint32_t x)
     return (int32_t)msb * 256 + fxl__log2_frac_q8[(x >> (msb - 8)) & 0xFFu];
 }
 
+/* fxl__log2_q8_inline's value for any 32-bit x > 0, in 32-bit operations. */
+static inline int32_t fxl__log2_q8_32(uint32_t x)
+{
+    const int msb = 31 - fxl__clz32_inline(x);
+    const uint32_t frac = (msb >= 8 ? x >> (msb - 8) : x << (8 - msb)) & 0xFFu;
+    return (int32_t)msb * 256 + fxl__log2_frac_q8[frac];
+}
+
 /* Floor shift of a signed 64-bit value (0 <= k < 64). */
 static inline int64_t fxl__asr64(int64_t x, int k)
 {

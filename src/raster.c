@@ -209,7 +209,6 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int64_t det;
     int mid_left, odd = 0;
 #if FXL_HAVE_AUTO
-    uint64_t auto_duv = 0;   /* range u + range v, q16 texels (AUTO) */
 #endif
 
     if (!target || !draw || !v)
@@ -279,13 +278,9 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.affine = draw->persp == FXL_PERSP_AFFINE;
 #if FXL_HAVE_AUTO
     /* AUTO: where the vertex bound holds, no division is needed (auto.c).
-     * Gouraud colours stay perspective-correct: the budget is in texels.
      * The vertices' texel ranges serve the vertex test and the set-up. */
-    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv) {
-        auto_duv = fxl__auto_uv_range(tri.tex, v);
-        if (!tri.has_color && fxl__auto_affine(draw, v, auto_duv))
-            tri.affine = 1;
-    }
+    if (draw->persp == FXL_PERSP_AUTO && tri.has_uv)
+        fxl__auto_vertices(&tri, v);
 #endif
     tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.nlevels = 0;
@@ -297,7 +292,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         return st;
 #if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
-        fxl__auto_setup(&tri, auto_duv, X, Y);
+        fxl__auto_setup(&tri, X, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

@@ -99,6 +99,7 @@ typedef struct fxl__tri {
      * comes from the error bound at its correction point; 2, every segment
      * is quadratic, of length 2^seg_log2 (0: one fixed length, as other modes) */
     uint8_t auto_seg;
+    uint64_t auto_duv;           /* range u + range v of the vertices, q16 texels of level 0 */
     int8_t auto_cap;             /* longest log2 length: the widest span */
     uint32_t auto_gx32;          /* ceil(|q_x| per pixel >> PF), saturated at 2^31 */
     int32_t auto_t0;             /* q8 log2 terms of the bound common to all rows */
@@ -220,16 +221,16 @@ int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, 
 void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t Yb, int32_t row);
 void fxl__edge_step(fxl__edge_t *e);
 
-/* FXL_PERSP_AUTO (auto.c). Before set-up: does the vertex bound prove the
- * triangle within d->auto_budget drawn affine (d has a texture)? Then it
- * is set up as FXL_PERSP_AFFINE. Otherwise fxl__auto_setup, after
- * fxl__setup (X, Y the snapped vertices), sets seg_log2 (0..8) when
- * one length suits the whole triangle (with auto_quad and auto_seg 2 when
- * it is quadratic), else auto_seg 1 and the per-row terms of auto.h. */
-/* range u + range v of the vertices, q16 texels of level 0 */
-uint64_t fxl__auto_uv_range(const fxl_texture_t *t, const fxl_vertex_t v[3]);
-int fxl__auto_affine(const fxl_draw_t *d, const fxl_vertex_t *v, uint64_t duv);
-void fxl__auto_setup(fxl__tri_t *tri, uint64_t duv, const int32_t X[3], const int32_t Y[3]);
+/* FXL_PERSP_AUTO (auto.c). Before set-up, fxl__auto_vertices stores
+ * tri->auto_duv and, unless the triangle has Gouraud colours, sets
+ * tri->affine where the vertex bound proves it within the draw's
+ * auto_budget drawn affine (tri has a texture, draw and tex set). Otherwise
+ * fxl__auto_setup, after fxl__setup (X, Y the snapped vertices), sets
+ * seg_log2 (0..8) when one length suits the whole triangle (with auto_quad
+ * and auto_seg 2 when it is quadratic), else auto_seg 1 and the per-row
+ * terms of auto.h. */
+void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3]);
+void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);

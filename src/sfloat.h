@@ -77,13 +77,17 @@ static inline int fxl__sf_is_zero(fxl__sf_t a)
     return a.m == 0;
 }
 
-/* log2 |x| in q8 (x != 0); INT32_MIN / 4 for zero. */
+/* log2 |x| in q8 (x != 0); INT32_MIN / 4 for zero. |m| <= 2^31: the
+ * 32-bit logarithm, inline (out of line, a 64-bit CLZ and a call were
+ * ~0.2 Cortex-M4 instructions a pixel of the tunnel's AUTO set-up). */
 static inline int32_t fxl__sf_log2_q8(fxl__sf_t x)
 {
-    uint64_t a = x.m < 0 ? (uint64_t)0 - (uint64_t)x.m : (uint64_t)x.m;
-    if (a == 0)
-        return INT32_MIN / 4;
-    return fxl__log2_q8(a) + x.e * 256;
+    const uint32_t a = x.m < 0 ? 0u - (uint32_t)x.m : (uint32_t)x.m;
+#if defined(__OPTIMIZE_SIZE__)
+    return a ? fxl__log2_q8((uint64_t)a) + x.e * 256 : INT32_MIN / 4;
+#else
+    return a ? fxl__log2_q8_32(a) + x.e * 256 : INT32_MIN / 4;
+#endif
 }
 
 #endif
