@@ -82,7 +82,9 @@ static inline int32_t fxl__log2_q8_u32(uint32_t x)
     return (int32_t)msb * 256 + fxl__log2_frac_q8[(x >> (msb - 8)) & 0xFFu];
 }
 
-/* fxl__log2_q8_inline's value for any 32-bit x > 0, in 32-bit operations. */
+/* fxl__log2_q8_inline's value for any 32-bit x > 0, in 32-bit operations:
+ * fxl__log2_q8_u32 without its x >= 256 condition (one select more), for
+ * values that may be small (a budget, a width, a soft-float mantissa). */
 static inline int32_t fxl__log2_q8_32(uint32_t x)
 {
     const int msb = 31 - fxl__clz32_inline(x);
