@@ -10,6 +10,8 @@
 #include "fixel/fixel.h"
 #include "reference.h"
 #include "../src/raster_int.h"
+#include "../src/persp.h"
+#include "../src/sfloat.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -315,6 +317,51 @@ void test_trilinear_weights_blend_levels_by_lod_fraction(void)
     TEST_ASSERT_EQUAL_INT(81, checked);
 }
 
+/* The LOD and AUTO's bounds take logarithms in three forms (64-bit,
+ * 32-bit, soft-float mantissa): all must give fxl__log2_q8's value, which
+ * the bounds' margins are worked out for, and stay within its stated
+ * accuracy of the true log2. */
+void test_log2_q8_forms_agree(void)
+{
+    uint32_t x;
+    int k, e;
+    for (x = 1; x < (1u << 20); x++) {
+        const int32_t want = fxl__log2_q8(x);
+        TEST_ASSERT_EQUAL_INT32(want, fxl__log2_q8_32(x));
+        if (x >= 256)
+            TEST_ASSERT_EQUAL_INT32(want, fxl__log2_q8_u32(x));
+    }
+    for (k = 1; k < 32; k++) {
+        const uint32_t p = (uint32_t)1 << k;
+        const uint32_t xs[3] = {p - 1u, p, p + 1u};
+        int i;
+        for (i = 0; i < 3; i++) {
+            const int32_t got = fxl__log2_q8_32(xs[i]);
+            const double truth = log2((double)xs[i]) * 256.0;
+            TEST_ASSERT_EQUAL_INT32(fxl__log2_q8(xs[i]), got);
+            TEST_ASSERT_TRUE(got > truth - 1.94 && got < truth + 0.5);
+        }
+    }
+    TEST_ASSERT_EQUAL_INT32(fxl__log2_q8(0xFFFFFFFFu), fxl__log2_q8_32(0xFFFFFFFFu));
+    for (e = -100; e <= 100; e += 37) {
+        const int32_t ms[6] = {1, -1, 255, -256, INT32_MAX, INT32_MIN};
+        int i;
+        for (i = 0; i < 6; i++) {
+            fxl__sf_t f;
+            const uint64_t a = ms[i] < 0 ? (uint64_t)0 - (uint64_t)(int64_t)ms[i] : (uint64_t)ms[i];
+            f.m = ms[i];
+            f.e = e;
+            TEST_ASSERT_EQUAL_INT32(fxl__log2_q8(a) + e * 256, fxl__sf_log2_q8(f));
+        }
+    }
+    {
+        fxl__sf_t z;
+        z.m = 0;
+        z.e = 5;
+        TEST_ASSERT_EQUAL_INT32(INT32_MIN / 4, fxl__sf_log2_q8(z));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -323,5 +370,6 @@ int main(void)
     RUN_TEST(test_lod_per_segment_exact_at_extremes);
     RUN_TEST(test_lod_bias_and_per_triangle_mode);
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
+    RUN_TEST(test_log2_q8_forms_agree);
     return UNITY_END();
 }
