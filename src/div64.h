@@ -51,6 +51,55 @@ static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 #endif
 }
 
+/* Division by a divisor used several times (a triangle's doubled area, for
+ * its six gradients), on 32-bit cores outside -Os: there each 64-bit
+ * division is a call of ~60 (Cortex-M4) to several hundred (M0+)
+ * instructions, a high product ~15. r = floor((2^64 - 1) / d) once; then
+ * for n < 2^63, with r d in (2^64 - 1 - d, 2^64), n r / 2^64 lies in
+ * (n/d - 1/2, n/d), so its floor is the quotient or one below and one
+ * correction against the remainder makes it exact: the same value as
+ * n / d. */
+#define FXL__DIV64_RECIP (!FXL_SMALL_DIV64 && UINTPTR_MAX <= 0xFFFFFFFFu)
+
+typedef struct fxl__div64 {
+    uint64_t d;   /* the divisor, != 0 */
+    uint64_t r;   /* floor((2^64 - 1) / d) (FXL__DIV64_RECIP builds) */
+} fxl__div64_t;
+
+/* The high 64 bits of a * b from four 32 x 32 products (UMULL). */
+static inline uint64_t fxl__mulhi64(uint64_t a, uint64_t b)
+{
+    const uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32), b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
+    const uint64_t p00 = (uint64_t)a0 * b0, p01 = (uint64_t)a0 * b1, p10 = (uint64_t)a1 * b0;
+    const uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
+    return (uint64_t)a1 * b1 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+static inline void fxl__div64_init(fxl__div64_t *dv, uint64_t d)
+{
+    dv->d = d;
+    dv->r = FXL__DIV64_RECIP ? fxl__udiv64(UINT64_MAX, d) : 0u;
+}
+
+/* floor(n / dv->d) for n < 2^63, its remainder in *rem */
+static inline uint64_t fxl__div64_by(uint64_t n, const fxl__div64_t *dv, uint64_t *rem)
+{
+    uint64_t q, m;
+    if (FXL__DIV64_RECIP) {
+        q = fxl__mulhi64(n, dv->r);
+        m = n - q * dv->d;
+        if (m >= dv->d) {
+            q++;
+            m -= dv->d;
+        }
+    } else {
+        q = fxl__udiv64(n, dv->d);
+        m = n - q * dv->d;
+    }
+    *rem = m;
+    return q;
+}
+
 /* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */
 static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
 {
