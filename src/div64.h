@@ -75,6 +75,19 @@ static inline uint64_t fxl__mulhi64(uint64_t a, uint64_t b)
     return (uint64_t)a1 * b1 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
 }
 
+/* floor(n / d) for n < 2^63 from r = floor((2^64 - 1) / d), its remainder
+ * in *rem (compiled everywhere, so host tests check it) */
+static inline uint64_t fxl__udiv64_recip(uint64_t n, uint64_t d, uint64_t r, uint64_t *rem)
+{
+    uint64_t q = fxl__mulhi64(n, r), m = n - q * d;
+    if (m >= d) {
+        q++;
+        m -= d;
+    }
+    *rem = m;
+    return q;
+}
+
 static inline void fxl__div64_init(fxl__div64_t *dv, uint64_t d)
 {
     dv->d = d;
@@ -84,19 +97,11 @@ static inline void fxl__div64_init(fxl__div64_t *dv, uint64_t d)
 /* floor(n / dv->d) for n < 2^63, its remainder in *rem */
 static inline uint64_t fxl__div64_by(uint64_t n, const fxl__div64_t *dv, uint64_t *rem)
 {
-    uint64_t q, m;
-    if (FXL__DIV64_RECIP) {
-        q = fxl__mulhi64(n, dv->r);
-        m = n - q * dv->d;
-        if (m >= dv->d) {
-            q++;
-            m -= dv->d;
-        }
-    } else {
-        q = fxl__udiv64(n, dv->d);
-        m = n - q * dv->d;
-    }
-    *rem = m;
+    uint64_t q;
+    if (FXL__DIV64_RECIP)
+        return fxl__udiv64_recip(n, dv->d, dv->r, rem);
+    q = fxl__udiv64(n, dv->d);
+    *rem = n - q * dv->d;
     return q;
 }
 

@@ -812,6 +812,52 @@ static void test_udiv64_by32_matches_c_division(void)
     }
 }
 
+/* Set-up's division by a reciprocal (div64.h, 32-bit cores): the high
+ * product against a 128-bit one, and the quotient and remainder against
+ * C's for every n < 2^63 it may see, at the edges of the estimate (exact
+ * multiples, one below) and on random values of every bit length. */
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef unsigned __int128 u128_t;   /* the reference high product */
+#endif
+
+static void check_udiv64_recip(uint64_t n, uint64_t d)
+{
+    uint64_t rem = 0, q = fxl__udiv64_recip(n, d, UINT64_MAX / d, &rem);
+    snprintf(msg, sizeof msg, "n=%llu d=%llu", (unsigned long long)n, (unsigned long long)d);
+    TEST_ASSERT_TRUE_MESSAGE(q == n / d && rem == n % d, msg);
+}
+
+static void test_udiv64_recip_matches_c_division(void)
+{
+    static const uint64_t en[] = {0u, 1u, 2u, 0xFFFFFFFFu, (uint64_t)1 << 32, ((uint64_t)1 << 62) - 1u,
+                                  (uint64_t)1 << 62, (uint64_t)INT64_MAX - 1u, (uint64_t)INT64_MAX};
+    static const uint64_t ed[] = {1u, 2u, 3u, 7u, 0xFFFFFFFFu, (uint64_t)1 << 32, ((uint64_t)1 << 32) + 1u,
+                                  ((uint64_t)1 << 47) - 1u, (uint64_t)1 << 62, (uint64_t)INT64_MAX,
+                                  (uint64_t)1 << 63, UINT64_MAX};
+    const int nn = (int)(sizeof en / sizeof en[0]), nd = (int)(sizeof ed / sizeof ed[0]);
+    int i, j;
+    for (i = 0; i < nn; i++)
+        for (j = 0; j < nd; j++) {
+            const uint64_t m = en[i] / ed[j] * ed[j];
+            check_udiv64_recip(en[i], ed[j]);
+            check_udiv64_recip(m, ed[j]);
+            if (m > 0u)
+                check_udiv64_recip(m - 1u, ed[j]);
+        }
+    lcg_seed(0x2EC1Fu);
+    for (i = 0; i < RANDOM_ITERS; i++) {
+        const uint64_t a = rand64(), b = rand64();
+#if defined(__SIZEOF_INT128__)
+        TEST_ASSERT_TRUE(fxl__mulhi64(a, b) == (uint64_t)(((u128_t)a * b) >> 64));
+#endif
+        {
+            const uint64_t n = (a >> 1) >> (lcg_next() >> 26), d = b >> (lcg_next() >> 26);
+            if (d != 0u)
+                check_udiv64_recip(n, d);
+        }
+    }
+}
+
 static void check_sdiv64_loop(int64_t n, int64_t d)
 {
     snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
@@ -889,6 +935,7 @@ int main(void)
     RUN_TEST(test_div64_by_zero_saturates_instead_of_trapping);
     RUN_TEST(test_udiv64_loop_matches_c_division);
     RUN_TEST(test_udiv64_by32_matches_c_division);
+    RUN_TEST(test_udiv64_recip_matches_c_division);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }
