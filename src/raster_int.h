@@ -202,6 +202,7 @@ static inline uint32_t fxl__seg_coord(uint32_t c, int32_t d, int32_t dd, int32_t
 
 /* Span loops (span.c). Each returns the number of pixels written. */
 typedef uint32_t (*fxl__seg_fn)(const fxl__tri_t *tri, const fxl__seg_t *seg);
+/* after fxl__span_setup */
 fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri);
 
 /* fxl_draw_triangle with the span loop replaced by `probe` when non-NULL:

@@ -57,7 +57,12 @@ static int64_t div_frac(int64_t r, int64_t den, int bits)
 /* N / den with FXL__PF fraction bits, den > 0. A quotient beyond 2^42 (a
  * sliver thinner than 2^-20 px across a 2^32 attribute range) saturates;
  * evaluation then clamps, see fxl__plane_at callers. */
-static int64_t gradient(int64_t N, const fxl__div64_t *dv)
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__SETUP_INLINE inline __attribute__((always_inline))   /* two calls a plane were ~25 M4 instructions */
+#else
+#define FXL__SETUP_INLINE inline
+#endif
+static FXL__SETUP_INLINE int64_t gradient(int64_t N, const fxl__div64_t *dv)
 {
     const int64_t lim = (int64_t)1 << (62 - FXL__PF);
     const int64_t den = (int64_t)dv->d;
@@ -84,9 +89,14 @@ static int64_t gradient(int64_t N, const fxl__div64_t *dv)
     return qi * ((int64_t)1 << FXL__PF) + div_frac(r, den, FXL__PF);
 }
 
-/* dv: |det|, det_neg: det < 0 */
+/* The triangle's doubled area det as the gradients divide by it. */
+typedef struct area {
+    fxl__div64_t abs;   /* |det| */
+    int neg;            /* det < 0 */
+} area_t;
+
 static void make_plane(fxl__plane_t *p, const int64_t a[3], const int32_t X[3], const int32_t Y[3],
-                       const fxl__div64_t *dv, int det_neg)
+                       const area_t *det)
 {
     int64_t dX1 = (int64_t)X[1] - X[0], dY1 = (int64_t)Y[1] - Y[0];
     int64_t dX2 = (int64_t)X[2] - X[0], dY2 = (int64_t)Y[2] - Y[0];
@@ -94,13 +104,13 @@ static void make_plane(fxl__plane_t *p, const int64_t a[3], const int32_t X[3], 
     int64_t nx = da1 * dY2 - da2 * dY1;
     int64_t ny = da2 * dX1 - da1 * dX2;
 
-    if (det_neg) {
+    if (det->neg) {
         nx = -nx;
         ny = -ny;
     }
     p->c = a[0] * ((int64_t)1 << FXL__PF);
-    p->gx = gradient(nx, dv);
-    p->gy = gradient(ny, dv);
+    p->gx = gradient(nx, &det->abs);
+    p->gy = gradient(ny, &det->abs);
 }
 
 int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y)
@@ -150,7 +160,7 @@ static void rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
 
 /* Build the plane of attribute a_i * q_i, scaled below 2^30. */
 static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int64_t q[3],
-                        const int32_t X[3], const int32_t Y[3], const fxl__div64_t *dv, int det_neg)
+                        const int32_t X[3], const int32_t Y[3], const area_t *det)
 {
     int64_t s[3];
     int i, k;
@@ -161,7 +171,7 @@ static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int6
     for (i = 0; i < 3; i++)
         s[i] = fxl__asr64(s[i], k);
     tri->a_shift[idx] = k;
-    make_plane(&tri->a[idx], s, X, Y, dv, det_neg);
+    make_plane(&tri->a[idx], s, X, Y, det);
 }
 
 fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
@@ -169,10 +179,10 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
 {
     int64_t q[3], z[3], a[3];
     int i;
-    const int det_neg = det < 0;
-    fxl__div64_t dv;   /* |det|, divided by up to 2 x 7 times */
+    area_t area;   /* divides up to 2 x 7 gradients */
 
-    fxl__div64_init(&dv, det_neg ? (uint64_t)0 - (uint64_t)det : (uint64_t)det);
+    area.neg = det < 0;
+    fxl__div64_init(&area.abs, area.neg ? (uint64_t)0 - (uint64_t)det : (uint64_t)det);
     tri->X0 = X[0];
     tri->Y0 = Y[0];
 
@@ -195,7 +205,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
                 q[i] = 1;
         }
     }
-    make_plane(&tri->q, q, X, Y, &dv, det_neg);
+    make_plane(&tri->q, q, X, Y, &area);
     tri->q_min = tri->q_max = q[0];
     for (i = 1; i < 3; i++) {
         if (q[i] < tri->q_min)
@@ -210,7 +220,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     if (tri->target->depth && (tri->depth_test || tri->depth_write)) {
         for (i = 0; i < 3; i++)
             z[i] = (int64_t)v[i].inv_w;
-        make_plane(&tri->z, z, X, Y, &dv, det_neg);
+        make_plane(&tri->z, z, X, Y, &area);
     } else
 #endif
     {
@@ -231,7 +241,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
 #endif
-        persp_plane(tri, FXL__AU, a, q, X, Y, &dv, det_neg);
+        persp_plane(tri, FXL__AU, a, q, X, Y, &area);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
         rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
@@ -239,7 +249,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[1] = (uint8_t)fit_shift(a, 0);
 #endif
-        persp_plane(tri, FXL__AV, a, q, X, Y, &dv, det_neg);
+        persp_plane(tri, FXL__AV, a, q, X, Y, &area);
     }
     if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
@@ -249,7 +259,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         for (ch = 0; ch < 3; ch++) {
             for (i = 0; i < 3; i++)
                 a[i] = (int64_t)((v[i].color >> sh[ch]) & mask[ch]) << 16;
-            persp_plane(tri, FXL__AR + ch, a, q, X, Y, &dv, det_neg);
+            persp_plane(tri, FXL__AR + ch, a, q, X, Y, &area);
         }
     }
     return FXL_OK;

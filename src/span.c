@@ -1161,7 +1161,9 @@ static int fast_id_of(const fxl__tri_t *tri)
 
 fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
 {
-    int id = fast_id_of(tri);
+    /* fxl__span_setup found it (0 without texture coordinates, as
+     * fast_id_of gives there) */
+    int id = tri->fast_id;
     if (id)
         return fast_tab[id].seg;
     return SEG_GENERIC;
