@@ -97,7 +97,6 @@ static int32_t first_row_at(int32_t Y)
 
 static int32_t seg_log2_for(int32_t p)
 {
-    int32_t k = 0;
     /* Affine still re-anchors every FXL_PERSP_MAX pixels: q is constant so a
      * correction is just the linear value, but it stops the truncated q16
      * step (< 2^-16 texel per pixel) from accumulating across spans that run
@@ -106,9 +105,8 @@ static int32_t seg_log2_for(int32_t p)
         p = FXL_PERSP_MAX;
     if (p == FXL_PERSP_AUTO)
         p = FXL_PERSP_SPAN;   /* refined per triangle after setup (auto.c) */
-    while ((1 << k) < p)
-        k++;
-    return k;
+    /* a power of two in 1..FXL_PERSP_MAX (check_draw): one CLZ */
+    return 31 - fxl__clz32_inline((uint32_t)p);
 }
 
 int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
@@ -159,7 +157,6 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 {
     const fxl_texture_t *t = tri->tex;
     const fxl_draw_t *d = tri->draw;
-    const uint32_t bpp = fxl_texfmt_bytes((fxl_texfmt_t)t->format);
     /* a local count: the compiler folds the loop to level 0 without mips */
     const uint32_t nlevels = FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE ? t->levels : 1u;
     uint32_t L;
@@ -167,7 +164,10 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
     tri->nlevels = (uint8_t)nlevels;
     for (L = 0; L < nlevels; L++) {
         fxl__level_t *lv = &tri->level[L];
-        lv->texels = (const uint8_t *)t->texels + (uint32_t)fxl_texture_level_offset(t, L) * bpp;
+        /* level 0 starts the chain: no offset to look up (two calls a
+         * triangle) */
+        lv->texels = (const uint8_t *)t->texels +
+                     (L ? (uint32_t)fxl_texture_level_offset(t, L) * fxl_texfmt_bytes((fxl_texfmt_t)t->format) : 0u);
         lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
         lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
         lv->mask_u = (1u << lv->log2_w) - 1u;
