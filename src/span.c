@@ -662,7 +662,8 @@ static inline uint32_t fast_z(int64_t sz)
 typedef struct fxl__lean {
     uint64_t sq, su, sv, sz;
     uint32_t u, v, z;
-    fxl__recip_t rc;   /* 1/q there: kept by the adaptive walks (quadratic segments) */
+    fxl__recip_t rc;   /* 1/q there (lean_start) */
+    int32_t g;         /* q_x / q there, fxl__quad_g (the quadratic walks' corrections) */
 } fxl__lean_t;
 
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
@@ -677,7 +678,7 @@ typedef struct fxl__lean {
  * division and its 64-bit arithmetic (flattened in) get all the registers,
  * and the span functions keep theirs for the pixel loop. */
 static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z,
-                                    const int with_rc)
+                                    const int with_g)
 {
     fxl__pt_t pt;
     fxl__recip_t rc;
@@ -703,8 +704,12 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
     fast_correct_rc(tri, &rc, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
-    if (with_rc)
-        s->rc = rc;
+#if FXL_HAVE_QUAD
+    if (with_g)
+        s->g = fxl__quad_g(tri, &rc);   /* here, where 1/q is in registers */
+#else
+    (void)with_g;
+#endif
     if (with_z)
         s->z = fast_z((int64_t)s->sz);
 }
@@ -722,7 +727,7 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 #endif
 
 #if FXL_HAVE_QUAD
-/* The quadratic walks' copies: they also keep 1/q (s->rc). */
+/* The quadratic walks' copies: they also give q_x / q (s->g). */
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 0, 1);
@@ -811,11 +816,14 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
             s->u = pt.u;
             s->v = pt.v;
 #if FXL_HAVE_AUTO
-            /* the quadratic walk's next segment needs 1/q here: computed
+            /* the quadratic walk's next segment needs q_x / q here: 1/q computed
              * again (once a run) rather than kept through the loop, which
              * cost exact mode ~10 Cortex-M4 instructions a pixel in spills */
-            if (autoseg && fxl__auto_quad(tri))
-                recip_at(tri, (int64_t)sq, &s->rc);
+            if (autoseg && fxl__auto_quad(tri)) {
+                fxl__recip_t rc;
+                recip_at(tri, (int64_t)sq, &rc);
+                s->g = fxl__quad_g(tri, &rc);
+            }
 #endif
             go_on = !longer;
             break;

@@ -322,7 +322,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
             x = FXL_T_RUN_AT(x);
 #if FXL_HAVE_AUTO
             if (with_g)
-                g0 = fxl__quad_g(tri, &s.rc);
+                g0 = s.g;
 #endif
             continue;
         }
@@ -354,7 +354,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #endif
 #if FXL_HAVE_AUTO
         if (with_g) {
-            const int32_t g1 = fxl__quad_g(tri, &s.rc);
+            const int32_t g1 = s.g;
             if (quad) {
                 const int32_t d[2] = {fxl__i32_of_bits(s.u - u0), fxl__i32_of_bits(s.v - v0)};
                 uint32_t st[4];
