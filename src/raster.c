@@ -203,6 +203,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     fxl__tri_t tri;
     fxl__edge_t el, es;
     fxl__seg_fn fn;
+    fxl__span_fn span;   /* the specialised walk of every span, or NULL */
     fxl_status_t st;
     int32_t X[3], Y[3], ord[3], i, t;
     int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
@@ -298,6 +299,11 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     fn = probe ? probe : fxl__pick_seg_fn(&tri);
     if (!fn)
         return FXL_ERR_UNSUPPORTED;
+#if FXL__FAST_SPANS
+    span = fxl__pick_span_fn(&tri, fn);
+#else
+    span = 0;   /* -Os: the generic walk only */
+#endif
     if (stats)
         stats->drawn++;
 
@@ -320,8 +326,13 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         xr = mid_left ? el.x : es.x;
         cl = xl > target->clip.x0 ? xl : target->clip.x0;
         cr = xr < target->clip.x1 ? xr : target->clip.x1;
-        if (cl < cr)
-            fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
+        /* xl <= cl < cr <= xr by construction, as the walks require */
+        if (cl < cr) {
+            if (span)
+                span(&tri, row, xl, xr, cl, cr);
+            else
+                fxl__draw_span(&tri, fn, row, xl, xr, cl, cr);
+        }
         fxl__edge_step(&el);
         fxl__edge_step(&es);
     }

@@ -241,6 +241,26 @@ void fxl__span_setup(fxl__tri_t *tri);
 void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                     int32_t cl, int32_t cr);
 
+/* The specialised span walks (one per variant, the pixel loop inlined) are
+ * what makes the fast path fast, and ~20 KB of Thumb code for all sixteen.
+ * Size-optimised builds (-Os) keep only the pixel loops, reached through
+ * the generic walk and the seg functions, as small as before; the output is
+ * the same bit for bit either way. Override with -DFXL__FAST_SPANS=0/1. */
+#ifndef FXL__FAST_SPANS
+#if defined(__OPTIMIZE_SIZE__)
+#define FXL__FAST_SPANS 0
+#else
+#define FXL__FAST_SPANS 1
+#endif
+#endif
+
+/* The specialised walk fxl__draw_span would take for every span of tri
+ * with seg function fn (after fxl__span_setup), or NULL. Called directly
+ * it skips the per-span dispatch; it requires xl <= cl < cr <= xr, which
+ * the caller must guarantee. */
+typedef void (*fxl__span_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr);
+fxl__span_fn fxl__pick_span_fn(const fxl__tri_t *tri, fxl__seg_fn fn);
+
 /* log2 of x > 0 in q8 (8 fraction bits), error < 2^-8 + table error. */
 int32_t fxl__log2_q8(uint64_t x);
 /* its table: round(256 log2(1 + i / 256)), i = 0..255 (persp.c) */

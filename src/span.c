@@ -526,18 +526,7 @@ static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v6
  *   saturation of shift_step never acts and a level shift is a floor shift
  *   of the int32 bit pattern;
  * - the exponents of the two divisions are precomputed per triangle. */
-/* The specialised span walks (one per variant, the pixel loop inlined) are
- * what makes the fast path fast, and ~20 KB of Thumb code for all sixteen.
- * Size-optimised builds (-Os) keep only the pixel loops, reached through
- * the generic walk and the seg functions, as small as before; the output is
- * the same bit for bit either way. Override with -DFXL__FAST_SPANS=0/1. */
-#ifndef FXL__FAST_SPANS
-#if defined(__OPTIMIZE_SIZE__)
-#define FXL__FAST_SPANS 0
-#else
-#define FXL__FAST_SPANS 1
-#endif
-#endif
+/* FXL__FAST_SPANS: raster_int.h */
 
 /* A level prepared for the point loops. The texel index has two
  * formulations (FXL__IDX); with v carried as V = v << lw, row * width and
@@ -947,8 +936,9 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 }
 #endif
 
-typedef void (*fxl__span_fast_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                   int32_t cr);
+typedef fxl__span_fn fxl__span_fast_fn;
+/* a variant's choice of walk for a triangle (span_fast.h, FXL_T_PICK) */
+typedef fxl__span_fast_fn (*fxl__span_pick_fn)(const fxl__tri_t *tri);
 
 #define FXL_T_LOOP loop_point
 #define FXL_T_SPAN span_point
@@ -1122,33 +1112,33 @@ typedef void (*fxl__span_fast_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl
 #endif
 /* The span column exists only where the specialised walks are built. */
 #if FXL__FAST_SPANS
-#define FAST_ENTRY(seg, span) {seg, span}
+#define FAST_ENTRY(seg, pick) {seg, pick}
 #else
-#define FAST_ENTRY(seg, span) {seg}
+#define FAST_ENTRY(seg, pick) {seg}
 #endif
 static const struct {
     fxl__seg_fn seg;
 #if FXL__FAST_SPANS
-    fxl__span_fast_fn span;
+    fxl__span_pick_fn pick;   /* the variant's walk for a triangle */
 #endif
 } fast_tab[17] = {
     FAST_ENTRY(0, 0),
-    FAST_ENTRY(seg_point, span_point),
-    FAST_ENTRY(IF_BILIN(seg_bilin), IF_BILIN(span_bilin)),
-    FAST_ENTRY(IF_DEPTH(seg_point_z), IF_DEPTH(span_point_z)),
-    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_BILIN(IF_DEPTH(span_bilin_z))),
-    FAST_ENTRY(seg_point_swap, span_point_swap),
-    FAST_ENTRY(IF_BILIN(seg_bilin_swap), IF_BILIN(span_bilin_swap)),
-    FAST_ENTRY(IF_DEPTH(seg_point_z_swap), IF_DEPTH(span_point_z_swap)),
-    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_BILIN(IF_DEPTH(span_bilin_z_swap))),
-    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml)),
-    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri))),
-    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z))),
-    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z)))),
-    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_swap)),
-    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_swap))),
-    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_swap))),
-    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap)))),
+    FAST_ENTRY(seg_point, span_point_pick),
+    FAST_ENTRY(IF_BILIN(seg_bilin), IF_BILIN(span_bilin_pick)),
+    FAST_ENTRY(IF_DEPTH(seg_point_z), IF_DEPTH(span_point_z_pick)),
+    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_BILIN(IF_DEPTH(span_bilin_z_pick))),
+    FAST_ENTRY(seg_point_swap, span_point_swap_pick),
+    FAST_ENTRY(IF_BILIN(seg_bilin_swap), IF_BILIN(span_bilin_swap_pick)),
+    FAST_ENTRY(IF_DEPTH(seg_point_z_swap), IF_DEPTH(span_point_z_swap_pick)),
+    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_BILIN(IF_DEPTH(span_bilin_z_swap_pick))),
+    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_pick)),
+    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_pick))),
+    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_pick))),
+    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_pick)))),
+    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_swap_pick)),
+    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_swap_pick))),
+    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_swap_pick))),
+    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap_pick)))),
 };
 
 static int fast_id_of(const fxl__tri_t *tri)
@@ -1378,11 +1368,26 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
         return;
     /* the caller's seg function is the one fxl__pick_seg_fn chose for this
      * triangle: take the specialised walk */
-#if FXL__FAST_SPANS
-    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].span) {
-        fast_tab[tri->fast_id].span(tri, row, xl, xr, cl, cr);
-        return;
+    {
+        const fxl__span_fn span = fxl__pick_span_fn(tri, fn);
+        if (span) {
+            span(tri, row, xl, xr, cl, cr);
+            return;
+        }
     }
-#endif
     draw_span_generic(tri, fn, row, xl, xr, cl, cr);
+}
+
+fxl__span_fn fxl__pick_span_fn(const fxl__tri_t *tri, fxl__seg_fn fn)
+{
+#if FXL__FAST_SPANS
+    /* only for exactly the seg function fxl__pick_seg_fn chose: a
+     * measuring probe gets the generic walk */
+    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].pick)
+        return fast_tab[tri->fast_id].pick(tri);
+#else
+    (void)tri;
+    (void)fn;
+#endif
+    return 0;
 }

@@ -5,7 +5,8 @@
  *   FXL_T_LOOP      name of the generated pixel loop (span_loop.h, static
  *                   inline); with FXL_HAVE_QUAD a second, FXL_T_LOOP##_quad,
  *                   steps quadratic segments (one-level variants only)
- *   FXL_T_SPAN      name of the generated span function (fxl__span_fast_fn)
+ *   FXL_T_SPAN      prefix of the generated functions; FXL_T_SPAN##_pick
+ *                   chooses the walk for a triangle (fxl__span_fast_fn)
  *   FXL_T_SEG       name of the generated fxl__seg_fn, or leave undefined
  *                   (the mip-linear variants have none: pick_seg_fn hands out
  *                   seg_generic for them, as before)
@@ -718,34 +719,30 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 }
 
 
-/* The span function: the lean walks where one level serves the triangle,
- * else the batch walk. Kept apart from both so a span pays only for the
- * walk it takes (inlined here, the batch walk's prologue spilled ~20
- * x86-64 instructions a span on the lean paths too). */
-static void FXL_T_SPAN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr)
+/* The variant's walk for a triangle, chosen once (fxl__pick_span_fn): the
+ * lean walks where one level serves the triangle, else the batch walk.
+ * Each is its own function, so a span pays only for the walk it takes
+ * (with the batch walk inlined beside the lean ones, its prologue spilled
+ * ~20 x86-64 instructions a span on the lean paths too), and no span
+ * pays a dispatch (~40 Cortex-M4 instructions a span when it was made per
+ * span). */
+static fxl__span_fast_fn FXL__CAT(FXL_T_SPAN, _pick)(const fxl__tri_t *tri)
 {
+    (void)tri;   /* the mip-linear variants have only the batch walk */
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
 #if FXL_HAVE_AUTO
 #if FXL_HAVE_QUAD
-        if (tri->auto_quad) {
-            FXL__CAT(FXL_T_LEAN, _quad)(tri, row, xl, xr, cl, cr);
-            return;
-        }
+        if (tri->auto_quad)
+            return FXL__CAT(FXL_T_LEAN, _quad);
 #endif
-        if (tri->auto_seg) {
-            FXL__CAT(FXL_T_LEAN, _auto)(tri, row, xl, xr, cl, cr);
-            return;
-        }
+        if (tri->auto_seg)
+            return FXL__CAT(FXL_T_LEAN, _auto);
 #endif
-        if (tri->seg_log2 == 0)
-            FXL_T_EXACT(tri, row, xl, xr, cl, cr);
-        else
-            FXL__CAT(FXL_T_LEAN, _fixed)(tri, row, xl, xr, cl, cr);
-        return;
+        return tri->seg_log2 == 0 ? FXL_T_EXACT : FXL__CAT(FXL_T_LEAN, _fixed);
     }
 #endif
-    FXL_T_WALK(tri, row, xl, xr, cl, cr);
+    return FXL_T_WALK;
 }
 
 #endif /* FXL__FAST_SPANS */
