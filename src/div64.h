@@ -52,7 +52,7 @@ static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 }
 
 /* Division by a divisor used several times (a triangle's doubled area, for
- * its six gradients), on 32-bit cores outside -Os: there each 64-bit
+ * each of its gradients), on 32-bit cores outside -Os: there each 64-bit
  * division is a call of ~60 (Cortex-M4) to several hundred (M0+)
  * instructions, a high product ~15. r = floor((2^64 - 1) / d) once; then
  * for n < 2^63, with r d in (2^64 - 1 - d, 2^64), n r / 2^64 lies in

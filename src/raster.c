@@ -209,8 +209,6 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int32_t row_top, row_mid, row_bot, r0, r1, row, minx, maxx;
     int64_t det;
     int mid_left, odd = 0;
-#if FXL_HAVE_AUTO
-#endif
 
     if (!target || !draw || !v)
         return FXL_ERR_ARG;

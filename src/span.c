@@ -717,13 +717,13 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 
 #if FXL_HAVE_QUAD
 /* The quadratic walks' copies: they also give q_x / q (s->g). */
-static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 0, 1);
 }
 
 #if FXL_HAVE_DEPTH
-static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_rc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 1, 1);
 }
@@ -936,9 +936,8 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 }
 #endif
 
-typedef fxl__span_fn fxl__span_fast_fn;
-/* a variant's choice of walk for a triangle (span_fast.h, FXL_T_PICK) */
-typedef fxl__span_fast_fn (*fxl__span_pick_fn)(const fxl__tri_t *tri);
+/* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
+typedef fxl__span_fn (*fxl__span_pick_fn)(const fxl__tri_t *tri);
 
 #define FXL_T_LOOP loop_point
 #define FXL_T_SPAN span_point

@@ -6,7 +6,7 @@
  *                   inline); with FXL_HAVE_QUAD a second, FXL_T_LOOP##_quad,
  *                   steps quadratic segments (one-level variants only)
  *   FXL_T_SPAN      prefix of the generated functions; FXL_T_SPAN##_pick
- *                   chooses the walk for a triangle (fxl__span_fast_fn)
+ *                   chooses the walk for a triangle (fxl__span_fn)
  *   FXL_T_SEG       name of the generated fxl__seg_fn, or leave undefined
  *                   (the mip-linear variants have none: pick_seg_fn hands out
  *                   seg_generic for them, as before)
@@ -341,11 +341,11 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
 #endif
 #if FXL_HAVE_QUAD && FXL_T_DEPTH
         if (quadseg)
-            lean_next_uvz_rc(tri, &s, mult);
+            lean_next_uvz_g(tri, &s, mult);
         else
 #elif FXL_HAVE_QUAD
         if (quadseg)
-            lean_next_uv_rc(tri, &s, mult);
+            lean_next_uv_g(tri, &s, mult);
         else
 #endif
 #if FXL_T_DEPTH
@@ -726,7 +726,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
  * ~20 x86-64 instructions a span on the lean paths too), and no span
  * pays a dispatch (~40 Cortex-M4 instructions a span when it was made per
  * span). */
-static fxl__span_fast_fn FXL__CAT(FXL_T_SPAN, _pick)(const fxl__tri_t *tri)
+static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(const fxl__tri_t *tri)
 {
     (void)tri;   /* the mip-linear variants have only the batch walk */
 #if !FXL_T_MIPLIN
