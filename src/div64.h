@@ -59,7 +59,9 @@ static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
  * (n/d - 1/2, n/d), so its floor is the quotient or one below and one
  * correction against the remainder makes it exact: the same value as
  * n / d. */
+#ifndef FXL__DIV64_RECIP   /* -DFXL__DIV64_RECIP=1: the same path on a 64-bit host (tests) */
 #define FXL__DIV64_RECIP (!FXL_SMALL_DIV64 && UINTPTR_MAX <= 0xFFFFFFFFu)
+#endif
 
 typedef struct fxl__div64 {
     uint64_t d;   /* the divisor, != 0 */
