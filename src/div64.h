@@ -51,6 +51,33 @@ static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 #endif
 }
 
+/* 32 x 32 -> 64-bit products. ARMv6-M (Cortex-M0/M0+) has no UMULL or
+ * SMULL: GCC calls __aeabi_lmul, a 64 x 64 multiply (~45 instructions with
+ * the call, four a correction point); four 16 x 16-bit MULS and their
+ * carries take about half, inline. The same values (FXL__MUL_HALVES=1
+ * selects them on any target: test_fixed checks them on the host). */
+#ifndef FXL__MUL_HALVES
+#if defined(__ARM_ARCH_6M__) && !defined(__OPTIMIZE_SIZE__)   /* -Os: the one libgcc copy */
+#define FXL__MUL_HALVES 1
+#else
+#define FXL__MUL_HALVES 0
+#endif
+#endif
+
+static inline uint64_t fxl__umul32(uint32_t a, uint32_t b)
+{
+#if FXL__MUL_HALVES
+    const uint32_t a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
+    const uint32_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    const uint32_t mid = p01 + p10;                  /* weight 2^16, may wrap */
+    const uint32_t lo = p00 + (mid << 16);
+    const uint32_t hi = p11 + (mid >> 16) + ((uint32_t)(mid < p01) << 16) + (uint32_t)(lo < p00);
+    return ((uint64_t)hi << 32) | lo;
+#else
+    return (uint64_t)a * b;
+#endif
+}
+
 /* Division by a divisor used several times (a triangle's doubled area, for
  * each of its gradients), on 32-bit cores outside -Os: there each 64-bit
  * division is a call of ~60 (Cortex-M4) to several hundred (M0+)
@@ -68,13 +95,14 @@ typedef struct fxl__div64 {
     uint64_t r;   /* floor((2^64 - 1) / d) (FXL__DIV64_RECIP builds) */
 } fxl__div64_t;
 
-/* The high 64 bits of a * b from four 32 x 32 products (UMULL). */
+/* The high 64 bits of a * b from four 32 x 32 products (UMULL; halves on
+ * ARMv6-M). */
 static inline uint64_t fxl__mulhi64(uint64_t a, uint64_t b)
 {
     const uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32), b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
-    const uint64_t p00 = (uint64_t)a0 * b0, p01 = (uint64_t)a0 * b1, p10 = (uint64_t)a1 * b0;
+    const uint64_t p00 = fxl__umul32(a0, b0), p01 = fxl__umul32(a0, b1), p10 = fxl__umul32(a1, b0);
     const uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
-    return (uint64_t)a1 * b1 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    return fxl__umul32(a1, b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
 }
 
 /* floor(n / d) for n < 2^63 from r = floor((2^64 - 1) / d), its remainder

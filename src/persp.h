@@ -17,6 +17,7 @@
 
 #include <stdint.h>
 #include "raster_int.h"
+#include "div64.h"
 
 /* The perspective division runs at every correction point of every span
  * walk: on x86-64 a call plus spills is ~20% of a segment, so it is always
@@ -108,16 +109,25 @@ static inline int32_t fxl__asr32(int32_t x, int k)
     return x < 0 ? -(int32_t)(~(uint32_t)x >> k) - 1 : (int32_t)((uint32_t)x >> k);
 }
 
-/* (int64)a * b, one SMULL on a Cortex-M. The empty asm (GCC, 32-bit ARM)
- * hides where a came from: GCC otherwise rebuilds fxl__persp_e's m from the
- * 64-bit plane value it was cut from and multiplies 64 x 32 bits (MUL, MLA,
- * UMULL). */
+/* (int64)a * b, one SMULL on a Cortex-M3/M4. The empty asm (GCC, 32-bit
+ * ARM) hides where a came from: GCC otherwise rebuilds fxl__persp_e's m
+ * from the 64-bit plane value it was cut from and multiplies 64 x 32 bits
+ * (MUL, MLA, UMULL). */
 static inline int64_t fxl__mul_s32(int32_t a, int32_t b)
 {
+#if FXL__MUL_HALVES
+    /* the unsigned product of the bit patterns, less 2^32 b for a < 0 and
+     * 2^32 a for b < 0 (modulo 2^64) */
+    const uint64_t u = fxl__umul32((uint32_t)a, (uint32_t)b);
+    const uint32_t fix = (a < 0 ? (uint32_t)b : 0u) + (b < 0 ? (uint32_t)a : 0u);
+    const uint64_t p = u - ((uint64_t)fix << 32);
+    return p <= (uint64_t)INT64_MAX ? (int64_t)p : -(int64_t)(~p) - 1;
+#else
 #if defined(__GNUC__) && defined(__arm__)
     __asm__("" : "+r"(a));
 #endif
     return (int64_t)a * b;
+#endif
 }
 
 /* The int32 whose two's-complement bit pattern is b (no conversion of an
@@ -160,10 +170,10 @@ static FXL__RECIP_INLINE void fxl__recip(int64_t qv, fxl__recip_t *out)
     /* Newton: y1 = y0 * (2 - x * y0) with x = qn / 2^32. e = x*y0 in q48 is
      * in [2^48 (1 - 2^-14), 2^48], so 2^49 - e in (2^48, 2^48 (1 + 2^-14)]
      * and t = (2^49 - e) >> 17 fits 32 bits (q31 of 2 - x*y0). */
-    uint64_t e = (uint64_t)qn * y0;
+    uint64_t e = fxl__umul32(qn, y0);
     uint32_t t = (uint32_t)(((UINT64_C(1) << 49) - e) >> 17);
     /* y0 (q16) * t (q31) = q47; >> 17 gives q30: r = 2^62 / qn, <= 2^31. */
-    out->r = (uint32_t)(((uint64_t)y0 * t) >> 17);
+    out->r = (uint32_t)(fxl__umul32(y0, t) >> 17);
     out->n = n;
 }
 

@@ -17,7 +17,11 @@
 
 #include "unity.h"
 #include "fixel/fixed.h"
+/* the Cortex-M0+ products (four 16 x 16-bit halves), checked here on the
+ * host, also inside the reciprocal division's high product */
+#define FXL__MUL_HALVES 1
 #include "../src/div64.h"
+#include "../src/persp.h"
 
 #define RANDOM_ITERS 200000
 
@@ -858,6 +862,30 @@ static void test_udiv64_recip_matches_c_division(void)
     }
 }
 
+/* The 32 x 32 -> 64-bit products ARMv6-M builds make from 16-bit halves
+ * (persp.h, FXL__MUL_HALVES, forced on for this file): exact against the
+ * compiler's 64-bit products at the carries' edges and on random values. */
+static void test_mul_halves_match_64bit_products(void)
+{
+    static const uint32_t e[] = {0u, 1u, 2u, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u,
+                                 0x80000001u, 0xFFFF0000u, 0xFFFF0001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    const int ne = (int)(sizeof e / sizeof e[0]);
+    int i, j;
+    TEST_ASSERT_EQUAL_INT(1, FXL__MUL_HALVES);
+    for (i = 0; i < ne; i++)
+        for (j = 0; j < ne; j++) {
+            const int32_t a = (int32_t)e[i], b = (int32_t)e[j];
+            TEST_ASSERT_TRUE(fxl__umul32(e[i], e[j]) == (uint64_t)e[i] * e[j]);
+            TEST_ASSERT_TRUE(fxl__mul_s32(a, b) == (int64_t)a * b);
+        }
+    lcg_seed(0x3A1F5u);
+    for (i = 0; i < RANDOM_ITERS; i++) {
+        const uint32_t a = rand32(), b = rand32() >> (lcg_next() >> 27);
+        TEST_ASSERT_TRUE(fxl__umul32(a, b) == (uint64_t)a * b);
+        TEST_ASSERT_TRUE(fxl__mul_s32((int32_t)a, (int32_t)b) == (int64_t)(int32_t)a * (int32_t)b);
+    }
+}
+
 static void check_sdiv64_loop(int64_t n, int64_t d)
 {
     snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
@@ -936,6 +964,7 @@ int main(void)
     RUN_TEST(test_udiv64_loop_matches_c_division);
     RUN_TEST(test_udiv64_by32_matches_c_division);
     RUN_TEST(test_udiv64_recip_matches_c_division);
+    RUN_TEST(test_mul_halves_match_64bit_products);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }
