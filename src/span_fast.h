@@ -357,13 +357,10 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
         if (with_g) {
             const int32_t g1 = s.g;
             if (quad) {
-                const int32_t d[2] = {fxl__i32_of_bits(s.u - u0), fxl__i32_of_bits(s.v - v0)};
-                uint32_t st[4];
-                fxl__quad_steps(d, g0, g1, div ? (int32_t)div : N, div ? -1 : ki, st);
-                du = st[0];
-                ddu = st[1];
-                dv = st[2];
-                ddv = st[3];
+                const int32_t gbar = fxl__quad_gbar(g0, g1), len = div ? (int32_t)div : N;
+                const int kq = div ? -1 : ki;
+                du = fxl__quad_axis(fxl__i32_of_bits(s.u - u0), gbar, len, kq, &ddu);
+                dv = fxl__quad_axis(fxl__i32_of_bits(s.v - v0), gbar, len, kq, &ddv);
             }
             g0 = g1;
         }
