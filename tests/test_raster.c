@@ -1082,10 +1082,66 @@ void test_draw_api_errors(void)
     }
 }
 
+/* A depth buffer that is attached but neither tested nor written changes
+ * nothing: the same pixels as without one (set-up then skips the depth
+ * plane), the buffer untouched. With only the test on, the buffer is read
+ * and still not written. Every persp mode, both filters. */
+void test_depth_buffer_unused_without_test_or_write(void)
+{
+    static uint16_t a[W * H], b[W * H], zb[W * H];
+    fxl_target_t ta, tb;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    int k, i;
+    make_texture(&tex);
+    lcg_state = 31u;
+    for (i = 0; i < W * H; i++) {
+        a[i] = b[i] = 0;
+        zb[i] = (uint16_t)(0x1357u * (uint32_t)i);
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&ta, a, W, H, W, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tb, b, W, H, W, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tb, zb));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    for (k = 0; k < 400; k++) {
+        static const int16_t persp[5] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, 8, 16, FXL_PERSP_AUTO};
+        fxl_vertex_t v[3];
+        random_tri(v, 120.0);
+        d.filter = (uint8_t)(k & 1);
+        d.persp = persp[k % 5];
+        d.depth = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&ta, &d, v, NULL));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tb, &d, v, NULL));
+    }
+    TEST_ASSERT_EQUAL_MEMORY(a, b, sizeof a);
+    for (i = 0; i < W * H; i++)
+        TEST_ASSERT_EQUAL_UINT16((uint16_t)(0x1357u * (uint32_t)i), zb[i]);
+    /* Test without write against a buffer of zeros (the farthest depth):
+     * every pixel passes, so the pixels are again those drawn without a
+     * buffer (which needs the depth plane), and the buffer stays zero. */
+    for (i = 0; i < W * H; i++) {
+        a[i] = b[i] = 0;
+        zb[i] = 0;
+    }
+    for (k = 0; k < 100; k++) {
+        fxl_vertex_t v[3];
+        random_tri(v, 120.0);
+        d.depth = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&ta, &d, v, NULL));
+        d.depth = FXL_DEPTH_TEST;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tb, &d, v, NULL));
+    }
+    TEST_ASSERT_EQUAL_MEMORY(a, b, sizeof a);
+    for (i = 0; i < W * H; i++)
+        TEST_ASSERT_EQUAL_UINT16(0, zb[i]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_fill_rule_matches_exact_reference_on_random_triangles);
+    RUN_TEST(test_depth_buffer_unused_without_test_or_write);
     RUN_TEST(test_fill_rule_long_edges_do_not_drift);
     RUN_TEST(test_fill_rule_centres_on_edges_all_eight_orientations);
     RUN_TEST(test_watertight_grid_mesh_each_pixel_once);
