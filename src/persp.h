@@ -151,6 +151,37 @@ static inline int32_t fxl__asr64_to_i32(int64_t x, int k)
     return fxl__asr32(fxl__i32_of_bits(hi), k - 32);
 }
 
+/* floor((2^32 - 1) / d) for d in (2^15, 2^16]: fxl__recip's first
+ * estimate. Cores without a divide instruction (ARMv6-M: with
+ * FXL__MUL_HALVES, -O2) call __aeabi_uidiv for it, ~130 instructions a
+ * correction point; instead a table (d's top bits) gives an estimate q0
+ * at most ~510 below the quotient, one product with q0 as 1/d refines it
+ * from below to within 2 (underestimates all the way, so the remainder
+ * stays non-negative), and at most two steps correct it: the exact
+ * quotient (test_fixed checks every d). */
+#ifndef FXL__DIV_TABLE
+#define FXL__DIV_TABLE FXL__MUL_HALVES
+#endif
+extern const uint16_t fxl__div_ffffffff_q0[256];   /* persp.c, where used */
+static inline uint32_t fxl__div_ffffffff(uint32_t d)
+{
+#if FXL__DIV_TABLE
+    /* d <= ((d - 1) >> 7) * 128 + 128: q0 <= the quotient; r0 < 2^25 */
+    const uint32_t q0 = 65535u + fxl__div_ffffffff_q0[((d - 1u) >> 7) & 255u];
+    const uint32_t r0 = 0xFFFFFFFFu - q0 * d;
+    /* r0 / d from below: q0 / 2^32 <= 1 / d; the product < 2^31 */
+    uint32_t q = q0 + (((r0 >> 10) * (q0 >> 1)) >> 21);
+    uint32_t r = 0xFFFFFFFFu - q * d;
+    while (r >= d) {
+        q++;
+        r -= d;
+    }
+    return q;
+#else
+    return 0xFFFFFFFFu / d;
+#endif
+}
+
 /* Inline everywhere but in size-optimised builds: it is short, and where
  * GCC outlined it (span.c grew past its inlining budget) the M4 trilinear
  * walk paid ~2% in calls. */
@@ -166,7 +197,7 @@ static FXL__RECIP_INLINE void fxl__recip(int64_t qv, fxl__recip_t *out)
     uint32_t qn = (uint32_t)((q << n) >> 32);        /* [2^31, 2^32) */
     uint32_t d = (qn >> 16) + 1u;                     /* (2^15, 2^16] */
     /* y0 = 2^48 / qn in q16, underestimated by < 2^-15 relative. */
-    uint32_t y0 = 0xFFFFFFFFu / d;                    /* <= 2^17 - 1 */
+    uint32_t y0 = fxl__div_ffffffff(d);               /* <= 2^17 - 1 */
     /* Newton: y1 = y0 * (2 - x * y0) with x = qn / 2^32. e = x*y0 in q48 is
      * in [2^48 (1 - 2^-14), 2^48], so 2^49 - e in (2^48, 2^48 (1 + 2^-14)]
      * and t = (2^49 - e) >> 17 fits 32 bits (q31 of 2 - x*y0). */

@@ -20,6 +20,7 @@
 /* the Cortex-M0+ products (four 16 x 16-bit halves), checked here on the
  * host, also inside the reciprocal division's high product */
 #define FXL__MUL_HALVES 1
+#define FXL__DIV_TABLE 1
 #include "../src/div64.h"
 #include "../src/persp.h"
 
@@ -886,6 +887,18 @@ static void test_mul_halves_match_64bit_products(void)
     }
 }
 
+/* fxl__recip's first quotient without a divide instruction (persp.h,
+ * FXL__DIV_TABLE, forced on here): exact for every divisor it can get. */
+static void test_div_ffffffff_table_is_exact(void)
+{
+    uint32_t d;
+    for (d = 32769u; d <= 65536u; d++)
+        if (fxl__div_ffffffff(d) != 0xFFFFFFFFu / d) {
+            snprintf(msg, sizeof msg, "d=%lu", (unsigned long)d);
+            TEST_FAIL_MESSAGE(msg);
+        }
+}
+
 static void check_sdiv64_loop(int64_t n, int64_t d)
 {
     snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
@@ -965,6 +978,7 @@ int main(void)
     RUN_TEST(test_udiv64_by32_matches_c_division);
     RUN_TEST(test_udiv64_recip_matches_c_division);
     RUN_TEST(test_mul_halves_match_64bit_products);
+    RUN_TEST(test_div_ffffffff_table_is_exact);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }

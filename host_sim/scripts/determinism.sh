@@ -2,7 +2,8 @@
 # determinism.sh - the gallery CRCs must be bit-identical across builds.
 #
 # Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
-# variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, clang -O2 (when
+# variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, gcc -O2 with
+# the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
 # -M mps2-an386 with semihosting (when both exist), and compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data
@@ -49,6 +50,10 @@ run_host gcc-O2 gcc -O2
 # -Os selects the size-optimised code: the generic span walk instead of the
 # specialised ones, fixel's own 64-bit division (FXL_SMALL_DIV64)
 run_host gcc-Os gcc -Os
+# the arithmetic of 32-bit cores without UMULL or UDIV (Cortex-M0+ at -O2):
+# products from 16-bit halves, the table-started reciprocal, set-up's
+# division by a reciprocal; no qemu run checks M0+ images, this does
+run_host gcc-O2-m0arith gcc -O2 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1
 if command -v clang >/dev/null 2>&1; then
     run_host clang-O2 clang -O2
 else
