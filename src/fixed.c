@@ -14,6 +14,7 @@
 #include <stddef.h>
 
 #include "fixel/fixed.h"
+#include "clz.h"
 #include "div64.h"
 #include "isqrt.h"
 
@@ -281,17 +282,9 @@ int fxl_clz32(uint32_t x)
     /* unsigned int is 32 bits on every target selected above. */
     return __builtin_clz((unsigned int)x);
 #else
-    {
-        /* Binary search, 5 compares: no libgcc helper (__clzsi2) on cores
-         * without a CLZ instruction such as Cortex-M0+. */
-        int n = 0;
-        if (x <= 0x0000FFFFu) { n += 16; x <<= 16; }
-        if (x <= 0x00FFFFFFu) { n += 8;  x <<= 8; }
-        if (x <= 0x0FFFFFFFu) { n += 4;  x <<= 4; }
-        if (x <= 0x3FFFFFFFu) { n += 2;  x <<= 2; }
-        if (x <= 0x7FFFFFFFu) { n += 1; }
-        return n;
-    }
+    /* no libgcc helper (__clzsi2) on cores without a CLZ instruction such
+     * as Cortex-M0+ */
+    return fxl__clz32_soft(x);
 #endif
 }
 

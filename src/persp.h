@@ -18,6 +18,7 @@
 #include <stdint.h>
 #include "raster_int.h"
 #include "div64.h"
+#include "clz.h"
 
 /* The perspective division runs at every correction point of every span
  * walk: on x86-64 a call plus spills is ~20% of a segment, so it is always
@@ -51,6 +52,11 @@ static inline int fxl__clz64_inline(uint64_t x)
     /* two CLZ on the halves, no call */
     uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
     return hi ? __builtin_clz(hi) : (lo ? 32 + __builtin_clz(lo) : 64);
+#elif !defined(__OPTIMIZE_SIZE__)
+    /* no CLZ instruction (Cortex-M0+): the binary search inline, not two
+     * calls (~1 M0+ instruction a pixel of the floor, ~4 of the tunnel) */
+    const uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
+    return hi ? fxl__clz32_soft(hi) : (lo ? 32 + fxl__clz32_soft(lo) : 64);
 #else
     return fxl_clz64(x);
 #endif
@@ -60,6 +66,8 @@ static inline int fxl__clz32_inline(uint32_t x)
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
     return x ? __builtin_clz(x) : 32;
+#elif !defined(__OPTIMIZE_SIZE__)
+    return x ? fxl__clz32_soft(x) : 32;
 #else
     return fxl_clz32(x);
 #endif

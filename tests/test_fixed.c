@@ -23,6 +23,7 @@
 #define FXL__DIV_TABLE 1
 #include "../src/div64.h"
 #include "../src/persp.h"
+#include "../src/clz.h"
 
 #define RANDOM_ITERS 200000
 
@@ -623,6 +624,14 @@ static void test_clz_matches_shift_count_on_random_values(void)
         snprintf(msg, sizeof msg, "x=0x%016llx", (unsigned long long)x);
         TEST_ASSERT_EQUAL_INT_MESSAGE(n64, fxl_clz64(x), msg);
         TEST_ASSERT_EQUAL_INT_MESSAGE(n32, fxl_clz32(lo), msg);
+        /* the binary search Cortex-M0+ builds run (clz.h) */
+        if (lo != 0u)
+            TEST_ASSERT_EQUAL_INT_MESSAGE(n32, fxl__clz32_soft(lo), msg);
+    }
+    for (i = 0; i < 32; i++) {
+        const uint32_t bit = (uint32_t)1 << i;
+        TEST_ASSERT_EQUAL_INT(31 - i, fxl__clz32_soft(bit));
+        TEST_ASSERT_EQUAL_INT(31 - i, fxl__clz32_soft(bit | (bit - 1u)));
     }
 }
 
