@@ -237,7 +237,9 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
 void fxl__span_setup(fxl__tri_t *tri);
 
 /* Rows (span.c): draw the span [xl, xr) of frame row `row` clipped to
- * [cl, cr), where xl <= cl < cr <= xr (anything else draws nothing). */
+ * [cl, cr), where xl <= cl < cr <= xr (anything else draws nothing), with
+ * the generic walk and seg function fn; the specialised walks are reached
+ * through fxl__pick_span_fn below. */
 void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                     int32_t cl, int32_t cr);
 
@@ -254,10 +256,10 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
 #endif
 #endif
 
-/* The specialised walk fxl__draw_span would take for every span of tri
- * with seg function fn (after fxl__span_setup), or NULL. Called directly
- * it skips the per-span dispatch; it requires xl <= cl < cr <= xr, which
- * the caller must guarantee. */
+/* The specialised walk for every span of tri with seg function fn (after
+ * fxl__span_setup), or NULL: then fxl__draw_span's generic walk serves.
+ * Chosen once a triangle, so no span pays a dispatch; it requires
+ * xl <= cl < cr <= xr, which the caller must guarantee. */
 typedef void (*fxl__span_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr);
 fxl__span_fn fxl__pick_span_fn(const fxl__tri_t *tri, fxl__seg_fn fn);
 

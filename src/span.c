@@ -1365,15 +1365,6 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
      * no segment's pixel count is negative. Checked here, once a span. */
     if (!(xl <= cl && cl < cr && cr <= xr))
         return;
-    /* the caller's seg function is the one fxl__pick_seg_fn chose for this
-     * triangle: take the specialised walk */
-    {
-        const fxl__span_fn span = fxl__pick_span_fn(tri, fn);
-        if (span) {
-            span(tri, row, xl, xr, cl, cr);
-            return;
-        }
-    }
     draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
 
