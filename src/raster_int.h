@@ -74,6 +74,8 @@ typedef struct fxl__recip {
 /* fxl__recip() and fxl__persp() are inline in persp.h. */
 
 /* Everything the span loops need for one triangle. */
+struct fxl__lean;   /* span.c: the lean walks' position */
+
 typedef struct fxl__tri {
     const fxl_draw_t *draw;
     const fxl_texture_t *tex;    /* NULL: untextured */
@@ -92,6 +94,10 @@ typedef struct fxl__tri {
     /* q the same everywhere (affine mode, a face parallel to the screen):
      * every correction point's 1/q is 1/q_min, computed once */
     uint8_t q_const;
+    /* the lean walks' correction (span.c), chosen with the walk: a copy
+     * that keeps the span start's 1/q where q is the same along every row
+     * (gpx[PQ] == 0: a floor or ceiling seen without roll) */
+    void (*lean_next)(const struct fxl__tri *tri, struct fxl__lean *s, uint32_t mult);
     fxl__recip_t rc_qmin;        /* fxl__recip(q_min), with q_const */
 
     int seg_log2;                /* log2 of the segment length; -1: whole span */
@@ -259,9 +265,10 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
 /* The specialised walk for every span of tri with seg function fn (after
  * fxl__span_setup), or NULL: then fxl__draw_span's generic walk serves.
  * Chosen once a triangle, so no span pays a dispatch; it requires
- * xl <= cl < cr <= xr, which the caller must guarantee. */
+ * xl <= cl < cr <= xr, which the caller must guarantee. Sets the walk's
+ * tri->lean_next. */
 typedef void (*fxl__span_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr);
-fxl__span_fn fxl__pick_span_fn(const fxl__tri_t *tri, fxl__seg_fn fn);
+fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn);
 
 /* log2 of x > 0 in q8 (8 fraction bits), error < 2^-8 + table error. */
 int32_t fxl__log2_q8(uint64_t x);

@@ -586,8 +586,10 @@ typedef struct fxl__walk {
 
 #if defined(__GNUC__)
 #define FXL__NOINLINE __attribute__((noinline))
+#define FXL__UNLIKELY(c) __builtin_expect((c) != 0, 0)
 #else
 #define FXL__NOINLINE
+#define FXL__UNLIKELY(c) (c)
 #endif
 
 /* Segments per batch of the specialised walks (span_fast.h): its arrays
@@ -667,29 +669,39 @@ typedef struct fxl__lean {
  * division and its 64-bit arithmetic (flattened in) get all the registers,
  * and the span functions keep theirs for the pixel loop. */
 static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult, const int with_z,
-                                    const int with_g)
+                                    const int with_g, const int row_const)
 {
     fxl__pt_t pt;
     fxl__recip_t rc;
 
-    if (mult == 0u) {
+    if (row_const) {
+        /* s->sq stays: gpx[PQ] == 0 */
+    } else if (mult == 0u) {
         s->sq += (uint64_t)tri->gpxN[FXL__PQ];
+    } else {
+        /* a 64 x 32 multiply: cheaper than a 64-bit shift by a variable on
+         * 32-bit cores */
+        s->sq += (uint64_t)tri->gpx[FXL__PQ] * mult;
+    }
+    if (mult == 0u) {
         s->su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
         s->sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
         if (with_z)
             s->sz += (uint64_t)tri->gpxN[FXL__PZ];
     } else {
-        /* a 64 x 32 multiply: cheaper than a 64-bit shift by a variable on
-         * 32-bit cores */
-        s->sq += (uint64_t)tri->gpx[FXL__PQ] * mult;
         s->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * mult;
         s->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * mult;
         if (with_z)
             s->sz += (uint64_t)tri->gpx[FXL__PZ] * mult;
     }
     /* the batch walk's correction; its 64-bit copies for the LOD are
-     * dead here and optimised away */
-    recip_at(tri, (int64_t)s->sq, &rc);
+     * dead here and optimised away. Where q does not change along a row
+     * (row_const) 1/q is lean_start's: on the floor that is ~35 of a
+     * correction's ~100 Cortex-M4 instructions. */
+    if (row_const)
+        rc = s->rc;
+    else
+        recip_at(tri, (int64_t)s->sq, &rc);
     fast_correct_rc(tri, &rc, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
@@ -705,13 +717,28 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
 
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 0, 0);
+    lean_next(tri, s, mult, 0, 0, 0);
+}
+
+/* The copies for triangles whose q is the same along every row (1/q is
+ * lean_start's: the same q). The walks call through tri->lean_next, set
+ * with the walk (FXL_T_SPAN##_pick): one load more than a direct call; a
+ * test in the one copy cost the tunnel's corrections 3 Cortex-M4
+ * instructions each, a pointer chosen in the walk ~7 a span. */
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rowc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+{
+    lean_next(tri, s, mult, 0, 0, 1);
 }
 
 #if FXL_HAVE_DEPTH
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 1, 0);
+    lean_next(tri, s, mult, 1, 0, 0);
+}
+
+static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_rowc(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
+{
+    lean_next(tri, s, mult, 1, 0, 1);
 }
 #endif
 
@@ -719,13 +746,13 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl_
 /* The quadratic walks' copies: they also give q_x / q (s->g). */
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 0, 1);
+    lean_next(tri, s, mult, 0, 1, 0);
 }
 
 #if FXL_HAVE_DEPTH
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
-    lean_next(tri, s, mult, 1, 1);
+    lean_next(tri, s, mult, 1, 1, 0);
 }
 #endif
 #endif
@@ -937,7 +964,7 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 #endif
 
 /* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
-typedef fxl__span_fn (*fxl__span_pick_fn)(const fxl__tri_t *tri);
+typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 
 #define FXL_T_LOOP loop_point
 #define FXL_T_SPAN span_point
@@ -1368,7 +1395,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
     draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
 
-fxl__span_fn fxl__pick_span_fn(const fxl__tri_t *tri, fxl__seg_fn fn)
+fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn)
 {
 #if FXL__FAST_SPANS
     /* only for exactly the seg function fxl__pick_seg_fn chose: a

@@ -348,11 +348,7 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
             lean_next_uv_g(tri, &s, mult);
         else
 #endif
-#if FXL_T_DEPTH
-            lean_next_uvz(tri, &s, mult);
-#else
-            lean_next_uv(tri, &s, mult);
-#endif
+            tri->lean_next(tri, &s, mult);
 #if FXL_HAVE_AUTO
         if (with_g) {
             const int32_t g1 = s.g;
@@ -723,20 +719,32 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
  * ~20 x86-64 instructions a span on the lean paths too), and no span
  * pays a dispatch (~40 Cortex-M4 instructions a span when it was made per
  * span). */
-static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(const fxl__tri_t *tri)
+static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 {
     (void)tri;   /* the mip-linear variants have only the batch walk */
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
+        fxl__span_fn walk;
 #if FXL_HAVE_AUTO
 #if FXL_HAVE_QUAD
         if (tri->auto_quad)
             return FXL__CAT(FXL_T_LEAN, _quad);
 #endif
         if (tri->auto_seg)
-            return FXL__CAT(FXL_T_LEAN, _auto);
+            walk = FXL__CAT(FXL_T_LEAN, _auto);
+        else
 #endif
-        return tri->seg_log2 == 0 ? FXL_T_EXACT : FXL__CAT(FXL_T_LEAN, _fixed);
+        if (tri->seg_log2 == 0)
+            return FXL_T_EXACT;
+        else
+            walk = FXL__CAT(FXL_T_LEAN, _fixed);
+        /* the affine walks' correction: q the same along every row, or not */
+#if FXL_T_DEPTH
+        tri->lean_next = tri->gpx[FXL__PQ] == 0 ? lean_next_uvz_rowc : lean_next_uvz;
+#else
+        tri->lean_next = tri->gpx[FXL__PQ] == 0 ? lean_next_uv_rowc : lean_next_uv;
+#endif
+        return walk;
     }
 #endif
     return FXL_T_WALK;
