@@ -792,7 +792,7 @@ static FXL__NOINLINE void lean_start(const fxl__tri_t *tri, int32_t x, int32_t d
 static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
                                       fxl__lean_t *s, const int32_t x0, const int32_t xl, const int32_t xr,
                                       const int32_t cr, uint32_t *puv, uint32_t *pz, int *more,
-                                      uint32_t *ndiv, const int with_z)
+                                      uint32_t *ndiv, const int with_z, const int row_const)
 {
     const uint64_t gq = (uint64_t)tri->gpx[FXL__PQ];
     const uint64_t gu = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
@@ -821,7 +821,10 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
         sq += gq;
         su += gu;
         sv += gv;
-        fast_correct_batch(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
+        if (row_const)
+            fast_correct_rc(tri, &s->rc, (int64_t)su, (int64_t)sv, &pt);   /* q is s->sq's */
+        else
+            fast_correct_batch(tri, (int64_t)sq, (int64_t)su, (int64_t)sv, &pt);
         if (with_z)
             sz += gz;
 #if FXL_HAVE_AUTO
@@ -864,19 +867,32 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
 
 /* One copy for exact mode and one for AUTO's runs: with the adaptive
  * chooser in the same loop, exact mode spilled ~7 Cortex-M4 instructions
- * a pixel. */
+ * a pixel. Exact mode has a second copy for triangles whose q is the same
+ * along every row (gpx[PQ] == 0), which keeps lean_start's 1/q (~35% of
+ * an exact floor pixel on a Cortex-M4); chosen by the caller once a chunk
+ * (both in one function, the other copy spilled ~2.6 instructions a
+ * pixel). AUTO draws those triangles affine. */
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                           const int32_t xl, const int32_t xr, const int32_t cr,
+                                                           uint32_t *puv, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 1);
+}
+
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                             const int32_t xl, const int32_t xr, const int32_t cr,
                                                             uint32_t *puv, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+    if (tri->gpx[FXL__PQ] == 0)
+        return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 0);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_auto(const fxl__tri_t *tri, const int32_t t_row, fxl__lean_t *s,
                                                            const int32_t x0, const int32_t xl, const int32_t xr,
                                                            const int32_t cr, uint32_t *puv, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0);
+    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 0);
 }
 
 static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
@@ -889,11 +905,20 @@ static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autose
 }
 
 #if FXL_HAVE_DEPTH
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                            const int32_t xl, const int32_t xr, const int32_t cr,
+                                                            uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 1);
+}
+
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                              const int32_t xl, const int32_t xr, const int32_t cr,
                                                              uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+    if (tri->gpx[FXL__PQ] == 0)
+        return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 0);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_auto(const fxl__tri_t *tri, const int32_t t_row,
@@ -901,7 +926,7 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_auto(const fxl__tri_t *tr
                                                             const int32_t xr, const int32_t cr, uint32_t *puv,
                                                             uint32_t *pz, int *more, uint32_t *ndiv)
 {
-    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1);
+    return lean_run(tri, 1, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 0);
 }
 
 static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,

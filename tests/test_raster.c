@@ -684,7 +684,7 @@ static int rolled_floor_scene(tri_t *out, double roll_deg)
 /* Writes the texel index a point-sampled repeat lookup of a 256 x 256
  * texture takes (as the specialised walks index it) and counts the
  * triangles whose segments were cut by the adaptive bound. */
-static int probe_auto_seg_tris, probe_auto_quad_tris, probe_last_quad;
+static int probe_auto_seg_tris, probe_auto_quad_tris, probe_row_const_tris, probe_last_quad;
 static const fxl__tri_t *probe_last_tri;
 static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
@@ -692,6 +692,7 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
     if (tri != probe_last_tri) {   /* the first segment of a draw */
         probe_auto_seg_tris += tri->auto_seg != 0;
         probe_auto_quad_tris += tri->auto_quad;
+        probe_row_const_tris += tri->gpx[FXL__PQ] == 0;
         probe_last_tri = tri;
     }
     for (i = 0; i < s->n; i++) {
@@ -705,7 +706,9 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
  * spans into the same segments and compute the same u, v: with a texture
  * whose texels hold their own index, every pixel of the fast walk equals
  * the index the generic walk computes, for fixed, exact and adaptive
- * (per-segment) lengths, with and without an x-clip. */
+ * (per-segment) lengths, with and without an x-clip. A quarter of the
+ * triangles have q constant along rows (two vertices on one row at one
+ * depth), where the fast walks keep the span start's 1/q. */
 void test_fast_and_generic_walks_agree(void)
 {
     enum { NT = 120 };
@@ -728,8 +731,13 @@ void test_fast_and_generic_walks_agree(void)
             tris[k][i] = vtx((rnd() % 20001) / 10000.0 * 3 * W - W, (rnd() % 20001) / 10000.0 * 3 * H - H,
                              i == 0 ? 0.03 : 0.3 + (rnd() % 700) / 1000.0, ((int)(rnd() % 2001) - 1000) / 100.0,
                              ((int)(rnd() % 2001) - 1000) / 100.0);
+        if (k >= NT - NT / 4) {
+            /* vertex 1 on vertex 0's row at its depth: q_x == 0 */
+            tris[k][1].y = tris[k][0].y;
+            tris[k][1].inv_w = tris[k][0].inv_w;
+        }
     }
-    probe_auto_seg_tris = probe_auto_quad_tris = 0;
+    probe_auto_seg_tris = probe_auto_quad_tris = probe_row_const_tris = 0;
     for (m = 0; m < 5; m++)
         for (c = 0; c < 2; c++) {
             const fxl_rect_t cr = {11, 0, W - 9, H};
@@ -763,10 +771,11 @@ void test_fast_and_generic_walks_agree(void)
     /* guard against the comparison passing vacuously: the adaptive draws
      * that reached the target did run the per-segment walk (43 of the 480
      * with this seed; the rest are off-target or get one length) */
-    snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment, %d quadratic", probe_auto_seg_tris, 4 * NT,
-             probe_auto_quad_tris);
+    snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment, %d quadratic; %d of %d with q_x == 0",
+             probe_auto_seg_tris, 4 * NT, probe_auto_quad_tris, probe_row_const_tris, 10 * NT);
     TEST_MESSAGE(msg);
     TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= NT / 4, msg);
+    TEST_ASSERT_TRUE_MESSAGE(probe_row_const_tris >= NT / 4, msg);
 #if FXL_HAVE_QUAD
     TEST_ASSERT_TRUE_MESSAGE(probe_auto_quad_tris >= NT / 4, msg);
 #endif
