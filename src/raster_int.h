@@ -96,7 +96,7 @@ typedef struct fxl__tri {
     uint8_t q_const;
     /* the lean walks' correction (span.c), chosen with the walk: a copy
      * that keeps the span start's 1/q where q is the same along every row
-     * (gpx[PQ] == 0: a floor or ceiling seen without roll) */
+     * (gpx[PQ] == 0 exactly: two vertices on one row at one depth) */
     void (*lean_next)(const struct fxl__tri *tri, struct fxl__lean *s, uint32_t mult);
     fxl__recip_t rc_qmin;        /* fxl__recip(q_min), with q_const */
 
