@@ -586,10 +586,8 @@ typedef struct fxl__walk {
 
 #if defined(__GNUC__)
 #define FXL__NOINLINE __attribute__((noinline))
-#define FXL__UNLIKELY(c) __builtin_expect((c) != 0, 0)
 #else
 #define FXL__NOINLINE
-#define FXL__UNLIKELY(c) (c)
 #endif
 
 /* Segments per batch of the specialised walks (span_fast.h): its arrays
@@ -868,10 +866,11 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
 /* One copy for exact mode and one for AUTO's runs: with the adaptive
  * chooser in the same loop, exact mode spilled ~7 Cortex-M4 instructions
  * a pixel. Exact mode has a second copy for triangles whose q is the same
- * along every row (gpx[PQ] == 0), which keeps lean_start's 1/q (~35% of
- * an exact floor pixel on a Cortex-M4); chosen by the caller once a chunk
- * (both in one function, the other copy spilled ~2.6 instructions a
- * pixel). AUTO draws those triangles affine. */
+ * along every row (gpx[PQ] == 0), which keeps lean_start's 1/q (~30% of
+ * an exact floor pixel on a Cortex-M4), out of line: the exact copy tests
+ * once a chunk and hands over (with both loops in one function the
+ * other's spilled ~2.6 instructions a pixel). AUTO draws those triangles
+ * affine. */
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                            const int32_t xl, const int32_t xr, const int32_t cr,
                                                            uint32_t *puv, int *more, uint32_t *ndiv)
