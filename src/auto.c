@@ -69,15 +69,13 @@ static int quad_pays(int k, int kq)
 }
 
 /* fxl__log2_q8 of x > 0, inline where speed counts: six calls a triangle
- * were ~1 Cortex-M4 instruction a pixel of the tunnel. Values known to fit
- * 32 bits take the 32-bit form (a 64-bit CLZ and shift are ~15 M4
- * instructions more); -Os builds share the one out-of-line copy. */
+ * were ~1 Cortex-M4 instruction a pixel of the tunnel; -Os builds share
+ * the one out-of-line copy. Values known to fit 32 bits take
+ * fxl__log2_q8_32 (a 64-bit CLZ and shift are ~15 M4 instructions more). */
 #if defined(__OPTIMIZE_SIZE__)
 #define log2_q8(x) fxl__log2_q8(x)
-#define log2_q8_32(x) fxl__log2_q8((uint64_t)(x))
 #else
 #define log2_q8(x) fxl__log2_q8_inline(x)
-#define log2_q8_32(x) fxl__log2_q8_32(x)
 #endif
 
 /* Quadratic segments for tri: one length (auto_seg 2, seg_log2) or per
@@ -199,8 +197,8 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     {
         const int32_t ba = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
         const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
-        lba = ba > 0 ? log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
-        lbq = bq > 0 ? log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
+        lba = ba > 0 ? fxl__log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
+        lbq = bq > 0 ? fxl__log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
     }
     {
@@ -219,9 +217,9 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
         if (R == 0)
             return;   /* u, v constant: no error at any length */
         if (R <= INT32_MAX && tri->q_min > 0) {
-            const int32_t lr = log2_q8_32((uint32_t)R) - 16 * 256;
+            const int32_t lr = fxl__log2_q8_32((uint32_t)R) - 16 * 256;
             const int32_t lrho = log2_q8(g) + 2 - (log2_q8((uint64_t)tri->q_min) - 1);
-            const int32_t lw = log2_q8_32((uint32_t)w) + 2;
+            const int32_t lw = fxl__log2_q8_32((uint32_t)w) + 2;
             if (lr + 2 + lw + lrho - 512 <= lba - 1)
                 return;
             if (quad && cap <= 4 && cap <= FXL__QUAD_CAP && lr + 2 + 2 * (lw + lrho) <= lbq - 1 + 1120) {
@@ -263,7 +261,7 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     if (lnmax == INT32_MIN / 4)
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
-    lb = log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
+    lb = fxl__log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
     lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);

@@ -93,12 +93,17 @@ static inline int32_t fxl__log2_q8_u32(uint32_t x)
 
 /* fxl__log2_q8_inline's value for any 32-bit x > 0, in 32-bit operations:
  * fxl__log2_q8_u32 without its x >= 256 condition (one select more), for
- * values that may be small (a budget, a width, a soft-float mantissa). */
+ * values that may be small (a budget, a width, a soft-float mantissa).
+ * Size-optimised builds share the one out-of-line fxl__log2_q8. */
 static inline int32_t fxl__log2_q8_32(uint32_t x)
 {
+#if defined(__OPTIMIZE_SIZE__)
+    return fxl__log2_q8((uint64_t)x);
+#else
     const int msb = 31 - fxl__clz32_inline(x);
     const uint32_t frac = (msb >= 8 ? x >> (msb - 8) : x << (8 - msb)) & 0xFFu;
     return (int32_t)msb * 256 + fxl__log2_frac_q8[frac];
+#endif
 }
 
 /* Floor shift of a signed 64-bit value (0 <= k < 64). */

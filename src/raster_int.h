@@ -162,6 +162,11 @@ static inline int fxl__has_color(const fxl__tri_t *tri)
 {
     return FXL_HAVE_GENERIC && tri->has_color;
 }
+/* a depth buffer that the draw tests or writes (else z is never read) */
+static inline int fxl__uses_depth(const fxl__tri_t *tri)
+{
+    return tri->target->depth && (tri->depth_test || tri->depth_write);
+}
 /* Quadratic segments in this triangle (0 at compile time without them). */
 static inline int fxl__auto_quad(const fxl__tri_t *tri)
 {
@@ -266,7 +271,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
  * fxl__span_setup), or NULL: then fxl__draw_span's generic walk serves.
  * Chosen once a triangle, so no span pays a dispatch; it requires
  * xl <= cl < cr <= xr, which the caller must guarantee. Sets the walk's
- * tri->lean_next. */
+ * tri->lean_next. Built with FXL__FAST_SPANS only. */
 typedef void (*fxl__span_fn)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl, int32_t cr);
 fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn);
 

@@ -217,7 +217,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     tri->q_max *= (int64_t)1 << FXL__PF;
 
 #if FXL_HAVE_DEPTH
-    if (tri->target->depth && (tri->depth_test || tri->depth_write)) {
+    if (fxl__uses_depth(tri)) {
         for (i = 0; i < 3; i++)
             z[i] = (int64_t)v[i].inv_w;
         make_plane(&tri->z, z, X, Y, &area);

@@ -83,11 +83,7 @@ static inline int fxl__sf_is_zero(fxl__sf_t a)
 static inline int32_t fxl__sf_log2_q8(fxl__sf_t x)
 {
     const uint32_t a = x.m < 0 ? 0u - (uint32_t)x.m : (uint32_t)x.m;
-#if defined(__OPTIMIZE_SIZE__)
-    return a ? fxl__log2_q8((uint64_t)a) + x.e * 256 : INT32_MIN / 4;
-#else
     return a ? fxl__log2_q8_32(a) + x.e * 256 : INT32_MIN / 4;
-#endif
 }
 
 #endif

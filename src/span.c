@@ -525,8 +525,8 @@ static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v6
  * - the steps of repeat coordinates lie in [-2^31, 2^31), so the int32
  *   saturation of shift_step never acts and a level shift is a floor shift
  *   of the int32 bit pattern;
- * - the exponents of the two divisions are precomputed per triangle. */
-/* FXL__FAST_SPANS: raster_int.h */
+ * - the exponents of the two divisions are precomputed per triangle.
+ * The specialised walks are built where FXL__FAST_SPANS (raster_int.h). */
 
 /* A level prepared for the point loops. The texel index has two
  * formulations (FXL__IDX); with v carried as V = v << lw, row * width and
@@ -661,6 +661,13 @@ typedef struct fxl__lean {
 #define FXL__FLATTEN
 #endif
 
+/* q the same along every row (its plane has no x gradient, exactly): each
+ * correction point of a span can keep the span start's 1/q */
+static inline int q_row_const(const fxl__tri_t *tri)
+{
+    return tri->gpx[FXL__PQ] == 0;
+}
+
 /* The lean walks' correction point: the planes advanced by 2^k pixels
  * (mult == 0) or by mult pixels, and u, v (and z when with_z) there, as the
  * batch walk computes them. One copy out of line serves every variant: the
@@ -673,7 +680,7 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
     fxl__recip_t rc;
 
     if (row_const) {
-        /* s->sq stays: gpx[PQ] == 0 */
+        /* s->sq stays (q_row_const) */
     } else if (mult == 0u) {
         s->sq += (uint64_t)tri->gpxN[FXL__PQ];
     } else {
@@ -882,7 +889,7 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tr
                                                             const int32_t xl, const int32_t xr, const int32_t cr,
                                                             uint32_t *puv, int *more, uint32_t *ndiv)
 {
-    if (tri->gpx[FXL__PQ] == 0)
+    if (q_row_const(tri))
         return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
     return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 0);
 }
@@ -915,7 +922,7 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *t
                                                              const int32_t xl, const int32_t xr, const int32_t cr,
                                                              uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
 {
-    if (tri->gpx[FXL__PQ] == 0)
+    if (q_row_const(tri))
         return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
     return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 0);
 }
@@ -1195,7 +1202,7 @@ static int fast_id_of(const fxl__tri_t *tri)
 {
     const fxl_draw_t *d = tri->draw;
     const fxl_texture_t *t = tri->tex;
-    int zmode = tri->target->depth && (tri->depth_test || tri->depth_write);
+    int zmode = fxl__uses_depth(tri);
     int id;
 
     if (!(t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
@@ -1419,16 +1426,13 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
     draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
 
+#if FXL__FAST_SPANS
 fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn)
 {
-#if FXL__FAST_SPANS
     /* only for exactly the seg function fxl__pick_seg_fn chose: a
      * measuring probe gets the generic walk */
     if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].pick)
         return fast_tab[tri->fast_id].pick(tri);
-#else
-    (void)tri;
-    (void)fn;
-#endif
     return 0;
 }
+#endif

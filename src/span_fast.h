@@ -725,24 +725,24 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
         fxl__span_fn walk;
-#if FXL_HAVE_AUTO
 #if FXL_HAVE_QUAD
         if (tri->auto_quad)
-            return FXL__CAT(FXL_T_LEAN, _quad);
+            return FXL__CAT(FXL_T_LEAN, _quad);   /* its own corrections (lean_next_*_g) */
 #endif
+#if FXL_HAVE_AUTO
         if (tri->auto_seg)
             walk = FXL__CAT(FXL_T_LEAN, _auto);
         else
 #endif
         if (tri->seg_log2 == 0)
-            return FXL_T_EXACT;
+            return FXL_T_EXACT;   /* no tri->lean_next: its runs test q_row_const */
         else
             walk = FXL__CAT(FXL_T_LEAN, _fixed);
         /* the affine walks' correction: q the same along every row, or not */
 #if FXL_T_DEPTH
-        tri->lean_next = tri->gpx[FXL__PQ] == 0 ? lean_next_uvz_rowc : lean_next_uvz;
+        tri->lean_next = q_row_const(tri) ? lean_next_uvz_rowc : lean_next_uvz;
 #else
-        tri->lean_next = tri->gpx[FXL__PQ] == 0 ? lean_next_uv_rowc : lean_next_uv;
+        tri->lean_next = q_row_const(tri) ? lean_next_uv_rowc : lean_next_uv;
 #endif
         return walk;
     }
