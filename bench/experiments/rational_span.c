@@ -68,6 +68,14 @@ static inline int32_t smmla(int32_t a, int32_t b, int32_t acc)
 #define RHO_NEXT(qh, rho) (NEWTON_STEP(qh, rho), NEWTON_STEP(qh, rho), NEWTON_STEP(qh, rho))
 #endif
 
+/* Four pixels of a loop body M(i), straight-line (the count is the
+ * disassembly's). */
+#define UNROLL4(M) \
+    M(0);          \
+    M(1);          \
+    M(2);          \
+    M(3)
+
 /* Pass 1: sigma(m) = m rho(m) 2^-s for n pixels (n a multiple of 4), qh
  * stepping by g; mk steps by k = 2^(32 - s) so that smmul(mk, rho) is it. */
 void rat_sigma(int32_t *out, int32_t n, int32_t qh, int32_t g, int32_t rho, int32_t mk, int32_t k)
@@ -75,10 +83,7 @@ void rat_sigma(int32_t *out, int32_t n, int32_t qh, int32_t g, int32_t rho, int3
     int32_t *end = out + n;
 #define RAT_SIGMA(i) (qh += g, RHO_NEXT(qh, rho), mk += k, out[i] = smmul(mk, rho))
     while (out != end) {
-        RAT_SIGMA(0);
-        RAT_SIGMA(1);
-        RAT_SIGMA(2);
-        RAT_SIGMA(3);
+        UNROLL4(RAT_SIGMA);
         out += 4;
     }
 #undef RAT_SIGMA
@@ -95,10 +100,7 @@ void rat_texels(uint16_t *dst, int32_t n, const uint16_t *tex, uint32_t lw, uint
         dst[i] = tex[(((v << lw) & mv16) | (u & mu16)) >> 16];                                              \
     } while (0)
     while (dst != end) {
-        RAT_PIXEL(0);
-        RAT_PIXEL(1);
-        RAT_PIXEL(2);
-        RAT_PIXEL(3);
+        UNROLL4(RAT_PIXEL);
         dst += 4;
         sigma += 4;
     }
