@@ -317,12 +317,16 @@ static FXL__QUAD_INLINE uint32_t fxl__quad_axis(int32_t d, int32_t gbar, int32_t
     }
     {
         /* |2 c1| < 2^31, len <= 64: |ddv| < 2^30, |num| < 2^31 + 2^41;
-         * a 32-bit division where num fits (the rule) */
+         * a 32-bit division where num fits (the rule). "Fits" is tested
+         * on the high word (one compare; the 64-bit range test was ~6 M4
+         * instructions more an axis, on 62% of the tunnel's AUTO
+         * segments); INT32_MIN / len is exact in 32 bits for len >= 2. */
         const int32_t ddv = -(2 * c1 / len);
         const int64_t num = (int64_t)d - fxl__mul_s32(ddv, len * (len - 1) / 2);
+        const int32_t lo = fxl__i32_of_bits((uint32_t)(uint64_t)num);
         *ddu = (uint32_t)ddv;
-        return num >= -INT32_MAX && num <= INT32_MAX ? (uint32_t)((int32_t)num / len)
-                                                     : (uint32_t)(uint64_t)fxl__sdiv64(num, len);
+        return (int32_t)fxl__asr64(num, 32) == fxl__asr32(lo, 31) ? (uint32_t)(lo / len)
+                                                                  : (uint32_t)(uint64_t)fxl__sdiv64(num, len);
     }
 }
 
