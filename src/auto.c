@@ -140,7 +140,7 @@ static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
  * division at all. q is 1/w up to a common factor, so the vertices' inv_w
  * serve exactly; the ranges are of the q16 vertex values, which rebasing
  * by whole periods does not change. */
-void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3])
+void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrange)
 {
     const fxl_texture_t *t = tri->tex;
     /* 32 x 32 multiplies, not 64-bit shifts (one UMULL, one UMLAL on a
@@ -155,11 +155,23 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3])
     /* Gouraud colours stay perspective-correct: the budget is in texels.
      * r < 2^31 and qmax - qmin < 2^32: the product < 2^63; the right side
      * < 2^2 * 2^32 * 2^24 */
-    if (!tri->has_color && b > 0 && r <= INT32_MAX && r * (qmax - qmin) <= 4u * ((uint64_t)qmin * (uint32_t)b))
+    if (!tri->has_color && b > 0 && r <= INT32_MAX && r * (qmax - qmin) <= 4u * ((uint64_t)qmin * (uint32_t)b)) {
         tri->affine = 1;
+        return;
+    }
+    {
+        /* No span is longer than the bounding box: a longer L changes
+         * nothing. cap: the least <= 8 with 2^cap >= w. */
+        const int32_t w = (int32_t)(xrange >> FXL__S) + 1;   /* < 2^17 */
+        int cap = 0;
+        if (w > 1)
+            cap = 32 - fxl__clz32_inline((uint32_t)w - 1u);
+        tri->auto_w = w;
+        tri->auto_cap = (int8_t)(cap < 8 ? cap : 8);
+    }
 }
 
-void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
+void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
      * u in texels = (S / q) * 2^(shift_u + log2_w - 16). */
@@ -168,28 +180,11 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
     fxl__sf_t qx, q0, qy, A[2], B[2], n[2][2];
     int32_t ys[2];   /* least and greatest vertex Y */
-    int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4, w;
-    int i, j, cap = 0, k, E, quad;
+    int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4;
+    int i, j, k, E, quad;
     int32_t lbq, lba, lqmin;
-
-    tri->auto_seg = 0;
-    tri->auto_quad = 0;
-    tri->seg_log2 = 8;
-    if (!fxl__has_uv(tri) || qx_g == 0)
-        return;   /* constant depth along every span: affine is exact */
-    /* No span is longer than the bounding box: a longer L changes nothing. */
-    w = (int32_t)(range3(X[0], X[1], X[2]) >> FXL__S) + 1;   /* widest span, px, < 2^17 */
-    /* the least cap <= 8 with 2^cap >= w */
-    if (w > 1)
-        cap = 32 - fxl__clz32_inline((uint32_t)w - 1u);
-    cap = cap < 8 ? cap : 8;
-    /* Spans of at most 2 pixels have a correction point at every pixel
-     * (the last segment ends on the span's last pixel) whatever the
-     * length: no bound to compute (a tenth of the tunnel's triangles,
-     * ~1,400 Cortex-M4 instructions each). */
-    tri->seg_log2 = cap;
-    if (cap <= 1)
-        return;
+    const int32_t w = tri->auto_w;
+    const int cap = tri->auto_cap;
     qx = fxl__sf_make(qx_g, 0);
     /* The budget's q8 log2 less the margins of the vertex test (affine)
      * and of quadratic segments (the plain budget's, lb, once the vertex
@@ -338,7 +333,6 @@ void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3])
         const int32_t t0q = lbq - 1 + 1120 - 2 * (lqx + 2) - 256 * E - 4 + 4 * 256 * FXL__PF;
         tri->auto_tq = t0q - tri->auto_t0;
     }
-    tri->auto_cap = (int8_t)cap;
     tri->seg_log2 = cap;
     if (quad)
         use_quad(tri, qx, 1);

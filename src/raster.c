@@ -7,6 +7,7 @@
  */
 #include "raster_int.h"
 #include "persp.h"
+#include "auto.h"
 
 void fxl_draw_defaults(fxl_draw_t *d)
 {
@@ -279,7 +280,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     /* AUTO: where the vertex bound holds, no division is needed (auto.c).
      * The vertices' texel ranges serve the vertex test and the set-up. */
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv)
-        fxl__auto_vertices(&tri, v);
+        fxl__auto_vertices(&tri, v, (uint32_t)maxx - (uint32_t)minx);
 #endif
     tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.nlevels = 0;
@@ -291,7 +292,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
         return st;
 #if FXL_HAVE_AUTO
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
-        fxl__auto_setup(&tri, X, Y);
+        fxl__auto_setup(&tri, Y);
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

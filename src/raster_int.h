@@ -106,7 +106,8 @@ typedef struct fxl__tri {
      * is quadratic, of length 2^seg_log2 (0: one fixed length, as other modes) */
     uint8_t auto_seg;
     uint64_t auto_duv;           /* range u + range v of the vertices, q16 texels of level 0 */
-    int8_t auto_cap;             /* longest log2 length: the widest span */
+    int32_t auto_w;              /* the widest span (bounding box), px, < 2^17 */
+    int8_t auto_cap;             /* longest log2 length: the least <= 8 with 2^cap >= auto_w */
     uint32_t auto_gx32;          /* ceil(|q_x| per pixel >> PF), saturated at 2^31 */
     int32_t auto_t0;             /* q8 log2 terms of the bound common to all rows */
     int64_t auto_n[2];           /* N_u, N_v at Y0, units of 2^-29 of their largest value */
@@ -236,13 +237,15 @@ void fxl__edge_step(fxl__edge_t *e);
 /* FXL_PERSP_AUTO (auto.c). Before set-up, fxl__auto_vertices stores
  * tri->auto_duv and, unless the triangle has Gouraud colours, sets
  * tri->affine where the vertex bound proves it within the draw's
- * auto_budget drawn affine (tri has a texture, draw and tex set). Otherwise
- * fxl__auto_setup, after fxl__setup (X, Y the snapped vertices), sets
- * seg_log2 (0..8) when one length suits the whole triangle (with auto_quad
- * and auto_seg 2 when it is quadratic), else auto_seg 1 and the per-row
- * terms of auto.h. */
-void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3]);
-void fxl__auto_setup(fxl__tri_t *tri, const int32_t X[3], const int32_t Y[3]);
+ * auto_budget drawn affine (tri has a texture, draw and tex set; xrange
+ * the snapped vertices' X range, subpx); otherwise auto_w and auto_cap. Then
+ * fxl__auto_setup (auto.h), after fxl__setup, sets seg_log2 (0..8) when
+ * one length suits the whole triangle (with auto_quad and auto_seg 2 when
+ * it is quadratic), else auto_seg 1 and the per-row terms of auto.h;
+ * fxl__auto_bound is its part that computes the bound (auto_cap >= 2;
+ * Y the snapped vertices' rows). */
+void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrange);
+void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3]);
 
 /* Per-triangle preparation of the span walk (span.c), after fxl__setup. */
 void fxl__span_setup(fxl__tri_t *tri);
