@@ -1024,6 +1024,56 @@ void test_quad_steps_follow_their_parabola(void)
     }
 }
 
+/* The span's last quadratic segment (fxl__quad_axis with k < 0): its
+ * first step and curvature against the formula in 64 bits,
+ *   ddv = -(2 c1 / len),  du = trunc((d - ddv len (len - 1) / 2) / len),
+ * for d, g anywhere in int32 (edges included) and len 2..64. The walk
+ * divides in 32 bits where the numerator fits, tested on its high word;
+ * the draws put the numerator on both sides of that test, on INT32_MIN
+ * and INT32_MAX themselves, and within 8 of them outside. */
+static int32_t rnd_i32_any_scale(void)   /* |x| < 2^31, log-uniform-ish magnitude, either sign */
+{
+    const int32_t m = (int32_t)((((rnd() << 8) ^ rnd()) >> 1) >> (rnd() % 31u));
+    return (rnd() & 1u) ? -m : m;
+}
+
+void test_quad_last_segment_step_matches_64bit(void)
+{
+    static const int32_t edges[] = {INT32_MIN, INT32_MIN + 1, -(1 << 28), -1, 0, 1, 1 << 28, INT32_MAX - 1, INT32_MAX};
+    const int ne = (int)(sizeof edges / sizeof edges[0]);
+    long fits = 0, wide = 0, at_min = 0, at_max = 0, near_edge = 0;
+    int n;
+    char msg[200];
+    lcg_state = 4242u;
+    for (n = 0; n < 300000; n++) {
+        const int32_t d = (n & 3) == 0 ? edges[n % ne] : rnd_i32_any_scale();
+        const int32_t g = (n & 3) == 1 ? edges[(n / 4) % ne] : rnd_i32_any_scale();
+        const int32_t len = (n & 16) ? 2 : rnd_range(2, 64);
+        const int32_t c1 = fxl__quad_c1(d, g);
+        const int64_t ddv = -((2 * (int64_t)c1) / len);
+        const int64_t num = (int64_t)d - ddv * ((int64_t)len * (len - 1) / 2);
+        const uint32_t want = (uint32_t)(uint64_t)(num / len);
+        uint32_t dd;
+        const uint32_t got = fxl__quad_axis(d, g, len, -1, &dd);
+        if (got != want || dd != (uint32_t)(uint64_t)ddv) {
+            snprintf(msg, sizeof msg, "d %ld g %ld len %ld: du %lu dd %lu, want %lu %lu", (long)d, (long)g, (long)len,
+                     (unsigned long)got, (unsigned long)dd, (unsigned long)want, (unsigned long)(uint32_t)(uint64_t)ddv);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        if (num >= INT32_MIN && num <= INT32_MAX)
+            fits++;
+        else
+            wide++;
+        at_min += num == INT32_MIN;
+        at_max += num == INT32_MAX;
+        near_edge += (num < INT32_MIN && num >= (int64_t)INT32_MIN - 8) || (num > INT32_MAX && num <= (int64_t)INT32_MAX + 8);
+    }
+    snprintf(msg, sizeof msg, "numerator fits 32 bits %ld, wider %ld; at INT32_MIN %ld, INT32_MAX %ld; within 8 outside %ld",
+             fits, wide, at_min, at_max, near_edge);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(fits > 1000 && wide > 1000 && at_min > 0 && at_max > 0 && near_edge > 0, msg);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -1164,6 +1214,7 @@ int main(void)
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
     RUN_TEST(test_quad_steps_follow_their_parabola);
+    RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();
