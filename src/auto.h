@@ -63,13 +63,13 @@ static inline int32_t fxl__auto_log2_q8(uint32_t q32)
  * rasterizer: out of line, the 852 of the tunnel's 1,739 AUTO triangles
  * that end here paid the bound's 9-register prologue and stack frame
  * (inline, the tunnel's AUTO costs ~38k Cortex-M4 instructions a frame
- * less). fxl__auto_vertices has set auto_w and auto_cap. */
+ * less). The caller (raster.c) calls it for textured triangles only, with
+ * auto_seg and auto_quad 0; fxl__auto_vertices has set auto_w and
+ * auto_cap. */
 static inline void fxl__auto_setup(fxl__tri_t *tri, const int32_t Y[3])
 {
-    tri->auto_seg = 0;
-    tri->auto_quad = 0;
     tri->seg_log2 = 8;
-    if (!fxl__has_uv(tri) || (uint64_t)tri->q.gx * FXL__ONE == 0)
+    if ((uint64_t)tri->q.gx * FXL__ONE == 0)
         return;   /* constant depth along every span: affine is exact */
     /* Spans of at most 2 pixels have a correction point at every pixel
      * (the last segment ends on the span's last pixel) whatever the
