@@ -276,6 +276,51 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     return (int64_t)((uint64_t)prod << e);
 }
 
+/* fxl__persp_e's mantissa, av >> (PF - 1) as int32, and its range check:
+ * for the walk along a row of constant q (span_fast.h), which checks a
+ * span once instead of each correction point. */
+static inline int32_t fxl__persp_mant(int64_t av)
+{
+    return fxl__i32_of_bits((uint32_t)((uint64_t)av >> (FXL__PF - 1)));
+}
+
+static inline int fxl__persp_m_ok(int64_t av)
+{
+    const uint32_t top = (uint32_t)((uint64_t)av >> (FXL__PF + 30));
+    return top == 0u || (top == 0x3FFFu && fxl__persp_mant(av) != INT32_MIN);
+}
+
+/* The low 32 bits of fxl__persp_e's value (the u, v of a repeat axis are
+ * taken modulo 2^32) for an exponent e = -k, 1 <= k <= 62, from the product
+ * prod = m * r and half = 2^(k-1): floor((prod + 2^(k-1)) / 2^k), which is
+ * the rounding of both of fxl__persp_e's shifts (|prod| < 2^62: the sum
+ * does not overflow). _words is the form in 32-bit words that 32-bit cores
+ * use: bits k..k+31 of the sum. _hi is the one for k >= 33, where half's
+ * low word is zero: the high word of prod plus 2^(k-33), shifted by
+ * k - 32 (one add and one ASR). Both are tested on every host against the
+ * 64-bit form (test_fixed). */
+static inline uint32_t fxl__persp_lo32_words(int64_t prod, int k, uint64_t half)
+{
+    const uint64_t p = (uint64_t)prod + half;
+    const uint32_t lo = (uint32_t)p, hi = (uint32_t)(p >> 32);
+    if (k >= 32)
+        return (uint32_t)fxl__asr32(fxl__i32_of_bits(hi), k - 32);
+    return (lo >> k) | (hi << (32 - k));
+}
+
+static inline uint32_t fxl__persp_lo32_hi(int64_t prod, int k)
+{
+    const uint32_t hi = (uint32_t)((uint64_t)prod >> 32) + ((uint32_t)1 << (k - 33));
+    return (uint32_t)fxl__asr32(fxl__i32_of_bits(hi), k - 32);
+}
+
+static inline uint32_t fxl__persp_lo32(int64_t prod, int k, uint64_t half)
+{
+    if (FXL__WORD32)
+        return fxl__persp_lo32_words(prod, k, half);
+    return (uint32_t)(uint64_t)fxl__asr64((int64_t)((uint64_t)prod + half), k);
+}
+
 static inline int64_t fxl__persp(int64_t av, const fxl__recip_t *rc, int shift)
 {
     return fxl__persp_e(av, rc, fxl__persp_eb(shift));

@@ -655,6 +655,7 @@ typedef struct fxl__lean {
     int32_t g;         /* q_x / q there, fxl__quad_g (the quadratic walks' corrections) */
 } fxl__lean_t;
 
+
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
 #define FXL__FLATTEN __attribute__((flatten))
 #else
@@ -980,6 +981,91 @@ static inline uint32_t step_z_div(uint32_t z1, uint32_t z0, uint32_t div)
         return 0u;
     return z1 >= z0 ? sat_step_bits((z1 - z0) / div, 0) : sat_step_bits((z0 - z1) / div, 1);
 }
+
+#if FXL__FAST_SPANS
+/* The walk along rows of constant q (FXL_T_ROWC, span_fast.h). One
+ * segment of a batch: u, v (z) at its start and its steps, as the lean
+ * walk computes them. */
+typedef struct fxl__rseg {
+    uint32_t u, du, v, dv, z, dz;
+} fxl__rseg_t;
+
+/* One coordinate of the walk: its plane value and value at the latest
+ * correction point, its plane steps, and fxl__persp_lo32's shift k and
+ * 2^(k-1) for the span's 1/q (r). */
+typedef struct fxl__raxis {
+    uint64_t s, gN, g, half;
+    int32_t r;
+    int k;
+    uint32_t c;
+} fxl__raxis_t;
+
+/* One coordinate of a batch of segments of 2^segk pixels: nfull whole ones,
+ * then (last) the span's last one, ending div pixels on. Writes each one's
+ * start value and step to out[0], out[1] (a stride of one fxl__rseg_t) and
+ * leaves ax at the last end. One axis at a time, out of line and shared by
+ * every variant: its few live values stay in registers (both axes in one
+ * loop inside the walk spilled ~20 Cortex-M4 instructions a segment). */
+static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
+{
+    const uint32_t stride = (uint32_t)(sizeof(fxl__rseg_t) / sizeof(uint32_t));
+    const uint64_t gN = ax->gN;
+    const int32_t r = ax->r;
+    uint64_t s = ax->s;
+    uint32_t c0 = ax->c;
+    int32_t i;
+    if (FXL__WORD32 && ax->k >= 33) {
+        /* one ASR of prod's high word (fxl__persp_lo32_hi) */
+        for (i = 0; i < nfull; i++, out += stride) {
+            const uint32_t c1 = fxl__persp_lo32_hi(fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r), ax->k);
+            out[0] = c0;
+            out[1] = step_pow2_u32(c1 - c0, segk);
+            c0 = c1;
+        }
+    } else {
+        for (i = 0; i < nfull; i++, out += stride) {
+            const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r), ax->k, ax->half);
+            out[0] = c0;
+            out[1] = step_pow2_u32(c1 - c0, segk);
+            c0 = c1;
+        }
+    }
+    if (last) {
+        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s += ax->g * div)), r), ax->k,
+                                            ax->half);
+        out[0] = c0;
+        out[1] = step_div_u32(c1 - c0, div);
+        c0 = c1;
+    }
+    ax->s = s;
+    ax->c = c0;
+}
+
+#if FXL_HAVE_DEPTH
+/* z likewise (fast_z of the z plane; ax->c is z). */
+static FXL__NOINLINE void rowc_zaxis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
+{
+    const uint32_t stride = (uint32_t)(sizeof(fxl__rseg_t) / sizeof(uint32_t));
+    uint64_t s = ax->s;
+    uint32_t z0 = ax->c;
+    int32_t i;
+    for (i = 0; i < nfull; i++, out += stride) {
+        const uint32_t z1 = fast_z((int64_t)(s += ax->gN));
+        out[0] = z0;
+        out[1] = step_z_pow2(z1, z0, segk);
+        z0 = z1;
+    }
+    if (last) {
+        const uint32_t z1 = fast_z((int64_t)(s += ax->g * div));
+        out[0] = z0;
+        out[1] = step_z_div(z1, z0, div);
+        z0 = z1;
+    }
+    ax->s = s;
+    ax->c = z0;
+}
+#endif
+#endif
 
 #if FXL_HAVE_MIPMAP
 /* shift_step of an int32 step (no saturation needed), as bits. */

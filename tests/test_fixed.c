@@ -896,6 +896,43 @@ static void test_mul_halves_match_64bit_products(void)
     }
 }
 
+/* The low word of fxl__persp_e's value from m * r in 32-bit words, as the
+ * walk along rows of constant q computes it on 32-bit cores
+ * (fxl__persp_lo32_words for every shift k, fxl__persp_lo32_hi for k >= 33):
+ * equal to the 64-bit rounding fxl__persp_e uses, floor((floor(p /
+ * 2^(k-1)) + 1) / 2), at the extremes of m and r and on random products,
+ * for every k from 1 to 62. */
+static void test_persp_lo32_word_forms_match_64bit(void)
+{
+    static const int32_t ms[] = {0, 1, -1, 2, -2, 0x3FFF, -0x4000, INT32_MAX, -INT32_MAX, 0x12345678, -0x7654321};
+    static const int32_t rs[] = {0, 1, 2, 0x40000000, 0x55555555, 0x7FFFFFFE};
+    const int nm = (int)(sizeof ms / sizeof ms[0]), nr = (int)(sizeof rs / sizeof rs[0]);
+    int i, j, k;
+    long checked = 0;
+    lcg_seed(0x51EDu);
+    for (k = 1; k <= 62; k++) {
+        const uint64_t half = (uint64_t)1 << (k - 1);
+        for (i = 0; i < nm * nr + 4000; i++) {
+            const int32_t m = i < nm * nr ? ms[i % nm] : (int32_t)rand32() >> (lcg_next() >> 27);
+            const int32_t r = i < nm * nr ? rs[i / nm] : (int32_t)(rand32() & 0x7FFFFFFFu) % 0x7FFFFFFF;
+            const int64_t prod = (int64_t)m * r;
+            const uint32_t want = (uint32_t)(uint64_t)fxl__asr64(fxl__asr64(prod, k - 1) + 1, 1);
+            TEST_ASSERT_EQUAL_HEX32(want, fxl__persp_lo32_words(prod, k, half));
+            TEST_ASSERT_EQUAL_HEX32(want, fxl__persp_lo32(prod, k, half));
+            if (k >= 33)
+                TEST_ASSERT_EQUAL_HEX32(want, fxl__persp_lo32_hi(prod, k));
+            checked++;
+        }
+    }
+    /* products whose low word plus 2^31 carries: k = 32 needs the
+     * two-word sum (fxl__persp_lo32_hi is for k >= 33 only) */
+    for (j = 0; j < 1000; j++) {
+        const int64_t prod = (int64_t)((uint64_t)(rand32() & 0x3FFFFFFFu) << 32 | (0x80000000u | rand32()));
+        TEST_ASSERT_EQUAL_HEX32((uint32_t)((uint64_t)prod >> 32) + 1u, fxl__persp_lo32_words(prod, 32, (uint64_t)1 << 31));
+    }
+    TEST_ASSERT_EQUAL_INT(62L * (nm * nr + 4000), checked);
+}
+
 /* fxl__recip's first quotient without a divide instruction (persp.h,
  * FXL__DIV_TABLE, forced on here): exact for every divisor it can get. */
 static void test_div_ffffffff_table_is_exact(void)
@@ -987,6 +1024,7 @@ int main(void)
     RUN_TEST(test_udiv64_by32_matches_c_division);
     RUN_TEST(test_udiv64_recip_matches_c_division);
     RUN_TEST(test_mul_halves_match_64bit_products);
+    RUN_TEST(test_persp_lo32_word_forms_match_64bit);
     RUN_TEST(test_div_ffffffff_table_is_exact);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();

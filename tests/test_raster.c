@@ -1074,6 +1074,91 @@ void test_quad_last_segment_step_matches_64bit(void)
     TEST_ASSERT_TRUE_MESSAGE(fits > 1000 && wide > 1000 && at_min > 0 && at_max > 0 && near_edge > 0, msg);
 }
 
+/* The generic walk with the variant's own pixel loops (a probe that is not
+ * the picked seg function gets the generic walk). */
+static uint32_t probe_real_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    return fxl__pick_seg_fn(tri)(tri, s);
+}
+
+/* Rows of constant q with fixed segment lengths take their own walk
+ * (FXL_T_ROWC: the span's 1/q kept, each correction a multiply and a
+ * shift): every pixel and depth value equals the generic walk's, for
+ * every fast variant (point, bilinear; depth or not; native or swapped
+ * RGB565), lengths 2 to 32 (2 has no whole-segment runs), with and
+ * without an x-clip on both sides, and for textures and UV ranges whose
+ * shifts fall on both sides of 32 (one ASR, or two words). */
+void test_row_const_walk_matches_generic(void)
+{
+    enum { NT = 60 };
+    static uint16_t tex_big[256 * 256], tex_small[16 * 4];
+    static uint16_t fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
+    static const int16_t persp[4] = {2, 4, 16, 32};
+    static fxl_vertex_t tris[NT][3];
+    fxl_texture_t tex[2];
+    fxl_target_t t;
+    fxl_draw_t d;
+    char msg[160];
+    int i, k, m, cfg, compared = 0, rowc = 0;
+    for (i = 0; i < 256 * 256; i++)
+        tex_big[i] = (uint16_t)(i * 2654435761u >> 16);
+    for (i = 0; i < 16 * 4; i++)
+        tex_small[i] = (uint16_t)(i * 40503u);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[0], tex_big, 256, 256, FXL_TEXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[1], tex_small, 16, 4, FXL_TEXFMT_RGB565, 1));
+    lcg_state = 2024u;
+    for (k = 0; k < NT; k++) {
+        /* UV ranges from 0.01 to 10^4 texture periods; vertex 1 on vertex
+         * 0's row at its depth (q_x == 0) */
+        const double uvs = k % 3 == 0 ? 0.01 : k % 3 == 1 ? 10.0 : 10000.0;
+        for (i = 0; i < 3; i++)
+            tris[k][i] = vtx((rnd() % 20001) / 10000.0 * 3 * W - W, (rnd() % 20001) / 10000.0 * 3 * H - H,
+                             0.02 + (rnd() % 1000) / 1000.0, ((int)(rnd() % 2001) - 1000) / 1000.0 * uvs,
+                             ((int)(rnd() % 2001) - 1000) / 1000.0 * uvs);
+        tris[k][1].y = tris[k][0].y;
+        tris[k][1].inv_w = tris[k][0].inv_w;
+    }
+    for (cfg = 0; cfg < 8 * 4 * 2; cfg++) {
+        const int bil = cfg & 1, depth = (cfg >> 1) & 1, swap = (cfg >> 2) & 1;
+        const int pm = (cfg >> 3) & 3, clip = cfg >> 5;
+        const fxl_rect_t cr = {7, 0, W - 5, H};
+        fxl_draw_defaults(&d);
+        d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.persp = persp[pm];
+        for (k = 0; k < NT; k++) {
+            int pass;
+            d.texture = &tex[k & 1];
+            for (pass = 0; pass < 2; pass++) {
+                uint16_t *px = pass ? gen : fast, *zb = pass ? zgen : zfast;
+                fxl_target_init(&t, px, W, H, W, swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565);
+                fxl_target_clear(&t, 0xDEAD);
+                if (depth) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+                }
+                if (clip)
+                    fxl_target_set_clip(&t, &cr);
+                probe_last_tri = NULL;
+                probe_row_const_tris = 0;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, pass ? fxl__draw_triangle_with(&t, &d, tris[k], NULL, probe_real_seg)
+                                                   : fxl_draw_triangle(&t, &d, tris[k], NULL));
+            }
+            for (i = 0; i < W * H; i++)
+                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+                    snprintf(msg, sizeof msg,
+                             "bilinear %d depth %d swap %d persp %d clip %d triangle %d pixel (%d,%d): "
+                             "fast %04x/%04x generic %04x/%04x",
+                             bil, depth, swap, persp[pm], clip, k, i % W, i / W, fast[i], zfast[i], gen[i], zgen[i]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            compared++;
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT, compared);
+    (void)m;
+    (void)rowc;
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -1216,6 +1301,7 @@ int main(void)
     RUN_TEST(test_quad_steps_follow_their_parabola);
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
+    RUN_TEST(test_row_const_walk_matches_generic);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();
 }
