@@ -228,17 +228,28 @@ static inline int fxl__persp_eb(int shift)
     return FXL__PF - 95 + shift;
 }
 
+/* fxl__persp_e's mantissa, av >> (PF - 1) as int32, and its range check
+ * (bits 50..63 of av all equal, 0 or 0x3FFF, and not INT32_MIN: setup's
+ * scaling makes that the rule). The walk along rows of constant q
+ * (span_fast.h) checks a span once with it instead of each point. */
+static inline int32_t fxl__persp_mant(int64_t av)
+{
+    return fxl__i32_of_bits((uint32_t)((uint64_t)av >> (FXL__PF - 1)));
+}
+
+static inline int fxl__persp_m_ok(int64_t av)
+{
+    const uint32_t top = (uint32_t)((uint64_t)av >> (FXL__PF + 30));
+    return top == 0u || (top == 0x3FFFu && fxl__persp_mant(av) != INT32_MIN);
+}
+
 static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *rc, int eb)
 {
-    const uint64_t ua = (uint64_t)av;
-    /* bits 50..63 of av: all equal (0 or 0x3FFF) when av >> (PF - 1) fits
-     * int32, which setup's scaling makes the rule */
-    const uint32_t top = (uint32_t)(ua >> (FXL__PF + 30));
     const int e = rc->n + eb;
-    int32_t m = fxl__i32_of_bits((uint32_t)(ua >> (FXL__PF - 1)));
+    int32_t m = fxl__persp_mant(av);
     int64_t prod;
 
-    if (!(top == 0u || (top == 0x3FFFu && m != INT32_MIN))) {
+    if (!fxl__persp_m_ok(av)) {
         /* Setup scales each attribute below 2^30 plane units, i.e. |m| <
          * 2^31; evaluation error can overshoot by a unit, so saturate. */
         m = fxl__asr64(av, FXL__PF - 1) > 0 ? INT32_MAX : -INT32_MAX;
@@ -274,20 +285,6 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     if (prod < -(INT64_MAX >> e))
         return INT64_MIN;
     return (int64_t)((uint64_t)prod << e);
-}
-
-/* fxl__persp_e's mantissa, av >> (PF - 1) as int32, and its range check:
- * for the walk along a row of constant q (span_fast.h), which checks a
- * span once instead of each correction point. */
-static inline int32_t fxl__persp_mant(int64_t av)
-{
-    return fxl__i32_of_bits((uint32_t)((uint64_t)av >> (FXL__PF - 1)));
-}
-
-static inline int fxl__persp_m_ok(int64_t av)
-{
-    const uint32_t top = (uint32_t)((uint64_t)av >> (FXL__PF + 30));
-    return top == 0u || (top == 0x3FFFu && fxl__persp_mant(av) != INT32_MIN);
 }
 
 /* The low 32 bits of fxl__persp_e's value (the u, v of a repeat axis are
