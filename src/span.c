@@ -1005,8 +1005,10 @@ typedef struct fxl__raxis {
  * start value and step to out[0], out[1] (a stride of one fxl__rseg_t) and
  * leaves ax at the last end. One axis at a time, out of line and shared by
  * every variant: its few live values stay in registers (both axes in one
- * loop inside the walk spilled ~20 Cortex-M4 instructions a segment). */
-static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
+ * loop inside the walk spilled ~20 Cortex-M4 instructions a segment).
+ * rowc_run is its whole segments, with hi a constant (one copy each);
+ * it returns out past them. */
+static FXL__UNSWITCH uint32_t *rowc_run(fxl__raxis_t *ax, int segk, int32_t nfull, uint32_t *out, const int hi)
 {
     const uint32_t stride = (uint32_t)(sizeof(fxl__rseg_t) / sizeof(uint32_t));
     const uint64_t gN = ax->gN;
@@ -1014,31 +1016,30 @@ static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, i
     uint64_t s = ax->s;
     uint32_t c0 = ax->c;
     int32_t i;
-    if (FXL__WORD32 && ax->k >= 33) {
-        /* one ASR of prod's high word (fxl__persp_lo32_hi) */
-        for (i = 0; i < nfull; i++, out += stride) {
-            const uint32_t c1 = fxl__persp_lo32_hi(fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r), ax->k);
-            out[0] = c0;
-            out[1] = step_pow2_u32(c1 - c0, segk);
-            c0 = c1;
-        }
-    } else {
-        for (i = 0; i < nfull; i++, out += stride) {
-            const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r), ax->k, ax->half);
-            out[0] = c0;
-            out[1] = step_pow2_u32(c1 - c0, segk);
-            c0 = c1;
-        }
-    }
-    if (last) {
-        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s += ax->g * div)), r), ax->k,
-                                            ax->half);
+    for (i = 0; i < nfull; i++, out += stride) {
+        const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r);
+        const uint32_t c1 = hi ? fxl__persp_lo32_hi(prod, ax->k) : fxl__persp_lo32(prod, ax->k, ax->half);
         out[0] = c0;
-        out[1] = step_div_u32(c1 - c0, div);
+        out[1] = step_pow2_u32(c1 - c0, segk);
         c0 = c1;
     }
     ax->s = s;
     ax->c = c0;
+    return out;
+}
+
+static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
+{
+    /* shifts of 33 and more: one ASR of prod's high word (fxl__persp_lo32_hi) */
+    out = FXL__WORD32 && ax->k >= 33 ? rowc_run(ax, segk, nfull, out, 1) : rowc_run(ax, segk, nfull, out, 0);
+    if (last) {
+        const uint32_t c0 = ax->c;
+        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(ax->s += ax->g * div)), ax->r),
+                                            ax->k, ax->half);
+        out[0] = c0;
+        out[1] = step_div_u32(c1 - c0, div);
+        ax->c = c1;
+    }
 }
 
 #if FXL_HAVE_DEPTH

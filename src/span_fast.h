@@ -477,10 +477,10 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, in
  * at its first and last correction points (the planes are linear along
  * the row and exact inside the triangle, so every point between passes
  * when both ends do), and so is the choice of its shift; a span that fails
- * goes to the lean walk (returns 0, having drawn nothing). In batches like FXL_T_WALK: the segments' starts
- * and steps first, one coordinate at a time (rowc_axis), then the pixel
- * loops, where the whole unclipped segments of 4 pixels or more run back
- * to back with one pointer. */
+ * goes to the lean walk (returns 0, having drawn nothing). In batches like
+ * FXL_T_WALK: the segments' starts and steps first, one coordinate at a
+ * time (rowc_axis), then the pixel loops, where the whole unclipped
+ * segments of 4 pixels or more run back to back with one pointer. */
 static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr,
                                                       int32_t cl, int32_t cr)
 {
