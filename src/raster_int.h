@@ -259,7 +259,8 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
 
 /* The specialised span walks (one per variant, the pixel loop inlined) are
  * what makes the fast path fast, and most of the code at -O2 (with their
- * pixel loops ~156 KB of Cortex-M4 Thumb code for all sixteen).
+ * pixel loops ~180 KB of Cortex-M4 Thumb code for all sixteen; config.h's
+ * FXL_FAST_* leave variants out).
  * Size-optimised builds (-Os) keep only the pixel loops, reached through
  * the generic walk and the seg functions, as small as before; the output is
  * the same bit for bit either way. Override with -DFXL__FAST_SPANS=0/1. */

@@ -16,6 +16,29 @@
 #include "div64.h"
 #include "auto.h"
 
+/* The variants (config.h, FXL_FAST_*): FXL__V(bilinear, depth, swap) is 1
+ * where that one-level variant is built. A two-level (mip-linear) variant
+ * also needs FXL__V_MIP and reuses the one-level pixel loop of its filter,
+ * depth and format. */
+#define FXL__V_NAT FXL_FAST_NATIVE
+#define FXL__V_SWP FXL_FAST_SWAPPED
+#define FXL__V_NOZ FXL_FAST_NO_DEPTH
+#define FXL__V_Z (FXL_FAST_DEPTH && FXL_HAVE_DEPTH)
+#define FXL__V_PT FXL_FAST_POINT
+#define FXL__V_BL (FXL_FAST_BILINEAR && FXL_HAVE_BILINEAR)
+#define FXL__V_MIP (FXL_FAST_MIP && FXL_HAVE_MIPMAP && FXL__FAST_SPANS)
+#define FXL__V(bil, z, sw)                                                                                  \
+    (((bil) ? FXL__V_BL : FXL__V_PT) && ((z) ? FXL__V_Z : FXL__V_NOZ) && ((sw) ? FXL__V_SWP : FXL__V_NAT))
+/* What the shared helpers are built for: a one-level variant of the
+ * filter (FXL__V_ANY_PT, _BL); any specialised walk (FXL__V_ANY), one
+ * without depth (_NOZ) and one with (_Z). */
+#define FXL__V_ANY1 ((FXL__V_PT || FXL__V_BL) && (FXL__V_NAT || FXL__V_SWP))
+#define FXL__V_ANY_PT (FXL__V_PT && (FXL__V_NAT || FXL__V_SWP) && (FXL__V_NOZ || FXL__V_Z))
+#define FXL__V_ANY_BL (FXL__V_BL && (FXL__V_NAT || FXL__V_SWP) && (FXL__V_NOZ || FXL__V_Z))
+#define FXL__V_ANY (FXL__FAST_SPANS && FXL__V_ANY1 && (FXL__V_NOZ || FXL__V_Z))
+#define FXL__V_ANY_NOZ (FXL__FAST_SPANS && FXL__V_ANY1 && FXL__V_NOZ)
+#define FXL__V_ANY_Z (FXL__FAST_SPANS && FXL__V_ANY1 && FXL__V_Z)
+
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
  * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
  * 11..15, b in 0..4) leaving >= 5 zero bits above each channel, so one
@@ -32,13 +55,17 @@ static inline uint32_t compact565(uint32_t x)
     return (x | (x >> 16)) & 0xFFFFu;
 }
 
+#if FXL_HAVE_GENERIC
 /* a + (b - a) * f / 32 per channel, rounded to nearest (0x02008010 adds
- * 16 to every lane), f in 0..31. */
+ * 16 to every lane), f in 0..31 (the generic loop and the mip-linear
+ * variants, which need FXL_HAVE_MIPMAP and so FXL_HAVE_GENERIC). */
 static inline uint32_t lerp565x(uint32_t a, uint32_t b, uint32_t f)
 {
     return ((a * (32u - f) + b * f + 0x02008010u) >> 5) & 0x07E0F81Fu;
 }
+#endif
 
+#if FXL_HAVE_GENERIC && FXL_HAVE_BILINEAR
 static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, uint32_t fu,
                                uint32_t fv)
 {
@@ -46,8 +73,9 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
     uint32_t bot = lerp565x(expand565(c01), expand565(c11), fu);
     return compact565(lerp565x(top, bot, fv));
 }
+#endif
 
-#if FXL_HAVE_BILINEAR
+#if FXL__V_ANY_BL
 /* ---- bilinear footprint of the fast loops -----------------------------------
  * bl_sample returns the filtered colour in expanded form, equal bit for bit
  * to fxl__bilerp565 before its compact565:
@@ -552,6 +580,7 @@ typedef struct fl {
     uint32_t mu16, mv16;
 } fl_t;
 
+#if FXL__V_ANY_PT
 static inline void fl_init(fl_t *f, const fxl__level_t *lv)
 {
     f->tex = (const uint16_t *)lv->texels;
@@ -560,6 +589,7 @@ static inline void fl_init(fl_t *f, const fxl__level_t *lv)
     f->mu16 = lv->mask_u << 16;
     f->mv16 = (lv->mask_v << f->lw) << 16;
 }
+#endif
 
 typedef struct fxl__pt {
     uint32_t u, v;               /* level-0 texel q16, modular */
@@ -596,6 +626,7 @@ typedef struct fxl__walk {
 #define FXL__BATCH 16
 #endif
 
+#if FXL__V_ANY
 /* u, v at a correction point from the q, u, v plane values: correct() for
  * the fast case, inline (it is most of a segment's cost). The walk counts
  * the divisions and computes z (fast_z) only where it has a depth buffer.
@@ -645,7 +676,6 @@ static inline uint32_t fast_z(int64_t sz)
     return sz < 0 ? 0u : sat_u32((int64_t)((uint64_t)sz >> FXL__PF));
 }
 
-#if FXL__FAST_SPANS
 /* The lean walks' position: plane values (modular int64) at the latest
  * correction point, and u, v, z there. */
 typedef struct fxl__lean {
@@ -721,6 +751,7 @@ static FXL__UNSWITCH void lean_next(const fxl__tri_t *tri, fxl__lean_t *s, uint3
         s->z = fast_z((int64_t)s->sz);
 }
 
+#if FXL__V_ANY_NOZ
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 0, 0, 0);
@@ -735,8 +766,9 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_rowc(const fxl__tri_t *tri, 
 {
     lean_next(tri, s, mult, 0, 0, 1);
 }
+#endif
 
-#if FXL_HAVE_DEPTH
+#if FXL__V_ANY_Z
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 1, 0, 0);
@@ -750,12 +782,14 @@ static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_rowc(const fxl__tri_t *tri,
 
 #if FXL_HAVE_QUAD
 /* The quadratic walks' copies: they also give q_x / q (s->g). */
+#if FXL__V_ANY_NOZ
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uv_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 0, 1, 0);
 }
+#endif
 
-#if FXL_HAVE_DEPTH
+#if FXL__V_ANY_Z
 static FXL__NOINLINE FXL__FLATTEN void lean_next_uvz_g(const fxl__tri_t *tri, fxl__lean_t *s, uint32_t mult)
 {
     lean_next(tri, s, mult, 1, 1, 0);
@@ -879,6 +913,7 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
  * once a chunk and hands over (with both loops in one function the
  * other's spilled ~2.6 instructions a pixel). AUTO draws those triangles
  * affine. */
+#if FXL__V_ANY_NOZ
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                            const int32_t xl, const int32_t xr, const int32_t cr,
                                                            uint32_t *puv, int *more, uint32_t *ndiv)
@@ -910,8 +945,9 @@ static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autose
         return lean_run_uv_auto(tri, t_row, s, x0, xl, xr, cr, puv, more, ndiv);
     return lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
 }
+#endif
 
-#if FXL_HAVE_DEPTH
+#if FXL__V_ANY_Z
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                             const int32_t xl, const int32_t xr, const int32_t cr,
                                                             uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
@@ -945,8 +981,9 @@ static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autos
     return lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
 }
 #endif
-#endif /* FXL__FAST_SPANS */
+#endif /* FXL__V_ANY */
 
+#if FXL__V_ANY
 /* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the
  * result is the int32 bit pattern. A negative d has magnitude 0 - d <= 2^31. */
 static inline uint32_t step_pow2_u32(uint32_t d, int k)
@@ -962,6 +999,9 @@ static inline uint32_t step_div_u32(uint32_t d, uint32_t div)
     return (d & 0x80000000u) ? 0u - (0u - d) / div : d / div;
 }
 
+#endif
+
+#if FXL__V_ANY_Z
 /* sat_i32 of the signed step of z1 - z0 (|z1 - z0| < 2^32), as bits. */
 static inline uint32_t sat_step_bits(uint32_t mag, int neg)
 {
@@ -981,8 +1021,9 @@ static inline uint32_t step_z_div(uint32_t z1, uint32_t z0, uint32_t div)
         return 0u;
     return z1 >= z0 ? sat_step_bits((z1 - z0) / div, 0) : sat_step_bits((z0 - z1) / div, 1);
 }
+#endif
 
-#if FXL__FAST_SPANS
+#if FXL__V_ANY
 /* The walk along rows of constant q (FXL_T_ROWC, span_fast.h). One
  * segment of a batch: u, v (z) at its start and its steps, as the lean
  * walk computes them. */
@@ -1042,7 +1083,7 @@ static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, i
     }
 }
 
-#if FXL_HAVE_DEPTH
+#if FXL__V_ANY_Z
 /* z likewise (fast_z of the z plane; ax->c is z). */
 static FXL__NOINLINE void rowc_zaxis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
 {
@@ -1068,7 +1109,7 @@ static FXL__NOINLINE void rowc_zaxis(fxl__raxis_t *ax, int segk, int32_t nfull, 
 #endif
 #endif
 
-#if FXL_HAVE_MIPMAP
+#if FXL_HAVE_MIPMAP && FXL__V_ANY
 /* shift_step of an int32 step (no saturation needed), as bits. */
 static inline uint32_t shift_step_u32(uint32_t d, int level)
 {
@@ -1084,6 +1125,8 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 /* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
 typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 
+/* the variants, as FXL__V (top of the file) selects them */
+#if FXL__V(0, 0, 0)
 #define FXL_T_LOOP loop_point
 #define FXL_T_SPAN span_point
 #define FXL_T_SEG seg_point
@@ -1092,6 +1135,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(0, 0, 1)
 #define FXL_T_LOOP loop_point_swap
 #define FXL_T_SPAN span_point_swap
 #define FXL_T_SEG seg_point_swap
@@ -1100,7 +1145,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 1
 #include "span_fast.h"
-#if FXL_HAVE_DEPTH
+#endif
+#if FXL__V(0, 1, 0)
 #define FXL_T_LOOP loop_point_z
 #define FXL_T_SPAN span_point_z
 #define FXL_T_SEG seg_point_z
@@ -1109,6 +1155,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 1
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(0, 1, 1)
 #define FXL_T_LOOP loop_point_z_swap
 #define FXL_T_SPAN span_point_z_swap
 #define FXL_T_SEG seg_point_z_swap
@@ -1118,7 +1166,7 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#if FXL_HAVE_BILINEAR
+#if FXL__V(1, 0, 0)
 #define FXL_T_LOOP loop_bilin
 #define FXL_T_SPAN span_bilin
 #define FXL_T_SEG seg_bilin
@@ -1127,6 +1175,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(1, 0, 1)
 #define FXL_T_LOOP loop_bilin_swap
 #define FXL_T_SPAN span_bilin_swap
 #define FXL_T_SEG seg_bilin_swap
@@ -1135,7 +1185,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 1
 #include "span_fast.h"
-#if FXL_HAVE_DEPTH
+#endif
+#if FXL__V(1, 1, 0)
 #define FXL_T_LOOP loop_bilin_z
 #define FXL_T_SPAN span_bilin_z
 #define FXL_T_SEG seg_bilin_z
@@ -1144,6 +1195,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 1
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(1, 1, 1)
 #define FXL_T_LOOP loop_bilin_z_swap
 #define FXL_T_SPAN span_bilin_z_swap
 #define FXL_T_SEG seg_bilin_z_swap
@@ -1153,10 +1206,7 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#endif
-
-#if FXL_HAVE_MIPMAP && FXL__FAST_SPANS
-/* Two levels blended (point-mip-linear and trilinear). */
+#if FXL__V(0, 0, 0) && FXL__V_MIP
 #define FXL_T_LOOP loop_pml
 #define FXL_T_LOOP1 loop_point
 #define FXL_T_SPAN span_pml
@@ -1165,6 +1215,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(0, 0, 1) && FXL__V_MIP
 #define FXL_T_LOOP loop_pml_swap
 #define FXL_T_LOOP1 loop_point_swap
 #define FXL_T_SPAN span_pml_swap
@@ -1173,7 +1225,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 1
 #include "span_fast.h"
-#if FXL_HAVE_DEPTH
+#endif
+#if FXL__V(0, 1, 0) && FXL__V_MIP
 #define FXL_T_LOOP loop_pml_z
 #define FXL_T_LOOP1 loop_point_z
 #define FXL_T_SPAN span_pml_z
@@ -1182,6 +1235,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 1
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(0, 1, 1) && FXL__V_MIP
 #define FXL_T_LOOP loop_pml_z_swap
 #define FXL_T_LOOP1 loop_point_z_swap
 #define FXL_T_SPAN span_pml_z_swap
@@ -1191,7 +1246,7 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#if FXL_HAVE_BILINEAR
+#if FXL__V(1, 0, 0) && FXL__V_MIP
 #define FXL_T_LOOP loop_tri
 #define FXL_T_LOOP1 loop_bilin
 #define FXL_T_SPAN span_tri
@@ -1200,6 +1255,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(1, 0, 1) && FXL__V_MIP
 #define FXL_T_LOOP loop_tri_swap
 #define FXL_T_LOOP1 loop_bilin_swap
 #define FXL_T_SPAN span_tri_swap
@@ -1208,7 +1265,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 0
 #define FXL_T_SWAP 1
 #include "span_fast.h"
-#if FXL_HAVE_DEPTH
+#endif
+#if FXL__V(1, 1, 0) && FXL__V_MIP
 #define FXL_T_LOOP loop_tri_z
 #define FXL_T_LOOP1 loop_bilin_z
 #define FXL_T_SPAN span_tri_z
@@ -1217,6 +1275,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 1
 #define FXL_T_SWAP 0
 #include "span_fast.h"
+#endif
+#if FXL__V(1, 1, 1) && FXL__V_MIP
 #define FXL_T_LOOP loop_tri_z_swap
 #define FXL_T_LOOP1 loop_bilin_z_swap
 #define FXL_T_SPAN span_tri_z_swap
@@ -1225,8 +1285,6 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_DEPTH 1
 #define FXL_T_SWAP 1
 #include "span_fast.h"
-#endif
-#endif
 #endif
 
 /* Variant table, id = 1 + bilinear + 2 depth + 4 swap + 8 mip-linear; the
@@ -1239,17 +1297,38 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #else
 #define SEG_GENERIC 0
 #endif
-#if FXL_HAVE_DEPTH
-#define IF_DEPTH(x) x
+/* IF_<dimension>(x): x where that dimension's variants are built, else 0 */
+#if FXL__V_PT
+#define IF_PT(x) x
 #else
-#define IF_DEPTH(x) 0
+#define IF_PT(x) 0
 #endif
-#if FXL_HAVE_BILINEAR
-#define IF_BILIN(x) x
+#if FXL__V_BL
+#define IF_BL(x) x
 #else
-#define IF_BILIN(x) 0
+#define IF_BL(x) 0
 #endif
-#if FXL_HAVE_MIPMAP && FXL__FAST_SPANS
+#if FXL__V_NOZ
+#define IF_NOZ(x) x
+#else
+#define IF_NOZ(x) 0
+#endif
+#if FXL__V_Z
+#define IF_Z(x) x
+#else
+#define IF_Z(x) 0
+#endif
+#if FXL__V_NAT
+#define IF_NAT(x) x
+#else
+#define IF_NAT(x) 0
+#endif
+#if FXL__V_SWP
+#define IF_SWP(x) x
+#else
+#define IF_SWP(x) 0
+#endif
+#if FXL__V_MIP
 #define IF_MIP(x) x
 #else
 #define IF_MIP(x) 0
@@ -1267,22 +1346,38 @@ static const struct {
 #endif
 } fast_tab[17] = {
     FAST_ENTRY(0, 0),
-    FAST_ENTRY(seg_point, span_point_pick),
-    FAST_ENTRY(IF_BILIN(seg_bilin), IF_BILIN(span_bilin_pick)),
-    FAST_ENTRY(IF_DEPTH(seg_point_z), IF_DEPTH(span_point_z_pick)),
-    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z)), IF_BILIN(IF_DEPTH(span_bilin_z_pick))),
-    FAST_ENTRY(seg_point_swap, span_point_swap_pick),
-    FAST_ENTRY(IF_BILIN(seg_bilin_swap), IF_BILIN(span_bilin_swap_pick)),
-    FAST_ENTRY(IF_DEPTH(seg_point_z_swap), IF_DEPTH(span_point_z_swap_pick)),
-    FAST_ENTRY(IF_BILIN(IF_DEPTH(seg_bilin_z_swap)), IF_BILIN(IF_DEPTH(span_bilin_z_swap_pick))),
-    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_pick)),
-    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_pick))),
-    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_pick))),
-    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_pick)))),
-    FAST_ENTRY(IF_MIP(SEG_GENERIC), IF_MIP(span_pml_swap_pick)),
-    FAST_ENTRY(IF_MIP(IF_BILIN(SEG_GENERIC)), IF_MIP(IF_BILIN(span_tri_swap_pick))),
-    FAST_ENTRY(IF_MIP(IF_DEPTH(SEG_GENERIC)), IF_MIP(IF_DEPTH(span_pml_z_swap_pick))),
-    FAST_ENTRY(IF_MIP(IF_BILIN(IF_DEPTH(SEG_GENERIC))), IF_MIP(IF_BILIN(IF_DEPTH(span_tri_z_swap_pick)))),
+    FAST_ENTRY(IF_PT(IF_NOZ(IF_NAT(seg_point))),
+               IF_PT(IF_NOZ(IF_NAT(span_point_pick)))),
+    FAST_ENTRY(IF_BL(IF_NOZ(IF_NAT(seg_bilin))),
+               IF_BL(IF_NOZ(IF_NAT(span_bilin_pick)))),
+    FAST_ENTRY(IF_PT(IF_Z(IF_NAT(seg_point_z))),
+               IF_PT(IF_Z(IF_NAT(span_point_z_pick)))),
+    FAST_ENTRY(IF_BL(IF_Z(IF_NAT(seg_bilin_z))),
+               IF_BL(IF_Z(IF_NAT(span_bilin_z_pick)))),
+    FAST_ENTRY(IF_PT(IF_NOZ(IF_SWP(seg_point_swap))),
+               IF_PT(IF_NOZ(IF_SWP(span_point_swap_pick)))),
+    FAST_ENTRY(IF_BL(IF_NOZ(IF_SWP(seg_bilin_swap))),
+               IF_BL(IF_NOZ(IF_SWP(span_bilin_swap_pick)))),
+    FAST_ENTRY(IF_PT(IF_Z(IF_SWP(seg_point_z_swap))),
+               IF_PT(IF_Z(IF_SWP(span_point_z_swap_pick)))),
+    FAST_ENTRY(IF_BL(IF_Z(IF_SWP(seg_bilin_z_swap))),
+               IF_BL(IF_Z(IF_SWP(span_bilin_z_swap_pick)))),
+    FAST_ENTRY(IF_PT(IF_NOZ(IF_NAT(IF_MIP(SEG_GENERIC)))),
+               IF_PT(IF_NOZ(IF_NAT(IF_MIP(span_pml_pick))))),
+    FAST_ENTRY(IF_BL(IF_NOZ(IF_NAT(IF_MIP(SEG_GENERIC)))),
+               IF_BL(IF_NOZ(IF_NAT(IF_MIP(span_tri_pick))))),
+    FAST_ENTRY(IF_PT(IF_Z(IF_NAT(IF_MIP(SEG_GENERIC)))),
+               IF_PT(IF_Z(IF_NAT(IF_MIP(span_pml_z_pick))))),
+    FAST_ENTRY(IF_BL(IF_Z(IF_NAT(IF_MIP(SEG_GENERIC)))),
+               IF_BL(IF_Z(IF_NAT(IF_MIP(span_tri_z_pick))))),
+    FAST_ENTRY(IF_PT(IF_NOZ(IF_SWP(IF_MIP(SEG_GENERIC)))),
+               IF_PT(IF_NOZ(IF_SWP(IF_MIP(span_pml_swap_pick))))),
+    FAST_ENTRY(IF_BL(IF_NOZ(IF_SWP(IF_MIP(SEG_GENERIC)))),
+               IF_BL(IF_NOZ(IF_SWP(IF_MIP(span_tri_swap_pick))))),
+    FAST_ENTRY(IF_PT(IF_Z(IF_SWP(IF_MIP(SEG_GENERIC)))),
+               IF_PT(IF_Z(IF_SWP(IF_MIP(span_pml_z_swap_pick))))),
+    FAST_ENTRY(IF_BL(IF_Z(IF_SWP(IF_MIP(SEG_GENERIC)))),
+               IF_BL(IF_Z(IF_SWP(IF_MIP(span_tri_z_swap_pick))))),
 };
 
 static int fast_id_of(const fxl__tri_t *tri)

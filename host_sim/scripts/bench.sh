@@ -160,17 +160,26 @@ if have arm-none-eabi-gcc; then
 #define FXL_HAVE_DEPTH 0
 #define FXL_HAVE_AUTO 0
 EOF
+    cat >"$sizew/panel_config.h" <<'EOF'
+/* Every feature, with specialised code only for what a product driving one
+ * SPI panel with a depth buffer draws fast: byte-swapped RGB565 targets,
+ * depth on. Other draws take the generic walk (same pixels, slower). */
+#define FXL_FAST_NATIVE 0
+#define FXL_FAST_NO_DEPTH 0
+EOF
     {
         echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size of libfixel.a"
         echo "# (every src/*.c module, the 3D front end included); linked: the core code + const data"
         echo "# that one textured fxl_draw_triangle program keeps after --gc-sections (bench/size_main.c),"
         echo "# including runtime: the compiler's helpers (libgcc shifts, multiplies, divisions) it pulls in."
         echo "# min = point + bilinear, subdivided, RGB565: FXL_HAVE_MIPMAP/GENERIC/DEPTH/AUTO 0."
+        echo "# panel = every feature, specialised code only for byte-swapped targets with depth"
+        echo "# (FXL_FAST_NATIVE 0, FXL_FAST_NO_DEPTH 0): what one SPI-panel product keeps."
         echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
         printf '%-14s %-4s %-5s %9s %6s %6s %9s %8s\n' cpu opt cfg archive data bss linked runtime
         for cpu in cortex-m0plus cortex-m4; do
             for opt in -Os -O2; do
-                for cfg in full min; do
+                for cfg in full min panel; do
                     d="$root/$sizew/${cpu#cortex-}$opt-$cfg"
                     # From scratch: bench/Makefile's objects do not depend on
                     # the config header, so a changed configuration would
@@ -178,7 +187,7 @@ EOF
                     rm -rf "$d"
                     mkdir -p "$d"
                     extra=()
-                    [ "$cfg" = min ] && extra=(CONFIG="$root/$sizew/min_config.h")
+                    [ "$cfg" = full ] || extra=(CONFIG="$root/$sizew/${cfg}_config.h")
                     if ! make -s -j 2 -C bench "$d/libfixel.a" CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" \
                         >"$d.build.log" 2>&1; then
                         say "footprint: the core does not build for $cpu $opt $cfg (see $d.build.log)"

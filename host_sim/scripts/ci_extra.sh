@@ -4,9 +4,11 @@
 #      (two processes, half the cases each; fixed seed, so a finding
 #      reproduces with the printed bytes);
 #   2. the libFuzzer target for 20 s when clang is installed;
-#   3. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, Cortex-M4 on
-#      qemu where the tools exist);
-#   4. bench/experiments/*.c compile warning-free (host, and Cortex-M4 where
+#   3. host_sim/scripts/config_matrix.sh: the core compiles warning-free in
+#      every documented configuration (FXL_HAVE_*, FXL_FAST_*);
+#   4. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, a build with
+#      specialised code left out, Cortex-M4 on qemu where the tools exist);
+#   5. bench/experiments/*.c compile warning-free (host, and Cortex-M4 where
 #      the cross compiler exists), so the measurements they record stay
 #      reproducible.
 # Environment: FXL_BUILD_DIR (host build, default build), FXL_ASAN_DIR
@@ -56,6 +58,9 @@ if command -v clang >/dev/null 2>&1; then
 else
     echo "== libFuzzer: clang not found (apt-get install clang); skipped"
 fi
+
+echo "== configurations"
+FXL_BUILD_DIR="$bdir" bash host_sim/scripts/config_matrix.sh || status=1
 
 echo "== determinism"
 FXL_BUILD_DIR="$bdir" bash host_sim/scripts/determinism.sh || status=1

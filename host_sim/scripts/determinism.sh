@@ -3,7 +3,8 @@
 #
 # Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
 # variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, gcc -O2 with
-# the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), clang -O2 (when
+# the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
+# with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
 # -M mps2-an386 with semihosting (when both exist), and compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data
@@ -54,6 +55,9 @@ run_host gcc-Os gcc -Os
 # products from 16-bit halves, the table-started reciprocal, set-up's
 # division by a reciprocal; no qemu run checks M0+ images, this does
 run_host gcc-O2-m0arith gcc -O2 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1
+# Specialised code left out (config.h, FXL_FAST_*): point and two-level draws
+# take the generic walk at -O2, bilinear ones keep theirs; the same pixels.
+run_host gcc-O2-subset gcc -O2 -DFXL_FAST_POINT=0 -DFXL_FAST_SWAPPED=0 -DFXL_FAST_MIP=0
 if command -v clang >/dev/null 2>&1; then
     run_host clang-O2 clang -O2
 else

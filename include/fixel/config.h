@@ -62,6 +62,37 @@
 #define FXL_HAVE_GENERIC 1
 #endif
 
+/* Specialised code per kind of draw (RGB565 repeat-wrapped textures, REPLACE;
+ * the rest always takes the generic walk). Each combination of target format,
+ * depth and filter has its own pixel loop, and in speed-optimised builds its
+ * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 188 KB for all
+ * (docs/bench/footprint.txt); at -Os a pixel loop of ~0.2 KB. A product that
+ * drives one panel format, or always draws with depth, leaves the rest out.
+ * A left-out combination is drawn by the generic walk to the same pixels, bit
+ * for bit, only slower; without FXL_HAVE_GENERIC it is FXL_ERR_UNSUPPORTED. */
+#ifndef FXL_FAST_NATIVE      /* FXL_PIXFMT_RGB565 targets */
+#define FXL_FAST_NATIVE 1
+#endif
+#ifndef FXL_FAST_SWAPPED     /* FXL_PIXFMT_RGB565_SWAP targets */
+#define FXL_FAST_SWAPPED 1
+#endif
+#ifndef FXL_FAST_NO_DEPTH    /* draws without a depth buffer */
+#define FXL_FAST_NO_DEPTH 1
+#endif
+#ifndef FXL_FAST_DEPTH       /* draws with depth test and write */
+#define FXL_FAST_DEPTH FXL_HAVE_DEPTH
+#endif
+#ifndef FXL_FAST_POINT       /* point sampling */
+#define FXL_FAST_POINT 1
+#endif
+#ifndef FXL_FAST_BILINEAR    /* bilinear filtering */
+#define FXL_FAST_BILINEAR FXL_HAVE_BILINEAR
+#endif
+#ifndef FXL_FAST_MIP         /* two levels blended: point-mip-linear (with
+                              * FXL_FAST_POINT), trilinear (with BILINEAR) */
+#define FXL_FAST_MIP FXL_HAVE_MIPMAP
+#endif
+
 /* 64-bit division by fixel's own shift-subtract loop instead of the
  * compiler's runtime helper (src/div64.h): 0.7-1.2 KB less Cortex-M code,
  * identical results, slower set-up (one loop iteration per quotient bit).
@@ -90,6 +121,10 @@
 #endif
 #if FXL_HAVE_MIPMAP && !FXL_HAVE_GENERIC
 #error "FXL_HAVE_MIPMAP needs FXL_HAVE_GENERIC (mip sampling runs on the generic span loop)"
+#endif
+#if (FXL_FAST_DEPTH && !FXL_HAVE_DEPTH) || (FXL_FAST_BILINEAR && !FXL_HAVE_BILINEAR) || \
+    (FXL_FAST_MIP && !FXL_HAVE_MIPMAP)
+#error "FXL_FAST_DEPTH, _BILINEAR and _MIP need the feature itself (FXL_HAVE_DEPTH, _BILINEAR, _MIPMAP)"
 #endif
 
 #endif
