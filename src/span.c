@@ -84,17 +84,21 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
  *   and the true value of every lane sum is below 2^32 (63 * 32 + 16 < 2^11
  *   at bit 21), so the bits are identical; per row it is one multiply-add
  *   with 32 a + R and b - a computed once per footprint.
- * - the 2x2 footprint is fetched and expanded only when its key (the row
- *   bits of vv, the column bits of uu moved below bit 16) changes; on a
- *   magnified texture neighbouring pixels mostly share it (4 loads and 4
- *   expansions saved). Bit 15 of a key is always 0 (lw <= 15), so ~0 means
+ * - the 2x2 footprint is fetched and expanded only when its key changes;
+ *   on a magnified texture neighbouring pixels mostly share it (4 loads and
+ *   4 expansions saved). The key is the integer parts of vv mod 2^15 (bits
+ *   16..30) and of uu (bits 0..15), unmasked: texture sides divide 2^14,
+ *   so equal keys mean the same footprint (a key that differs only by whole
+ *   texture periods costs a needless fetch, nothing else). Without the
+ *   texture's masks it takes two instructions and one constant, where the
+ *   masked form took three and two masks (registers the loops lack: each
+ *   was reloaded a pixel on a Cortex-M4). Bit 31 is always 0, so ~0 means
  *   "none".
  * Coordinates uu = u - 1/2 texel, vv = v - 1/2 texel (q16): the weights are
  * bits 11..15 (constant shifts: UBFX on a Cortex-M4), row and column the
  * bits from 16 (the row times the width only on a new footprint). */
 typedef struct bl {
     const uint16_t *tex;
-    uint32_t mu16, mv16;          /* column and row bits of uu, vv */
     uint32_t mu, mv, lw;          /* mask_u, mask_v, log2 width */
     uint32_t key;
     uint32_t a0, d0, a1, d1;      /* 32 e00 + R, e10 - e00; the same for row 1 */
@@ -108,15 +112,13 @@ static inline void bl_init(bl_t *b, const fxl__level_t *lv)
     b->mu = lv->mask_u;
     b->mv = lv->mask_v;
     b->lw = lv->log2_w;
-    b->mu16 = b->mu << 16;
-    b->mv16 = b->mv << 16;
     b->key = 0xFFFFFFFFu;
     b->a0 = b->d0 = b->a1 = b->d1 = 0;
 }
 
 static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv)
 {
-    const uint32_t key = (vv & b->mv16) | ((uu & b->mu16) >> 16);
+    const uint32_t key = (vv & 0x7FFF0000u) | (uu >> 16);
     const uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
     uint32_t top, bot;
 
