@@ -303,8 +303,10 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
 #else
     span = 0;   /* -Os: the generic walk only */
 #endif
-    if (stats)
+    if (stats) {
         stats->drawn++;
+        stats->generic += span == 0;
+    }
 
     /* Which side the middle vertex is on, from the long edge top -> bottom:
      * the sign of the sorted vertices' determinant, which is det's sign

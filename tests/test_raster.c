@@ -1159,6 +1159,65 @@ void test_row_const_walk_matches_generic(void)
     (void)rowc;
 }
 
+/* ---- which walk drew a triangle (fxl_stats_t.generic) ------------------------- */
+
+/* A triangle drawn with the given target format, depth buffer and texture
+ * settings; returns stats.generic (drawn is checked to be 1). */
+static uint32_t generic_count(fxl_pixfmt_t fmt, int with_depth, fxl_filter_t filter, fxl_wrap_t wrap)
+{
+    static uint16_t zbuf[W * H];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    fxl_vertex_t v[3];
+    fxl_stats_t st;
+    memset(&st, 0, sizeof st);
+    v[0] = vtx(1, 1, 0.5, 0, 0);
+    v[1] = vtx(40, 3, 0.25, 9, 0);
+    v[2] = vtx(5, 40, 0.75, 0, 7);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pix, W, H, W, fmt));
+    if (with_depth) {
+        fxl_target_set_depth(&t, zbuf);
+        fxl_target_clear_depth(&t);
+    }
+    make_texture(&tex);
+    tex.wrap_u = (uint8_t)wrap;
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.filter = (uint8_t)filter;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
+    TEST_ASSERT_EQUAL_UINT32(1, st.drawn);
+    TEST_ASSERT_TRUE(st.pixels > 0);
+    return st.generic;
+}
+
+void test_stats_count_generic_draws(void)
+{
+    /* The kinds of draw with specialised code in this build (config.h,
+     * FXL_FAST_*; none at -Os) count 0, everything else 1. */
+    const uint32_t nat = FXL__FAST_SPANS && FXL_FAST_NATIVE, swp = FXL__FAST_SPANS && FXL_FAST_SWAPPED;
+    const uint32_t pt = FXL_FAST_POINT, bl = FXL_HAVE_BILINEAR && FXL_FAST_BILINEAR;
+    const uint32_t noz = FXL_FAST_NO_DEPTH, z = FXL_HAVE_DEPTH && FXL_FAST_DEPTH;
+    TEST_ASSERT_EQUAL_UINT32(!(nat && pt && noz), generic_count(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT));
+    TEST_ASSERT_EQUAL_UINT32(!(swp && pt && noz),
+                             generic_count(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT));
+#if FXL_HAVE_DEPTH
+    TEST_ASSERT_EQUAL_UINT32(!(nat && pt && z), generic_count(FXL_PIXFMT_RGB565, 1, FXL_FILTER_POINT, FXL_WRAP_REPEAT));
+#else
+    (void)z;
+#endif
+#if FXL_HAVE_BILINEAR
+    TEST_ASSERT_EQUAL_UINT32(!(swp && bl && noz),
+                             generic_count(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_BILINEAR, FXL_WRAP_REPEAT));
+#else
+    (void)bl;
+#endif
+#if FXL_HAVE_GENERIC
+    /* clamp has no specialised walk anywhere */
+    TEST_ASSERT_EQUAL_UINT32(1, generic_count(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_CLAMP));
+#endif
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -1302,6 +1361,7 @@ int main(void)
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_row_const_walk_matches_generic);
+    RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
     return UNITY_END();
 }

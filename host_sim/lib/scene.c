@@ -1040,6 +1040,7 @@ fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t 
         if (stats != NULL) {
             stats->triangles += c.res.stats.triangles;
             stats->drawn += c.res.stats.drawn;
+            stats->generic += c.res.stats.generic;
             stats->pixels += c.res.stats.pixels;
         }
         if (chk != NULL) {

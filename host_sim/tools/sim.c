@@ -762,9 +762,10 @@ int main(int argc, char **argv)
     }
     /* The summary goes to stderr so that stdout carries only the CRC. */
     fprintf(stderr,
-            "%s %s %s %dx%d: %lu triangles, %lu drawn, %lu pixels, %lu divisions, %.3f ms/frame\n",
+            "%s %s %s %dx%d: %lu triangles, %lu drawn (%lu by the generic walk), %lu pixels, "
+            "%lu divisions, %.3f ms/frame\n",
             j.scene.name, name_of(persp_names, d.persp), filter_label(&d), (int)o.width,
-            (int)o.height, (unsigned long)s.triangles, (unsigned long)s.drawn,
+            (int)o.height, (unsigned long)s.triangles, (unsigned long)s.drawn, (unsigned long)s.generic,
             (unsigned long)s.pixels, (unsigned long)s.divisions, ms);
     if (o.crc) {
         printf("0x%08lX\n", (unsigned long)fxl_host_crc_target(&j.frame.target));

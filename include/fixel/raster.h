@@ -105,6 +105,10 @@ typedef struct fxl_stats {
     uint32_t pixels;              /* pixels written */
     uint32_t spans;               /* non-empty clipped spans */
     uint32_t divisions;           /* exact perspective divisions */
+    uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
+                                   * with no specialised code (other texel formats and
+                                   * wraps, key, modulate, Gouraud; those config.h's
+                                   * FXL_FAST_* leave out; every draw of an -Os build) */
 } fxl_stats_t;
 
 /* Subdivided 16 (FXL_PERSP_SPAN), point filter, nearest mip, per-segment LOD,
