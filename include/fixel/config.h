@@ -65,7 +65,7 @@
 /* Specialised code per kind of draw (RGB565 repeat-wrapped textures, REPLACE;
  * the rest always takes the generic walk). Each combination of target format,
  * depth and filter has its own pixel loop, and in speed-optimised builds its
- * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 188 KB for all
+ * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 191 KB for all
  * (docs/bench/footprint.txt); at -Os a pixel loop of ~0.2 KB. A product that
  * drives one panel format, or always draws with depth, leaves the rest out.
  * A left-out combination is drawn by the generic walk to the same pixels, bit
