@@ -8,7 +8,8 @@
 #      every documented configuration (FXL_HAVE_*, FXL_FAST_*); the rendering
 #      tests pass with point, swapped and two-level specialisations left out;
 #   4. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, a build with
-#      specialised code left out, Cortex-M4 on qemu where the tools exist);
+#      specialised code left out, Cortex-M4 and Cortex-M0+ code on qemu where
+#      the tools exist);
 #   5. bench/experiments/*.c compile warning-free (host, and Cortex-M4 where
 #      the cross compiler exists), so the measurements they record stay
 #      reproducible.

@@ -5,8 +5,8 @@
 # variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, gcc -O2 with
 # the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
-# clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 run on qemu-system-arm
-# -M mps2-an386 with semihosting (when both exist), and compares each list
+# clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
+# qemu-system-arm -M mps2-an386 with semihosting (when both exist), and compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data
 # and textures are generated once on the host (determinism/gen_data.c), so
 # every build renders the same input.
@@ -80,6 +80,25 @@ if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/
         echo "determinism.sh: the Cortex-M4 run failed (exit $?)" >&2
         lists+=("m4-O2")
     fi
+    # Cortex-M0+ code (Thumb-1: the masks form of the texel index, the M0
+    # arithmetic, rowc_run's plain loop) on the same machine: ARMv6-M code
+    # runs unchanged on the M4's ARMv7-M, and the micro:bit model has too
+    # little RAM for a 320x240 frame.
+    echo "== m0plus-O2: arm-none-eabi-gcc -mcpu=cortex-m0plus -O2, run on the same qemu machine"
+    # shellcheck disable=SC2086
+    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu=cortex-m0plus -mthumb \
+        -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
+        -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
+        "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m0plus.elf"
+    rm -f "$out/m0plus-O2.txt"
+    if timeout 900 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
+        -semihosting-config enable=on,target=native,chardev=semi \
+        -chardev file,id=semi,path="$out/m0plus-O2.txt" -kernel "$out/det_m0plus.elf"; then
+        :
+    else
+        echo "determinism.sh: the Cortex-M0+ run failed (exit $?)" >&2
+    fi
+    lists+=("m0plus-O2")
 else
     echo "== m4-O2: needs arm-none-eabi-gcc and qemu-system-arm (apt-get install gcc-arm-none-eabi" \
          "libnewlib-arm-none-eabi qemu-system-arm); skipped"
