@@ -44,6 +44,7 @@
  * 11..15, b in 0..4) leaving >= 5 zero bits above each channel, so one
  * 32-bit multiply by a 5-bit weight (<= 32) scales all three at once:
  * 31 * 32 + 16 < 2^10 and 63 * 32 + 16 < 2^11 never reach the next lane. */
+#if FXL_HAVE_GENERIC || FXL__V_ANY_BL
 static inline uint32_t expand565(uint32_t c)
 {
     return (c | (c << 16)) & 0x07E0F81Fu;
@@ -54,6 +55,7 @@ static inline uint32_t compact565(uint32_t x)
     x &= 0x07E0F81Fu;
     return (x | (x >> 16)) & 0xFFFFu;
 }
+#endif
 
 #if FXL_HAVE_GENERIC
 /* a + (b - a) * f / 32 per channel, rounded to nearest (0x02008010 adds

@@ -170,7 +170,7 @@ fxl_status_t fw_app_frame(fw_app_t *a, int scene, uint32_t frame, fw_result_t *r
     if (a == (fw_app_t *)0 || r == (fw_result_t *)0) return FXL_ERR_ARG;
     r->stats.triangles = r->stats.drawn = r->stats.culled_degenerate = 0;
     r->stats.culled_outside = r->stats.culled_backface = 0;
-    r->stats.pixels = r->stats.spans = r->stats.divisions = 0;
+    r->stats.pixels = r->stats.spans = r->stats.divisions = r->stats.generic = 0;
     spi_mock_restart(&a->spi);
     fw_mark_frame();
     st = fw_scene_setup(&a->scenes, scene, frame, a->panel.width, a->panel.height, &a->view);

@@ -17,7 +17,7 @@
 # (sanitizer build from `make sanitize`, default build-asan; configured here
 # when missing), FXL_FUZZ_CASES (default 1000000), FXL_FUZZ_SEED (default 1).
 # Optional tools: clang, qemu-system-arm, gcc-arm-none-eabi (steps skip
-# without them). Takes about 2-4 minutes on 2 cores.
+# without them). Takes about 4-6 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bdir="${FXL_BUILD_DIR:-build}"
@@ -69,7 +69,7 @@ FXL_BUILD_DIR="$bdir" bash host_sim/scripts/config_matrix.sh || status=1
 sdir="${bdir}-subset"
 mkdir -p "$sdir"
 printf '#define FXL_FAST_SWAPPED 0\n#define FXL_FAST_POINT 0\n#define FXL_FAST_MIP 0\n' >"$sdir/subset_config.h"
-if cmake -S . -B "$sdir" -DFXL_CONFIG_FILE="$(pwd)/$sdir/subset_config.h" >/dev/null &&
+if cmake -S . -B "$sdir" -DFXL_CONFIG_FILE="$(cd "$sdir" && pwd)/subset_config.h" >/dev/null &&
     cmake --build "$sdir" -j "${JOBS:-2}" --target test_raster test_gallery test_determinism >/dev/null; then
     (cd "$sdir" && ctest --output-on-failure -R '^(test_raster|test_gallery|test_determinism)$') || status=1
 else
