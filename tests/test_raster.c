@@ -1165,9 +1165,11 @@ void test_row_const_walk_matches_generic(void)
  * settings, where fast says whether this build has specialised code for
  * it. Checks drawn and stats.generic; a draw without specialised code in a
  * build without the generic walk must be FXL_ERR_UNSUPPORTED instead. */
-static void check_walk(fxl_pixfmt_t fmt, int with_depth, fxl_filter_t filter, fxl_wrap_t wrap, int fast)
+static void check_walk(fxl_pixfmt_t fmt, int with_depth, fxl_filter_t filter, fxl_wrap_t wrap, int mip_linear,
+                       int fast)
 {
     static uint16_t zbuf[W * H];
+    static uint16_t chain[64 * 64 * 4 / 3 + 1];   /* 64x64 RGB565 with all 7 levels */
     fxl_target_t t;
     fxl_draw_t d;
     fxl_texture_t tex;
@@ -1184,8 +1186,17 @@ static void check_walk(fxl_pixfmt_t fmt, int with_depth, fxl_filter_t filter, fx
         fxl_target_clear_depth(&t);
     }
     make_texture(&tex);
-    tex.wrap_u = (uint8_t)wrap;
     fxl_draw_defaults(&d);
+    if (mip_linear) {
+        /* the same level 0 with its chain: two levels blended a pixel */
+        TEST_ASSERT_TRUE(fxl_mip_size(64, 64, FXL_TEXFMT_RGB565, 7) <= sizeof chain);
+        memcpy(chain, tex_data, 64 * 64 * sizeof(uint16_t));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build(chain, (uint32_t)sizeof chain, 64, 64, FXL_TEXFMT_RGB565, 7, NULL,
+                                                    FXL_MIP_SPACE_STORED));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, chain, 64, 64, FXL_TEXFMT_RGB565, 7));
+        d.mip = FXL_MIP_LINEAR;
+    }
+    tex.wrap_u = (uint8_t)wrap;
     d.texture = &tex;
     d.filter = (uint8_t)filter;
     status = fxl_draw_triangle(&t, &d, v, &st);
@@ -1206,20 +1217,24 @@ void test_stats_count_generic_draws(void)
     const int nat = FXL__FAST_SPANS && FXL_FAST_NATIVE, swp = FXL__FAST_SPANS && FXL_FAST_SWAPPED;
     const int pt = FXL_FAST_POINT, bl = FXL_HAVE_BILINEAR && FXL_FAST_BILINEAR;
     const int noz = FXL_FAST_NO_DEPTH, z = FXL_HAVE_DEPTH && FXL_FAST_DEPTH;
-    check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT, nat && pt && noz);
-    check_walk(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT, swp && pt && noz);
+    check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT, 0, nat && pt && noz);
+    check_walk(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_POINT, FXL_WRAP_REPEAT, 0, swp && pt && noz);
 #if FXL_HAVE_DEPTH
-    check_walk(FXL_PIXFMT_RGB565, 1, FXL_FILTER_POINT, FXL_WRAP_REPEAT, nat && pt && z);
+    check_walk(FXL_PIXFMT_RGB565, 1, FXL_FILTER_POINT, FXL_WRAP_REPEAT, 0, nat && pt && z);
 #else
     (void)z;
 #endif
 #if FXL_HAVE_BILINEAR
-    check_walk(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_BILINEAR, FXL_WRAP_REPEAT, swp && bl && noz);
+    check_walk(FXL_PIXFMT_RGB565_SWAP, 0, FXL_FILTER_BILINEAR, FXL_WRAP_REPEAT, 0, swp && bl && noz);
+#if FXL_HAVE_MIPMAP
+    /* trilinear: the two-level variants (FXL_FAST_MIP) */
+    check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_BILINEAR, FXL_WRAP_REPEAT, 1, nat && bl && noz && FXL_FAST_MIP);
+#endif
 #else
     (void)bl;
 #endif
     /* clamp has no specialised walk anywhere */
-    check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_CLAMP, 0);
+    check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_CLAMP, 0, 0);
 }
 
 /* ---- errors ------------------------------------------------------------------ */
