@@ -64,41 +64,35 @@ else
     echo "== clang-O2: clang not found (apt-get install clang); skipped"
 fi
 
-if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1; then
-    echo "== m4-O2: arm-none-eabi-gcc -mcpu=cortex-m4 -O2 on qemu-system-arm -M mps2-an386"
+# One bare-metal build run on qemu-system-arm -M mps2-an386 (a Cortex-M4),
+# with semihosting for the output. A failed run leaves an incomplete list,
+# which the comparison reports.
+run_arm() {   # name cpu
+    local name=$1 cpu=$2
+    echo "== $name: arm-none-eabi-gcc -mcpu=$cpu -O2 on qemu-system-arm -M mps2-an386"
     # shellcheck disable=SC2086
-    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu=cortex-m4 -mthumb \
+    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu="$cpu" -mthumb \
         -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
         -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
-        "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m4.elf"
-    rm -f "$out/m4-O2.txt"
-    if timeout 600 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
+        "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_$name.elf"
+    rm -f "$out/$name.txt"
+    if timeout 900 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
         -semihosting-config enable=on,target=native,chardev=semi \
-        -chardev file,id=semi,path="$out/m4-O2.txt" -kernel "$out/det_m4.elf"; then
-        lists+=("m4-O2")
+        -chardev file,id=semi,path="$out/$name.txt" -kernel "$out/det_$name.elf"; then
+        :
     else
-        echo "determinism.sh: the Cortex-M4 run failed (exit $?)" >&2
-        lists+=("m4-O2")
+        echo "determinism.sh: the $cpu run failed (exit $?)" >&2
     fi
+    lists+=("$name")
+}
+
+if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/dev/null 2>&1; then
+    run_arm m4-O2 cortex-m4
     # Cortex-M0+ code (Thumb-1: the masks form of the texel index, the M0
     # arithmetic, rowc_run's plain loop) on the same machine: ARMv6-M code
     # runs unchanged on the M4's ARMv7-M, and the micro:bit model has too
     # little RAM for a 320x240 frame.
-    echo "== m0plus-O2: arm-none-eabi-gcc -mcpu=cortex-m0plus -O2, run on the same qemu machine"
-    # shellcheck disable=SC2086
-    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu=cortex-m0plus -mthumb \
-        -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
-        -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
-        "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_m0plus.elf"
-    rm -f "$out/m0plus-O2.txt"
-    if timeout 900 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
-        -semihosting-config enable=on,target=native,chardev=semi \
-        -chardev file,id=semi,path="$out/m0plus-O2.txt" -kernel "$out/det_m0plus.elf"; then
-        :
-    else
-        echo "determinism.sh: the Cortex-M0+ run failed (exit $?)" >&2
-    fi
-    lists+=("m0plus-O2")
+    run_arm m0plus-O2 cortex-m0plus
 else
     echo "== m4-O2: needs arm-none-eabi-gcc and qemu-system-arm (apt-get install gcc-arm-none-eabi" \
          "libnewlib-arm-none-eabi qemu-system-arm); skipped"
