@@ -1082,21 +1082,22 @@ static FXL__UNSWITCH uint32_t *rowc_run(fxl__raxis_t *ax, int segk, int32_t nful
     uint64_t s = ax->s;
     uint32_t c0 = ax->c;
     int32_t i;
+    /* the next correction point's value into c */
+#define FXL__ROWC_POINT(c)                                                                                  \
+    do {                                                                                                    \
+        const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r);                         \
+        (c) = hi ? fxl__persp_lo32_hi(prod, ax->k) : fxl__persp_lo32(prod, ax->k, ax->half);                \
+    } while (0)
 #if FXL__ROWC_LEAN
     for (i = 0; i < nfull; i++, out += stride) {
-        const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r);
-        const uint32_t c1 = hi ? fxl__persp_lo32_hi(prod, ax->k) : fxl__persp_lo32(prod, ax->k, ax->half);
+        uint32_t c1;
+        FXL__ROWC_POINT(c1);
         out[0] = c0;
         out[1] = step_pow2_u32(c1 - c0, segk);
         c0 = c1;
     }
 #else
     const uint32_t bias = (1u << segk) - 1u;
-#define FXL__ROWC_POINT(c)                                                                                  \
-    do {                                                                                                    \
-        const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r);                         \
-        (c) = hi ? fxl__persp_lo32_hi(prod, ax->k) : fxl__persp_lo32(prod, ax->k, ax->half);                \
-    } while (0)
     /* two points an iteration: no register copy of c0 and half the loop
      * overhead (~2.5 Cortex-M4 instructions a point) */
     for (i = 1; i < nfull; i += 2, out += 2 * stride) {
@@ -1117,8 +1118,8 @@ static FXL__UNSWITCH uint32_t *rowc_run(fxl__raxis_t *ax, int segk, int32_t nful
         c0 = c1;
         out += stride;
     }
-#undef FXL__ROWC_POINT
 #endif
+#undef FXL__ROWC_POINT
     ax->s = s;
     ax->c = c0;
     return out;
@@ -1388,6 +1389,20 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #else
 #define IF_MIP(x) 0
 #endif
+/* A row of the table: ONE for a one-level variant, TWO for a two-level one
+ * (its seg column is the generic seg function), built where FXL__V(bil, z,
+ * sw) holds (and FXL__V_MIP for TWO), else empty. IF_V selects with the
+ * same three flags through the dimensions' IF_ macros above. */
+#define IF_FILT_0 IF_PT
+#define IF_FILT_1 IF_BL
+#define IF_DEPTH_0 IF_NOZ
+#define IF_DEPTH_1 IF_Z
+#define IF_FMT_0 IF_NAT
+#define IF_FMT_1 IF_SWP
+#define IF_V(bil, z, sw, x) IF_FILT_##bil(IF_DEPTH_##z(IF_FMT_##sw(x)))
+#define ONE(bil, z, sw, name) FAST_ENTRY(IF_V(bil, z, sw, seg_##name), IF_V(bil, z, sw, span_##name##_pick))
+#define TWO(bil, z, sw, name)                                                                               \
+    FAST_ENTRY(IF_V(bil, z, sw, IF_MIP(SEG_GENERIC)), IF_V(bil, z, sw, IF_MIP(span_##name##_pick)))
 /* The span column exists only where the specialised walks are built. */
 #if FXL__FAST_SPANS
 #define FAST_ENTRY(seg, pick) {seg, pick}
@@ -1401,38 +1416,22 @@ static const struct {
 #endif
 } fast_tab[17] = {
     FAST_ENTRY(0, 0),
-    FAST_ENTRY(IF_PT(IF_NOZ(IF_NAT(seg_point))),
-               IF_PT(IF_NOZ(IF_NAT(span_point_pick)))),
-    FAST_ENTRY(IF_BL(IF_NOZ(IF_NAT(seg_bilin))),
-               IF_BL(IF_NOZ(IF_NAT(span_bilin_pick)))),
-    FAST_ENTRY(IF_PT(IF_Z(IF_NAT(seg_point_z))),
-               IF_PT(IF_Z(IF_NAT(span_point_z_pick)))),
-    FAST_ENTRY(IF_BL(IF_Z(IF_NAT(seg_bilin_z))),
-               IF_BL(IF_Z(IF_NAT(span_bilin_z_pick)))),
-    FAST_ENTRY(IF_PT(IF_NOZ(IF_SWP(seg_point_swap))),
-               IF_PT(IF_NOZ(IF_SWP(span_point_swap_pick)))),
-    FAST_ENTRY(IF_BL(IF_NOZ(IF_SWP(seg_bilin_swap))),
-               IF_BL(IF_NOZ(IF_SWP(span_bilin_swap_pick)))),
-    FAST_ENTRY(IF_PT(IF_Z(IF_SWP(seg_point_z_swap))),
-               IF_PT(IF_Z(IF_SWP(span_point_z_swap_pick)))),
-    FAST_ENTRY(IF_BL(IF_Z(IF_SWP(seg_bilin_z_swap))),
-               IF_BL(IF_Z(IF_SWP(span_bilin_z_swap_pick)))),
-    FAST_ENTRY(IF_PT(IF_NOZ(IF_NAT(IF_MIP(SEG_GENERIC)))),
-               IF_PT(IF_NOZ(IF_NAT(IF_MIP(span_pml_pick))))),
-    FAST_ENTRY(IF_BL(IF_NOZ(IF_NAT(IF_MIP(SEG_GENERIC)))),
-               IF_BL(IF_NOZ(IF_NAT(IF_MIP(span_tri_pick))))),
-    FAST_ENTRY(IF_PT(IF_Z(IF_NAT(IF_MIP(SEG_GENERIC)))),
-               IF_PT(IF_Z(IF_NAT(IF_MIP(span_pml_z_pick))))),
-    FAST_ENTRY(IF_BL(IF_Z(IF_NAT(IF_MIP(SEG_GENERIC)))),
-               IF_BL(IF_Z(IF_NAT(IF_MIP(span_tri_z_pick))))),
-    FAST_ENTRY(IF_PT(IF_NOZ(IF_SWP(IF_MIP(SEG_GENERIC)))),
-               IF_PT(IF_NOZ(IF_SWP(IF_MIP(span_pml_swap_pick))))),
-    FAST_ENTRY(IF_BL(IF_NOZ(IF_SWP(IF_MIP(SEG_GENERIC)))),
-               IF_BL(IF_NOZ(IF_SWP(IF_MIP(span_tri_swap_pick))))),
-    FAST_ENTRY(IF_PT(IF_Z(IF_SWP(IF_MIP(SEG_GENERIC)))),
-               IF_PT(IF_Z(IF_SWP(IF_MIP(span_pml_z_swap_pick))))),
-    FAST_ENTRY(IF_BL(IF_Z(IF_SWP(IF_MIP(SEG_GENERIC)))),
-               IF_BL(IF_Z(IF_SWP(IF_MIP(span_tri_z_swap_pick))))),
+    ONE(0, 0, 0, point),
+    ONE(1, 0, 0, bilin),
+    ONE(0, 1, 0, point_z),
+    ONE(1, 1, 0, bilin_z),
+    ONE(0, 0, 1, point_swap),
+    ONE(1, 0, 1, bilin_swap),
+    ONE(0, 1, 1, point_z_swap),
+    ONE(1, 1, 1, bilin_z_swap),
+    TWO(0, 0, 0, pml),
+    TWO(1, 0, 0, tri),
+    TWO(0, 1, 0, pml_z),
+    TWO(1, 1, 0, tri_z),
+    TWO(0, 0, 1, pml_swap),
+    TWO(1, 0, 1, tri_swap),
+    TWO(0, 1, 1, pml_z_swap),
+    TWO(1, 1, 1, tri_z_swap),
 };
 
 static int fast_id_of(const fxl__tri_t *tri)
