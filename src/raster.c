@@ -63,6 +63,13 @@ static fxl_status_t check_draw(const fxl_draw_t *d)
         fxl_status_t st = fxl_texture_validate(d->texture);
         if (st != FXL_OK)
             return st;
+#if !FXL_HAVE_MIPMAP
+        /* Level selection is compiled out: a draw that asks for it on a
+         * chain of levels is refused rather than drawn from level 0 alone
+         * (silently aliased). A one-level texture needs none. */
+        if (d->mip != FXL_MIP_NONE && d->texture->levels > 1u)
+            return FXL_ERR_UNSUPPORTED;
+#endif
 #if !FXL_HAVE_GENERIC
         if (d->texture->format != FXL_TEXFMT_RGB565 || d->texture->wrap_u != FXL_WRAP_REPEAT ||
             d->texture->wrap_v != FXL_WRAP_REPEAT || (d->texture->flags & FXL_TEXF_KEY))

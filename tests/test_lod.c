@@ -7,6 +7,7 @@
 
 #include "unity.h"
 #include "test_vertex.h"
+#include "test_features.h"
 #include "fixel/fixel.h"
 #include "reference.h"
 #include "../src/raster_int.h"
@@ -34,6 +35,7 @@ static void tex512(fxl_texture_t *t)
  * term; two terms and the halving give < 2/256: assert within 2/256. */
 void test_lod_per_triangle_matches_lecture_values(void)
 {
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
     fxl_texture_t t;
     fxl_vertex_t a[3], b[3];
     double want = log(262144.0 / 2240.0) / log(4.0);
@@ -80,6 +82,7 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
  * Exact LODs outside [0, levels-1] are clamped as the core clamps them. */
 void test_lod_per_segment_matches_exact_derivatives_on_floor(void)
 {
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
     static uint16_t buf[320 * 240];
     fxl_texture_t t;
     fxl_target_t tg;
@@ -188,6 +191,7 @@ static double lod_error_at_correction_points(const fxl_texture_t *t, const fxl_v
  * 4/256 level, as on the floor. */
 void test_lod_per_segment_exact_at_extremes(void)
 {
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
     static const double off[2] = {0.0, 200.0};
     static const double depth[3][3] = {{1, 1, 1}, {1, 0.3, 0.05}, {1, 0.01, 0.001}};
     fxl_texture_t t;
@@ -226,6 +230,7 @@ void test_lod_per_segment_exact_at_extremes(void)
  * mode uses the triangle value for every pixel. */
 void test_lod_bias_and_per_triangle_mode(void)
 {
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
     static uint16_t buf[320 * 240];
     fxl_texture_t t;
     fxl_target_t tg;
@@ -271,6 +276,7 @@ void test_lod_bias_and_per_triangle_mode(void)
  * pixel computable by hand. */
 void test_trilinear_weights_blend_levels_by_lod_fraction(void)
 {
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
     static uint16_t buf[320 * 240];
     static uint16_t chain[64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1];
     static const uint16_t lv[7] = {0x001F, 0x07E0, 0xF800, 0xFFFF, 0x0000, 0x7BEF, 0x1234};
@@ -323,6 +329,9 @@ void test_trilinear_weights_blend_levels_by_lod_fraction(void)
  * accuracy of the true log2. */
 void test_log2_q8_forms_agree(void)
 {
+#if !(FXL_HAVE_MIPMAP || FXL_HAVE_AUTO)
+    TEST_NEEDS(FXL_HAVE_MIPMAP || FXL_HAVE_AUTO);
+#else
     uint32_t x;
     int k, e;
     for (x = 1; x < (1u << 20); x++) {
@@ -360,6 +369,7 @@ void test_log2_q8_forms_agree(void)
         z.e = 5;
         TEST_ASSERT_EQUAL_INT32(INT32_MIN / 4, fxl__sf_log2_q8(z));
     }
+#endif
 }
 
 int main(void)

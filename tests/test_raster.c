@@ -7,6 +7,7 @@
 
 #include "unity.h"
 #include "test_vertex.h"
+#include "test_features.h"
 #include "fixel/fixel.h"
 #include "../src/raster_int.h"
 #include "../src/auto.h"
@@ -993,6 +994,9 @@ void test_auto_quadratic_segments_stay_within_budget(void)
  * ~1/len (the far end's q up to twice the near one's). */
 void test_quad_steps_follow_their_parabola(void)
 {
+#if !FXL_HAVE_QUAD
+    TEST_NEEDS(FXL_HAVE_QUAD);
+#else
     int n, i;
     char msg[200];
     lcg_state = 99u;
@@ -1022,6 +1026,7 @@ void test_quad_steps_follow_their_parabola(void)
             }
         }
     }
+#endif
 }
 
 /* The span's last quadratic segment (fxl__quad_axis with k < 0): its
@@ -1031,6 +1036,7 @@ void test_quad_steps_follow_their_parabola(void)
  * divides in 32 bits where the numerator fits, tested on its high word;
  * the draws put the numerator on both sides of that test, on INT32_MIN
  * and INT32_MAX themselves, and within 8 of them outside. */
+#if FXL_HAVE_QUAD
 static int32_t rnd_i32_any_scale(void)   /* |x| < 2^31, log-uniform-ish magnitude, either sign */
 {
     const int32_t m = (int32_t)((((rnd() << 8) ^ rnd()) >> 1) >> (rnd() % 31u));
@@ -1073,6 +1079,12 @@ void test_quad_last_segment_step_matches_64bit(void)
     TEST_MESSAGE(msg);
     TEST_ASSERT_TRUE_MESSAGE(fits > 1000 && wide > 1000 && at_min > 0 && at_max > 0 && near_edge > 0, msg);
 }
+#else
+void test_quad_last_segment_step_matches_64bit(void)
+{
+    TEST_NEEDS(FXL_HAVE_QUAD);
+}
+#endif
 
 /* The generic walk with the variant's own pixel loops (a probe that is not
  * the picked seg function gets the generic walk). */
@@ -1359,6 +1371,86 @@ void test_depth_buffer_unused_without_test_or_write(void)
         TEST_ASSERT_EQUAL_UINT16(0, zb[i]);
 }
 
+/* Each optional feature either works or, left out by the configuration, is
+ * refused with FXL_ERR_UNSUPPORTED and draws nothing: never drawn some
+ * other way. Both halves run in the configuration they belong to (the full
+ * build checks every draw below returns FXL_OK); CI runs this file in
+ * reduced configurations too. */
+static void expect_feature(int have, fxl_target_t *t, const fxl_draw_t *d, const fxl_vertex_t v[3], const char *what)
+{
+    fxl_stats_t st;
+    char msg[120];
+    fxl_status_t got;
+    memset(&st, 0, sizeof st);
+    memset(pix, 0, sizeof pix);
+    got = fxl_draw_triangle(t, d, v, &st);
+    snprintf(msg, sizeof msg, "%s: status %d, %lu pixels, with the feature %s", what, (int)got,
+             (unsigned long)st.pixels, have ? "in" : "left out");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(have ? FXL_OK : FXL_ERR_UNSUPPORTED, got, msg);
+    TEST_ASSERT_TRUE_MESSAGE(have ? st.pixels > 0 : st.pixels == 0, msg);
+}
+
+void test_left_out_features_are_refused(void)
+{
+    static uint16_t chain[64 * 64 * 4 / 3 + 8];
+    static uint16_t zbuf[W * H];
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_texture_t tex, mip, lum;
+    fxl_vertex_t v[3];
+    v[0] = vtx(1, 1, 0.5, 0, 0);
+    v[1] = vtx(40, 2, 0.25, 8, 0);
+    v[2] = vtx(3, 40, 0.5, 0, 8);
+    fxl_target_init(&t, pix, W, H, W, FXL_PIXFMT_RGB565);
+    make_texture(&tex);
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    expect_feature(1, &t, &d, v, "point, subdivided, RGB565 repeat (always present)");
+    d.filter = FXL_FILTER_BILINEAR;
+    expect_feature(FXL_HAVE_BILINEAR, &t, &d, v, "FXL_FILTER_BILINEAR");
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.persp = FXL_PERSP_AUTO;
+    expect_feature(FXL_HAVE_AUTO, &t, &d, v, "FXL_PERSP_AUTO");
+    /* A chain of levels: selection needs FXL_HAVE_MIPMAP; FXL_MIP_NONE (level
+     * 0) and a one-level texture need nothing. */
+    memset(chain, 0x5A, sizeof chain);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&mip, chain, 64, 64, FXL_TEXFMT_RGB565, 7));
+    fxl_draw_defaults(&d);
+    d.texture = &mip;
+    expect_feature(FXL_HAVE_MIPMAP, &t, &d, v, "FXL_MIP_NEAREST on 7 levels");
+    d.mip = FXL_MIP_LINEAR;
+    expect_feature(FXL_HAVE_MIPMAP, &t, &d, v, "FXL_MIP_LINEAR on 7 levels");
+    d.mip = FXL_MIP_NONE;
+    expect_feature(1, &t, &d, v, "FXL_MIP_NONE on 7 levels");
+    d.texture = &tex;
+    d.mip = FXL_MIP_LINEAR;
+    expect_feature(1, &t, &d, v, "FXL_MIP_LINEAR on one level");
+    /* The generic walk's kinds of draw */
+    fxl_draw_defaults(&d);
+    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "untextured");
+    d.texture = &tex;
+    d.texenv = FXL_TEXENV_MODULATE;
+    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_TEXENV_MODULATE");
+    d.texenv = FXL_TEXENV_REPLACE;
+    d.shade = FXL_SHADE_GOURAUD;
+    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_SHADE_GOURAUD");
+    d.shade = FXL_SHADE_FLAT;
+    tex.wrap_u = FXL_WRAP_CLAMP;
+    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_WRAP_CLAMP");
+    tex.wrap_u = FXL_WRAP_REPEAT;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&lum, tex_data, 64, 64, FXL_TEXFMT_L8, 1));
+    d.texture = &lum;
+    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_TEXFMT_L8");
+    /* The depth buffer is refused where it is attached. */
+    TEST_ASSERT_EQUAL_INT(FXL_HAVE_DEPTH ? FXL_OK : FXL_ERR_UNSUPPORTED, fxl_target_set_depth(&t, zbuf));
+    if (FXL_HAVE_DEPTH) {
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+        d.texture = &tex;
+        expect_feature(1, &t, &d, v, "depth test and write");
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -1382,5 +1474,6 @@ int main(void)
     RUN_TEST(test_row_const_walk_matches_generic);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
+    RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }

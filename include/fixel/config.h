@@ -33,7 +33,9 @@
 #define FXL_HAVE_BILINEAR 1
 #endif
 
-/* Mip levels, LOD selection and trilinear filtering. */
+/* Mip levels, LOD selection and trilinear filtering. Without it a draw of a
+ * texture with more than one level must use FXL_MIP_NONE (else
+ * FXL_ERR_UNSUPPORTED); fxl_mip_build still builds chains. */
 #ifndef FXL_HAVE_MIPMAP
 #define FXL_HAVE_MIPMAP 1
 #endif
