@@ -135,6 +135,15 @@ fxl_status_t metrics_coverage_count(const fxl_vertex_t *tris, int ntri, int32_t 
     st = fxl_target_init(&tg, px, width, height, width, FXL_PIXFMT_RGB565);
     fxl_draw_defaults(&d);
     d.texture = NULL;
+#if !FXL_HAVE_GENERIC
+    /* Untextured draws are the generic walk's, left out of this build: a
+     * 1x1 white texture covers the same pixels (coverage never depends on
+     * the texture). */
+    static const uint16_t white = 0xFFFFu;
+    fxl_texture_t tex;
+    if (st == FXL_OK) st = fxl_texture_init(&tex, &white, 1, 1, FXL_TEXFMT_RGB565, 1);
+    d.texture = &tex;
+#endif
     d.depth = 0;
     d.shade = FXL_SHADE_FLAT;
     d.color = 0xFFFFu;

@@ -88,9 +88,10 @@ fxl_status_t metrics_coverage_compare(const uint8_t *ref_counts, const uint8_t *
  * buffer width x height. */
 fxl_status_t metrics_mask_from_target(const fxl_target_t *t, uint16_t sentinel, uint8_t *mask);
 /* How many triangles the core draws at each pixel of the frame rectangle
- * [0, width) x [0, height): each triangle is drawn alone, untextured, without
- * depth, into a scratch target clipped to its bounding box (so the cost is
- * the sum of the bounding boxes). counts saturate at 255. Uses the core. */
+ * [0, width) x [0, height): each triangle is drawn alone, untextured (with a
+ * 1x1 texture without FXL_HAVE_GENERIC), without depth, into a scratch
+ * target clipped to its bounding box (so the cost is the sum of the bounding
+ * boxes). counts saturate at 255. Uses the core. */
 fxl_status_t metrics_coverage_count(const fxl_vertex_t *tris, int ntri, int32_t width,
                                     int32_t height, uint8_t *counts);
 

@@ -507,8 +507,10 @@ fxl_status_t panel_emu_render_scene(const char *panel, int rotation, int band_ro
     bins = (fxl_band_bin_t *)malloc(bin_cap * sizeof(*bins));
     buf0 = (uint16_t *)malloc((size_t)w * (size_t)band_rows * 2u);
     buf1 = (uint16_t *)malloc((size_t)w * (size_t)band_rows * 2u);
-    depth = (uint16_t *)malloc((size_t)w * (size_t)band_rows * 2u);
-    st = (store && bins && buf0 && buf1 && depth) ? FXL_OK : FXL_ERR_NOMEM;
+    /* A depth band where the build has depth; without it the scene must
+     * not need one (painter's order), as in a direct render. */
+    depth = FXL_HAVE_DEPTH ? (uint16_t *)malloc((size_t)w * (size_t)band_rows * 2u) : NULL;
+    st = (store && bins && buf0 && buf1 && (depth || !FXL_HAVE_DEPTH)) ? FXL_OK : FXL_ERR_NOMEM;
 
     if (st == FXL_OK) st = fxl_panel_init(&p, &hal, preset, (unsigned)rotation);
     if (st == FXL_OK)

@@ -312,6 +312,18 @@ void pscene_part_draw(const pscene_t *s, int i, const fxl_draw_t *base, fxl_draw
     }
 }
 
+const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base)
+{
+    const char *m = NULL;
+    int i;
+    for (i = 0; i < s->parts && m == NULL; i++) {
+        fxl_draw_t d;
+        pscene_part_draw(s, i, base, &d);
+        m = draw_missing_feature(&d, d.texture);
+    }
+    return m;
+}
+
 /* A vertex cache for the largest part (pipeline.h), so every mesh vertex
  * is transformed, lit and texgen'd once per draw; the output is
  * bit-identical to drawing without it. NULL (no cache) when out of

@@ -530,23 +530,28 @@ void scene_free(scene_t *s)
 int frame_alloc(frame_t *f, int32_t width, int32_t height, fxl_pixfmt_t format, int with_depth)
 {
     size_t n;
+    fxl_status_t st;
     if (f == NULL) {
-        return -1;
+        return FXL_ERR_ARG;
     }
     memset(f, 0, sizeof(*f));
     if (width < 1 || height < 1 || width > FXL_TARGET_MAX_DIM || height > FXL_TARGET_MAX_DIM) {
-        return -1;
+        return FXL_ERR_ARG;
     }
     n = (size_t)width * (size_t)height;
     f->pixels = (uint16_t *)calloc(n, sizeof(uint16_t));
     f->depth = with_depth ? (uint16_t *)calloc(n, sizeof(uint16_t)) : NULL;
-    if (f->pixels == NULL || (with_depth && f->depth == NULL) ||
-        fxl_target_init(&f->target, f->pixels, width, height, width, format) != FXL_OK ||
-        (with_depth && fxl_target_set_depth(&f->target, f->depth) != FXL_OK)) {
-        frame_free(f);
-        return -1;
+    st = (f->pixels == NULL || (with_depth && f->depth == NULL)) ? FXL_ERR_NOMEM : FXL_OK;
+    if (st == FXL_OK) {
+        st = fxl_target_init(&f->target, f->pixels, width, height, width, format);
     }
-    return 0;
+    if (st == FXL_OK && with_depth) {
+        st = fxl_target_set_depth(&f->target, f->depth);
+    }
+    if (st != FXL_OK) {
+        frame_free(f);
+    }
+    return st;
 }
 
 void frame_free(frame_t *f)
@@ -780,7 +785,64 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
     return FXL_OK;
 }
 
+/* ---- what a draw needs of the build --------------------------------------- */
+
+const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex)
+{
+    if (!FXL_HAVE_BILINEAR && d->filter == FXL_FILTER_BILINEAR) {
+        return "FXL_HAVE_BILINEAR";
+    }
+    if (!FXL_HAVE_AUTO && d->persp == FXL_PERSP_AUTO) {
+        return "FXL_HAVE_AUTO";
+    }
+    if (!FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE && tex != NULL && tex->levels > 1u) {
+        return "FXL_HAVE_MIPMAP";
+    }
+    if (!FXL_HAVE_GENERIC &&
+        (tex == NULL || d->shade != FXL_SHADE_FLAT || d->texenv != FXL_TEXENV_REPLACE ||
+         tex->format != FXL_TEXFMT_RGB565 || tex->wrap_u != FXL_WRAP_REPEAT ||
+         tex->wrap_v != FXL_WRAP_REPEAT || (tex->flags & FXL_TEXF_KEY) != 0)) {
+        return "FXL_HAVE_GENERIC";
+    }
+    return NULL;
+}
+
+const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d)
+{
+    return a->is_pipe ? pscene_missing_feature(&a->p, d) : draw_missing_feature(d, &a->tex.tex);
+}
+
+int anyscene_needs_depth(const char *name)
+{
+    /* See scene.h for why the others do not. */
+    return !anyscene_exists(name) || strcmp(name, "small_tris") == 0 ||
+           strcmp(name, "p_cubemap") == 0;
+}
+
+/* anyscene_missing_feature of scene `name` built for the query; NULL when it
+ * cannot be built (the render reports that). */
+static const char *named_missing_feature(const char *name, int texture, const fxl_draw_t *d)
+{
+    anyscene_t a;
+    const char *m;
+    if (anyscene_build(&a, name, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, texture, 0) !=
+        SCENE_OK) {
+        return NULL;
+    }
+    m = anyscene_missing_feature(&a, d);
+    anyscene_free(&a);
+    return m;
+}
+
 /* ---- panel ---------------------------------------------------------------- */
+
+const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d)
+{
+    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(scene)) {
+        return "FXL_HAVE_DEPTH";
+    }
+    return named_missing_feature(scene, -1, d);
+}
 
 fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
                                 const char *scene, const fxl_draw_t *d, frame_t *panel_img,
@@ -806,11 +868,20 @@ fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
     if (anyscene_build(&a, scene, w, h, -1, 0) != SCENE_OK) {
         return FXL_ERR_ARG;
     }
-    if (frame_alloc(panel_img, w, h, FXL_PIXFMT_RGB565, 0) != 0 ||
-        frame_alloc(&direct, w, h, FXL_PIXFMT_RGB565, 1) != 0) {
-        frame_free(panel_img);
+    /* The reference has a depth buffer like the bands, when the build has
+     * depth at all; a scene that needs one in a build without is refused
+     * here, where the core refuses the buffer (FXL_ERR_UNSUPPORTED). */
+    st = (fxl_status_t)frame_alloc(panel_img, w, h, FXL_PIXFMT_RGB565, 0);
+    if (st == FXL_OK) {
+        st = (fxl_status_t)frame_alloc(&direct, w, h, FXL_PIXFMT_RGB565,
+                                       FXL_HAVE_DEPTH || anyscene_needs_depth(scene));
+        if (st != FXL_OK) {
+            frame_free(panel_img);
+        }
+    }
+    if (st != FXL_OK) {
         anyscene_free(&a);
-        return FXL_ERR_NOMEM;
+        return st;
     }
     st = anyscene_collect(&a, d, draws, &tris, &count);
     if (st == FXL_OK) {
@@ -988,6 +1059,27 @@ int gallery_mips_compose(const frame_t panels[GALLERY_MIPS_PANELS], frame_t *out
     return 0;
 }
 
+const char *gallery_missing_feature(const gallery_entry_t *e)
+{
+    fxl_draw_t d;
+    const char *m = NULL;
+    size_t i;
+    if (e->kind == GALLERY_MIPS) {
+        for (i = 0; i < GALLERY_MIPS_PANELS && m == NULL; i++) {
+            m = gallery_missing_feature(&mips_panels[i]);
+        }
+        return m;
+    }
+    gallery_draw_settings(e, &d);
+    if (e->kind == GALLERY_PANEL) {
+        return panel_scene_missing_feature(e->scene, &d);
+    }
+    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(e->scene)) {
+        return "FXL_HAVE_DEPTH";
+    }
+    return named_missing_feature(e->scene, e->texture, &d);
+}
+
 static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)
 {
     anyscene_t a;
@@ -998,9 +1090,15 @@ static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_st
         SCENE_OK) {
         return FXL_ERR_ARG;
     }
-    if (frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, FXL_PIXFMT_RGB565, 1) != 0) {
+    /* With depth, as the goldens were drawn. A build without FXL_HAVE_DEPTH
+     * draws a scene that does not need it without a depth buffer (the same
+     * pixels, scene.h); for the others the core refuses the buffer. */
+    st = (fxl_status_t)frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT,
+                                   FXL_PIXFMT_RGB565,
+                                   FXL_HAVE_DEPTH || anyscene_needs_depth(e->scene));
+    if (st != FXL_OK) {
         anyscene_free(&a);
-        return FXL_ERR_NOMEM;
+        return st;
     }
     gallery_draw_settings(e, &d);
     st = anyscene_render(&a, &d, &out->target, stats);

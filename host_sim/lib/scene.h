@@ -103,6 +103,10 @@ typedef struct frame {
     uint16_t *depth;         /* NULL without depth */
 } frame_t;
 
+/* Returns 0 (FXL_OK) or, with *f empty, the fxl_status_t of the failure:
+ * FXL_ERR_ARG (NULL, size outside 1..FXL_TARGET_MAX_DIM), FXL_ERR_NOMEM, or
+ * the core's (FXL_ERR_UNSUPPORTED for a depth buffer in a build without
+ * FXL_HAVE_DEPTH). */
 int frame_alloc(frame_t *f, int32_t width, int32_t height, fxl_pixfmt_t format, int with_depth);
 void frame_free(frame_t *f);
 
@@ -159,6 +163,33 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
                               fxl_draw_t draws[PSCENE_MAX_PARTS], fxl_band_tri_t **tris,
                               size_t *count);
 
+/* ---- what a draw needs of the build (fixel/config.h) ---------------------- */
+
+/* The first FXL_HAVE_ flag that a draw with state *d and texture tex (NULL:
+ * untextured; d->texture is not looked at) needs and this build left out,
+ * as its name ("FXL_HAVE_BILINEAR"), or NULL when the core draws it. These
+ * are the cases where fxl_draw_triangle returns FXL_ERR_UNSUPPORTED
+ * (config.h): bilinear, FXL_PERSP_AUTO, mip selection on a texture of more
+ * than one level, and (FXL_HAVE_GENERIC) untextured draws, Gouraud,
+ * modulate/decal, texel formats other than RGB565, wraps other than repeat,
+ * colour key. A depth buffer belongs to the target: anyscene_needs_depth. */
+const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex);
+/* The same for a built scene drawn by anyscene_draw with *d (its own
+ * textures, all with mip chains; each part's state for pipeline scenes). */
+const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d);
+/* 1 when the image of scene `name` (either kind, any size) depends on the
+ * depth test, i.e. some of its triangles cover the same pixel: small_tris
+ * (random triangles in space) and p_cubemap (its cube sphere's split quads
+ * are not planar, so the mesh is not quite convex). 0 for the others, which
+ * therefore draw the same pixels without a depth buffer: one plane of
+ * triangles that do not overlap (floors, fan, quad_near), convex meshes
+ * with back faces culled (cube, p_cube, p_sphere's UV sphere, p_lit's two,
+ * whose bounding spheres are apart on screen), or the inside of a cylinder
+ * seen from within it (tunnels: a view ray meets the wall once). Measured
+ * in the default build: bit-identical at 320 x 240 with every gallery
+ * setting. 1 for an unknown name. */
+int anyscene_needs_depth(const char *name);
+
 /* ---- a scene on an emulated SPI panel (panel_emu.h) ---------------------- */
 
 #define PANEL_CLEAR_RGB565 FXL_RGB565(28, 32, 44) /* the band renderer's flat clear */
@@ -182,6 +213,12 @@ typedef struct panel_check {
 fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
                                 const char *scene, const fxl_draw_t *d, frame_t *panel_img,
                                 panel_check_t *chk);
+/* The first FXL_HAVE_ flag panel_scene_render of `scene` with *d needs and
+ * this build left out, or NULL: FXL_HAVE_DEPTH for a scene whose image
+ * depends on the depth test (anyscene_needs_depth), then the draw settings'
+ * (anyscene_missing_feature). A render needing a left-out draw setting
+ * returns FXL_ERR_UNSUPPORTED. */
+const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d);
 
 /* ---- the gallery ---------------------------------------------------------- */
 
@@ -239,11 +276,23 @@ int gallery_mips_panel(size_t i, gallery_entry_t *e);
  * 3 columns x 2 rows, labels drawn, 2-px dark gutters). Returns 0 or -1. */
 int gallery_mips_compose(const frame_t panels[GALLERY_MIPS_PANELS], frame_t *out);
 
+/* The first FXL_HAVE_ flag that entry e needs and this build left out (its
+ * name), or NULL: FXL_HAVE_DEPTH for a scene whose image depends on the
+ * depth test (anyscene_needs_depth), then those of its draw settings
+ * (anyscene_missing_feature; for GALLERY_MIPS of every panel;
+ * panel_scene_missing_feature for GALLERY_PANEL).
+ * gallery_render of such an entry is refused by the core: it returns
+ * FXL_ERR_UNSUPPORTED. Every other entry draws the pixels of its golden CRC;
+ * without FXL_HAVE_DEPTH a scene that does not need the depth test is drawn
+ * without a depth buffer. */
+const char *gallery_missing_feature(const gallery_entry_t *e);
+
 /* Render one gallery image the way its golden CRC is defined (settings
- * above). *out is a new frame (frame_free it). Returns FXL_OK, a draw error,
- * or FXL_ERR_NOMEM / FXL_ERR_ARG when the scene, texture or frame cannot be
- * made. For GALLERY_PANEL the image is what the emulated panel shows; chk
- * (may be NULL) receives the panel check, otherwise it is untouched. */
+ * above). *out is a new frame (frame_free it). Returns FXL_OK, a draw error
+ * (FXL_ERR_UNSUPPORTED: gallery_missing_feature), or FXL_ERR_NOMEM /
+ * FXL_ERR_ARG when the scene, texture or frame cannot be made. For
+ * GALLERY_PANEL the image is what the emulated panel shows; chk (may be
+ * NULL) receives the panel check, otherwise it is untouched. */
 fxl_status_t gallery_render(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats,
                             panel_check_t *chk);
 
