@@ -276,7 +276,7 @@ void test_lod_bias_and_per_triangle_mode(void)
  * pixel computable by hand. */
 void test_trilinear_weights_blend_levels_by_lod_fraction(void)
 {
-    TEST_NEEDS(FXL_HAVE_MIPMAP);
+    TEST_NEEDS(FXL_HAVE_MIPMAP && FXL_HAVE_BILINEAR);
     static uint16_t buf[320 * 240];
     static uint16_t chain[64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1];
     static const uint16_t lv[7] = {0x001F, 0x07E0, 0xF800, 0xFFFF, 0x0000, 0x7BEF, 0x1234};

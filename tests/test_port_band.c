@@ -21,6 +21,30 @@ static char msg[256];
 static uint16_t texels[16 * 16];
 static fxl_texture_t tex;
 static fxl_draw_t d_tex, d_flat_red, d_flat_green, d_flat_blue, d_bad;
+#if !FXL_HAVE_GENERIC
+static uint16_t solid_texel[4];
+static fxl_texture_t solid_tex[4];
+#endif
+
+/* Each frame is compared with the same triangles drawn another way by the
+ * same build, so any configuration can run the comparisons with the draws
+ * it has: without FXL_HAVE_DEPTH no depth buffer (painter's order), without
+ * FXL_HAVE_BILINEAR point sampling, without FXL_HAVE_GENERIC flat() below. */
+#define DEPTH_BUF(p) (FXL_HAVE_DEPTH ? (p) : NULL)
+
+/* A flat-colour draw. Untextured draws need FXL_HAVE_GENERIC; without it a
+ * 1x1 RGB565 texture of the colour (slot i) draws the same pixels. */
+static void flat(fxl_draw_t *d, int i)
+{
+#if FXL_HAVE_GENERIC
+    (void)d;
+    (void)i;
+#else
+    solid_texel[i] = d->color;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&solid_tex[i], &solid_texel[i], 1, 1, FXL_TEXFMT_RGB565, 1));
+    d->texture = &solid_tex[i];
+#endif
+}
 
 typedef struct scene {
     fxl_vertex_t v[MAX_TRIS][3];
@@ -58,13 +82,16 @@ void setUp(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 16, 16, FXL_TEXFMT_RGB565, 1));
     fxl_draw_defaults(&d_tex);
     d_tex.texture = &tex;
-    d_tex.filter = FXL_FILTER_BILINEAR;
+    d_tex.filter = FXL_HAVE_BILINEAR ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
     fxl_draw_defaults(&d_flat_red);
     d_flat_red.color = FXL_RGB565(255, 0, 0);
+    flat(&d_flat_red, 0);
     fxl_draw_defaults(&d_flat_green);
     d_flat_green.color = FXL_RGB565(0, 255, 0);
+    flat(&d_flat_green, 1);
     fxl_draw_defaults(&d_flat_blue);
     d_flat_blue.color = FXL_RGB565(0, 0, 255);
+    flat(&d_flat_blue, 2);
     d_flat_blue.depth = 0; /* no depth test: pure painter's order */
     fxl_draw_defaults(&d_bad);
     d_bad.persp = 3; /* not a power of two: the core refuses it */
@@ -142,9 +169,10 @@ static void render_full(const scene_t *s, int w, int h, uint16_t *out, fxl_stats
     TEST_ASSERT_NOT_NULL(depth);
     memset(stats, 0, sizeof(*stats));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, out, w, h, w, FXL_PIXFMT_RGB565));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, depth));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, DEPTH_BUF(depth)));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, CLEAR_COLOR));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+    if (FXL_HAVE_DEPTH)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
     for (i = 0; i < s->count; i++) TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, s->draw[i], s->v[i], stats));
     free(depth);
 }
@@ -186,7 +214,7 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     o->image = (uint16_t *)malloc((size_t)o->w * (size_t)o->h * 2u);
     TEST_ASSERT_TRUE(buf0 && buf1 && depth && o->image);
 
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&band, &panel, buf0, buf1, depth, cfg->band_rows,
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&band, &panel, buf0, buf1, DEPTH_BUF(depth), cfg->band_rows,
                                                 store, MAX_TRIS, bins, bin_cap));
     for (i = 0; i < s->count; i++)
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&band, s->v[i], s->draw[i]));
@@ -412,9 +440,10 @@ void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
     fxl_vertex_t v[3];
     fxl_draw_t d;
     fxl_draw_defaults(&d);
+    flat(&d, 3);
     /* 10 headers + 4 entries: a 3-band triangle fits, the next 3-band one
      * does not, and a later 1-band one must not be binned either (order). */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24,
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
                                                 f->store, 4, f->bins, 14));
     flat_tri(v, 10, 50);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
@@ -477,8 +506,9 @@ void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
     fxl_vertex_t v[3];
     fxl_draw_t d;
     fxl_draw_defaults(&d);
+    flat(&d, 3);
     f->emu.dma_delay = 2;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24,
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
                                                 f->store, 4, f->bins, 64));
     flat_tri(v, 10, 50);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d_bad));

@@ -16,7 +16,8 @@
  *
  * Checks (a finding is any violated one):
  *  1 status: FXL_OK exactly when the case is valid by the documented rules
- *    (raster.h, target.h, texture.h), else one of the applicable errors;
+ *    (raster.h, target.h, texture.h), else one of the applicable errors
+ *    (FXL_ERR_UNSUPPORTED for a feature config.h left out: fz_left_out);
  *    on error no pixel and no depth value changes.
  *  2 memory: canary words before and after the pixel and depth buffers are
  *    intact; textures and palettes end (or start) at a PROT_NONE guard page,
@@ -426,6 +427,45 @@ static int fz_target_valid(const fz_case *c)
     return 1;
 }
 
+/* The first optional feature (fixel/config.h) the draw uses that this build
+ * left out, or NULL: such a draw is FXL_ERR_UNSUPPORTED (raster.h). Always
+ * NULL in the default configuration. The rules are check_draw's in
+ * src/raster.c; a depth buffer is the target's (fz_depth_left_out). */
+static const char *fz_left_out(const fz_case *c)
+{
+    const fxl_draw_t *d = &c->draw;
+    const fxl_texture_t *t = d->texture;
+    (void)d;
+    (void)t;
+#if !FXL_HAVE_AUTO
+    if (d->persp == FXL_PERSP_AUTO)
+        return "FXL_HAVE_AUTO";
+#endif
+#if !FXL_HAVE_BILINEAR
+    if (d->filter == FXL_FILTER_BILINEAR)
+        return "FXL_HAVE_BILINEAR";
+#endif
+#if !FXL_HAVE_GENERIC
+    if (d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT || !t || t->format != FXL_TEXFMT_RGB565 ||
+        t->wrap_u != FXL_WRAP_REPEAT || t->wrap_v != FXL_WRAP_REPEAT || (t->flags & FXL_TEXF_KEY))
+        return "FXL_HAVE_GENERIC";
+#endif
+#if !FXL_HAVE_MIPMAP
+    if (t && d->mip != FXL_MIP_NONE && t->levels > 1u)
+        return "FXL_HAVE_MIPMAP";
+#endif
+    return NULL;
+}
+
+/* Without FXL_HAVE_DEPTH, fxl_target_set_depth refuses a depth buffer; one
+ * put into the struct directly makes a draw that tests or writes depth
+ * FXL_ERR_UNSUPPORTED, except that degenerate and off-clip triangles are
+ * culled before and return FXL_OK (raster.h). Always 0 by default. */
+static int fz_depth_left_out(const fz_case *c)
+{
+    return !FXL_HAVE_DEPTH && c->has_depth && (c->draw.depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE)) != 0;
+}
+
 /* Which errors the documented rules allow for this case (0: must be OK). */
 static uint32_t fz_expected_errors(const fz_case *c)
 {
@@ -457,6 +497,8 @@ static uint32_t fz_expected_errors(const fz_case *c)
     for (i = 0; i < 3; i++)
         if (c->v[i].inv_w == 0)
             e |= FZ_E_RANGE;
+    if (fz_left_out(c))
+        e |= FZ_E_UNSUP;
     return e;
 }
 
@@ -697,6 +739,15 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     if (st_a != st_b)
         FZ_FAIL("nondeterministic status: %s then %s", fxl_status_name(st_a), fxl_status_name(st_b));
     allowed = fz_expected_errors(c);
+    if (allowed == 0 && fz_depth_left_out(c)) {
+        /* refused exactly when the triangle is not culled first */
+        int culled = sa.culled_degenerate + sa.culled_outside != 0;
+        if ((st_a == FXL_OK) != culled)
+            FZ_FAIL("status %s for a %s triangle on a depth buffer this build left out", fxl_status_name(st_a),
+                    culled ? "culled" : "visible");
+        if (st_a != FXL_OK)
+            allowed = FZ_E_UNSUP;
+    }
     if (allowed == 0 && st_a != FXL_OK)
         FZ_FAIL("status %s for a valid case", fxl_status_name(st_a));
     if (allowed != 0 && (st_a == FXL_OK || (fz_status_bit(st_a) & allowed) == 0))
@@ -775,6 +826,8 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
         }
     }
     out->covered = covered;
+    if (fz_depth_left_out(c) && covered)
+        FZ_FAIL("status OK for %u covered pixels on a depth buffer this build left out", (unsigned)covered);
     need_equal = !(c->has_depth && (c->draw.depth & FXL_DEPTH_TEST)) &&
                  !(c->draw.texture && (c->tex.flags & FXL_TEXF_KEY) && c->draw.texenv != FXL_TEXENV_DECAL);
     out->checked_equal = need_equal;
