@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# config_tests.sh - the whole test suite in reduced configurations.
+#
+# config_matrix.sh proves the core compiles in every documented
+# configuration; this proves it behaves there. Each configuration below is
+# built from scratch with the host compiler (-Werror) and runs every CTest
+# test. Tests of a left-out feature report IGNORE with the flag's name
+# (tests/support/test_features.h); test_left_out_features_are_refused checks
+# the API refuses such draws with FXL_ERR_UNSUPPORTED; draws of present
+# features must still match the default build's golden CRCs bit for bit.
+# Between them the configurations leave every FXL_HAVE_* option out at
+# least once, and the specialised walks of three kinds of draw.
+#
+# Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
+# (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
+# About 1.5 minutes a configuration on 2 cores.
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+out="${FXL_CONFIG_TESTS_DIR:-build-config-tests}"
+jobs="${JOBS:-2}"
+
+config_defines() {
+    case "$1" in
+    min) # bench's smallest useful core: point + bilinear, subdivided, RGB565
+        echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_DEPTH FXL_HAVE_AUTO ;;
+    no-bilinear) echo FXL_HAVE_BILINEAR FXL_HAVE_QUAD FXL_HAVE_DEPTH ;;
+    no-mipmap) echo FXL_HAVE_MIPMAP FXL_HAVE_AUTO ;;
+    subset) # specialised code left out: those draws take the generic walk
+        echo FXL_FAST_SWAPPED FXL_FAST_POINT FXL_FAST_MIP ;;
+    *) return 1 ;;
+    esac
+}
+
+names=("$@")
+[ ${#names[@]} -gt 0 ] || names=(min no-bilinear no-mipmap subset)
+status=0
+mkdir -p "$out"
+for name in "${names[@]}"; do
+    if ! defs=$(config_defines "$name"); then
+        echo "config_tests: unknown configuration '$name'" >&2
+        exit 2
+    fi
+    dir="$out/$name"
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    for d in $defs; do printf '#define %s 0\n' "$d"; done >"$dir/config.h"
+    t0=$SECONDS
+    echo "== $name: $(echo $defs | sed 's/ / 0, /g') 0"
+    if ! cmake -S . -B "$dir/build" -DFXL_CONFIG_FILE="$(cd "$dir" && pwd)/config.h" >"$dir/configure.log" 2>&1 ||
+        ! cmake --build "$dir/build" -j "$jobs" >"$dir/build.log" 2>&1; then
+        grep -E 'error|Error' "$dir/build.log" "$dir/configure.log" | head -n 20
+        echo "-- $name: build FAILED (see $dir/build.log)"
+        status=1
+        continue
+    fi
+    # -V keeps every test's Unity output: the IGNORE lines say what this
+    # configuration does not test.
+    if (cd "$dir/build" && ctest -j "$jobs" -V >../ctest.log 2>&1); then
+        result=ok
+    else
+        result=FAILED
+        status=1
+        grep -E ':FAIL' "$dir/ctest.log" | head -n 30
+    fi
+    # Unity summary lines, "N: T Tests F Failures I Ignored" (N: ctest's test
+    # number), less the compat runner's self-test, whose failures are its test.
+    cases=$(awk '/unity_compat\/selftest\.c/ { self[$1] = 1 }
+        $3 == "Tests" && $5 == "Failures" && $7 == "Ignored" { t[$1] = $2; f[$1] = $4; i[$1] = $6 }
+        END { for (n in t) if (!(n in self)) { T += t[n]; F += f[n]; I += i[n] }
+              printf "%d test cases, %d failed, %d ignored", T, F, I }' "$dir/ctest.log")
+    echo "-- $name: $result; $(grep -E 'tests passed' "$dir/ctest.log" | sed 's/^[0-9]*: //'); $cases ($((SECONDS - t0)) s)"
+done
+exit $status
