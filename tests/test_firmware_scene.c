@@ -92,19 +92,6 @@ static void init_app(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fw_app_init(&app));
     app.spi.capture = captured;
     app.spi.capture_cap = sizeof captured;
-#if !FXL_HAVE_DEPTH
-    {
-        /* fw_app_init gives the band renderer a depth band, which this build
-         * refuses. Every scene is one convex mesh with back faces culled or
-         * a single quad: no two of its triangles cover the same pixel, so
-         * it is the same image without depth. */
-        fw_result_t r;
-        TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fw_app_frame(&app, FW_SCENE_FLOOR_POINT, 0, &r));
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&app.band, &app.panel, app.band_a, app.band_b,
-                                                    NULL, FW_BAND_ROWS, app.tris, FW_TRI_CAP,
-                                                    app.bins, FW_BIN_CAP));
-    }
-#endif
 }
 
 /* The FXL_HAVE_ flag that frame i's draw state needs and this build left
@@ -241,7 +228,7 @@ static void test_banded_frame_equals_full_frame_mesh_draw(void)
                                                      FW_WIDTH, FW_HEIGHT, &v));
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, full, FW_WIDTH, FW_HEIGHT, FW_WIDTH,
                                                       FXL_PIXFMT_RGB565_SWAP));
-        if (FXL_HAVE_DEPTH) { /* else no depth band either (init_app) */
+        if (FXL_HAVE_DEPTH) { /* else no depth band either (fw_app_init) */
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, full_depth));
         }
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, v.clear_rgb565));

@@ -107,7 +107,10 @@ static size_t unhex(const char *h, uint8_t *b, size_t cap)
     return n;
 }
 
-static void run_case(fz_case *c, fxl_status_t want, int want_written, const char *what)
+/* want: the status, or ANY_STATUS where fz_run_case's own checks decide
+ * (statuses are <= 0). Returns the status. */
+#define ANY_STATUS 1
+static int run_case(fz_case *c, int want, int want_written, const char *what)
 {
     fz_outcome o;
     char msg[FZ_MSG], m2[FZ_MSG + 120];
@@ -116,9 +119,11 @@ static void run_case(fz_case *c, fxl_status_t want, int want_written, const char
     if (bad)
         fz_print_case(stdout, c);   /* the decoded input, for the record */
     TEST_ASSERT_TRUE_MESSAGE(!bad, m2);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want, o.status, what);
+    if (want != ANY_STATUS)
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, o.status, what);
     if (want_written >= 0)
         TEST_ASSERT_EQUAL_INT_MESSAGE(want_written, (int)o.written, what);
+    return (int)o.status;
 }
 
 void test_fuzz_recorded_inputs_replay_clean(void)
@@ -140,10 +145,11 @@ void test_fuzz_recorded_inputs_replay_clean(void)
             /* A valid case drawing with a feature this build left out is
              * refused and draws nothing (a recorded error is found before
              * the feature checks). With only the depth buffer left out, a
-             * triangle culled first would return FXL_OK: none of these is. */
+             * triangle culled first returns FXL_OK: fz_run_case checks the
+             * status against its culling (replay 4 is culled). */
             snprintf(what, sizeof what, "replay %u (needs %s)", (unsigned)i, need);
-            run_case(&c, FXL_ERR_UNSUPPORTED, 0, what);
-            refused++;
+            if (run_case(&c, fz_left_out(&c) ? FXL_ERR_UNSUPPORTED : ANY_STATUS, 0, what) != FXL_OK)
+                refused++;
         } else {
             run_case(&c, replays[i].status, (int)replays[i].written, what);
         }

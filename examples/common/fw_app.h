@@ -53,7 +53,9 @@ typedef struct fw_app {
     fxl_panel_t panel;
     fxl_band_t band;
     uint16_t band_a[FW_WIDTH * FW_BAND_ROWS], band_b[FW_WIDTH * FW_BAND_ROWS];
-    uint16_t depth[FW_WIDTH * FW_BAND_ROWS];
+#if FXL_HAVE_DEPTH
+    uint16_t depth[FW_WIDTH * FW_BAND_ROWS]; /* no scene needs it, but a game would */
+#endif
     fxl_band_tri_t tris[FW_TRI_CAP];
     fxl_band_bin_t bins[FW_BIN_CAP];
     uint32_t init_crc, init_bytes; /* the panel init sequence on the wire */

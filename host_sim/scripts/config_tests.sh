@@ -25,6 +25,8 @@ config_defines() {
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_DEPTH FXL_HAVE_AUTO ;;
     no-bilinear) echo FXL_HAVE_BILINEAR FXL_HAVE_QUAD FXL_HAVE_DEPTH ;;
     no-mipmap) echo FXL_HAVE_MIPMAP FXL_HAVE_AUTO ;;
+    no-depth) # painter's order: everything else kept
+        echo FXL_HAVE_DEPTH ;;
     subset) # specialised code left out: those draws take the generic walk
         echo FXL_FAST_SWAPPED FXL_FAST_POINT FXL_FAST_MIP ;;
     *) return 1 ;;
@@ -32,7 +34,7 @@ config_defines() {
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min no-bilinear no-mipmap subset)
+[ ${#names[@]} -gt 0 ] || names=(min no-bilinear no-mipmap no-depth subset)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do
