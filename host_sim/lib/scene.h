@@ -167,12 +167,15 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
 
 /* The first FXL_HAVE_ flag that a draw with state *d and texture tex (NULL:
  * untextured; d->texture is not looked at) needs and this build left out,
- * as its name ("FXL_HAVE_BILINEAR"), or NULL when the core draws it. These
- * are the cases where fxl_draw_triangle returns FXL_ERR_UNSUPPORTED
- * (config.h): bilinear, FXL_PERSP_AUTO, mip selection on a texture of more
- * than one level, and (FXL_HAVE_GENERIC) untextured draws, Gouraud,
- * modulate/decal, texel formats other than RGB565, wraps other than repeat,
- * colour key. A depth buffer belongs to the target: anyscene_needs_depth. */
+ * as its name ("FXL_HAVE_BILINEAR"), or NULL when the core draws it, by
+ * check_draw's rules (config.h): bilinear, FXL_PERSP_AUTO, mip selection on
+ * a texture of more than one level, and (FXL_HAVE_GENERIC) untextured
+ * draws, Gouraud, modulate/decal, texel formats other than RGB565, wraps
+ * other than repeat, colour key. Not modelled: without FXL_HAVE_GENERIC
+ * the core also refuses draws that have no specialised walk (a variant an
+ * FXL_FAST_* switch left out, depth test without write or the reverse,
+ * log2 w + log2 h > 16); the scenes here use none of those in the CI
+ * configurations. A depth buffer belongs to the target: anyscene_needs_depth. */
 const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex);
 /* The same for a built scene drawn by anyscene_draw with *d (its own
  * textures, all with mip chains; each part's state for pipeline scenes). */

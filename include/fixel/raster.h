@@ -138,7 +138,7 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw,
 
 /* Texture LOD of a whole triangle as in FXL_LOD_TRIANGLE, q8 levels (LOD =
  * log4(texel area / pixel area), texel area counted at level 0), clamped to
- * [0, 255 * 256]; 0 without FXL_HAVE_MIPMAP. Exposed for tests and tools. */
+ * [-128 * 256, 255 * 256]; 0 without FXL_HAVE_MIPMAP. Exposed for tests and tools. */
 int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3]);
 
 #ifdef __cplusplus
