@@ -11,6 +11,7 @@
 #include <string.h>
 #include "unity.h"
 #include "test_rng.h"
+#include "test_features.h"
 #include "fixel/pipeline.h"
 #include "meshes.h"
 #include "crc32.h"
@@ -731,15 +732,7 @@ static uint32_t draw_wall(double ext, int n, int cull, uint32_t *pixels_out, uin
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, WALL_W, WALL_H, WALL_W, FXL_PIXFMT_RGB565));
     fxl_draw_defaults(&d);
     d.depth = 0;
-#if !FXL_HAVE_GENERIC
-    {
-        /* no untextured draws: an RGB565 repeat texture (coverage is the same) */
-        static const uint16_t white[1] = {0xFFFF};
-        static fxl_texture_t tex;
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, white, 1, 1, FXL_TEXFMT_RGB565, 1));
-        d.texture = &tex;
-    }
-#endif
+    d.texture = test_flat_texture();   /* untextured where the build has untextured draws */
     memset(&st, 0, sizeof st);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, &st));
     *pixels_out = st.pixels;

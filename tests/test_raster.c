@@ -98,14 +98,7 @@ static void flat_draw(fxl_draw_t *d)
     fxl_draw_defaults(d);
     d->depth = 0;
     d->color = 0xFFFF;
-#if !FXL_HAVE_GENERIC
-    {
-        static const uint16_t white[1] = {0xFFFF};
-        static fxl_texture_t tex;
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, white, 1, 1, FXL_TEXFMT_RGB565, 1));
-        d->texture = &tex;
-    }
-#endif
+    d->texture = test_flat_texture();
 }
 
 /* Draw v on a cleared W x H target and compare with ref_covered. Returns
@@ -1316,13 +1309,7 @@ void test_draw_api_errors(void)
     fxl_stats_t st;
     /* the draw each check starts from: untextured, or without
      * FXL_HAVE_GENERIC (no untextured draws) an RGB565 repeat texture */
-    const fxl_texture_t *base = NULL;
-#if !FXL_HAVE_GENERIC
-    static fxl_texture_t rgb;
-    static const uint16_t white[1] = {0xFFFF};
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&rgb, white, 1, 1, FXL_TEXFMT_RGB565, 1));
-    base = &rgb;
-#endif
+    const fxl_texture_t *base = test_flat_texture();
     memset(&st, 0, sizeof st);
     v[0] = vtx(1, 1, 0.5, 0, 0);
     v[1] = vtx(20, 2, 0.5, 1, 0);

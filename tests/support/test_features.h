@@ -10,7 +10,12 @@
 #define FXL_TEST_FEATURES_H
 
 #include "unity.h"
-#include "fixel/config.h"
+#include "fixel/fixel.h"
+
+/* The texture of a flat white draw: NULL (untextured), or without
+ * FXL_HAVE_GENERIC, which untextured draws need, a 1x1 white RGB565 repeat
+ * texture, which covers the same pixels in the same colour. */
+const fxl_texture_t *test_flat_texture(void);
 
 #define TEST_NEEDS(flag)                                                                                   \
     do {                                                                                                   \
