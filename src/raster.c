@@ -79,6 +79,27 @@ static fxl_status_t check_draw(const fxl_draw_t *d)
     return FXL_OK;
 }
 
+/* What this build can draw, from the target and the draw settings alone
+ * (after check_target and check_draw): every triangle drawn with them gets
+ * the same answer, culled ones included. */
+static fxl_status_t check_build(const fxl_target_t *t, const fxl_draw_t *d)
+{
+#if !FXL_HAVE_DEPTH
+    /* fxl_target_set_depth refuses a buffer; this one was put in the struct */
+    if (t->depth && (d->depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE)))
+        return FXL_ERR_UNSUPPORTED;
+#endif
+#if !FXL_HAVE_GENERIC
+    /* no generic walk: a draw needs its specialised one (FXL_FAST_*, depth
+     * test and write together, level 0 of at most 2^16 texels) */
+    if (!fxl__fast_id(t, d, 0))   /* mip-linear draws need FXL_HAVE_MIPMAP */
+        return FXL_ERR_UNSUPPORTED;
+#endif
+    (void)t;
+    (void)d;
+    return FXL_OK;
+}
+
 static fxl_status_t check_target(const fxl_target_t *t)
 {
     const fxl_rect_t *c = &t->clip;
@@ -199,6 +220,19 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 #endif
 }
 
+fxl_status_t fxl_draw_check(const fxl_target_t *target, const fxl_draw_t *draw)
+{
+    fxl_status_t st;
+    if (!target || !draw)
+        return FXL_ERR_ARG;
+    st = check_target(target);
+    if (st == FXL_OK)
+        st = check_draw(draw);
+    if (st == FXL_OK)
+        st = check_build(target, draw);
+    return st;
+}
+
 fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                fxl_stats_t *stats)
 {
@@ -218,12 +252,9 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int64_t det;
     int mid_left, odd = 0;
 
-    if (!target || !draw || !v)
+    if (!v)
         return FXL_ERR_ARG;
-    st = check_target(target);
-    if (st != FXL_OK)
-        return st;
-    st = check_draw(draw);
+    st = fxl_draw_check(target, draw);
     if (st != FXL_OK)
         return st;
     for (i = 0; i < 3; i++)
@@ -273,10 +304,6 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     tri.auto_quad = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
-#if !FXL_HAVE_DEPTH
-    if (target->depth && (tri.depth_test || tri.depth_write))
-        return FXL_ERR_UNSUPPORTED;
-#endif
     tri.swap = target->format == FXL_PIXFMT_RGB565_SWAP;
     tri.has_uv = tri.tex != 0;
     tri.has_color = draw->shade == FXL_SHADE_GOURAUD;
@@ -303,7 +330,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);
-    if (!fn)
+    if (!fn)   /* check_build refused these already; kept against a NULL call */
         return FXL_ERR_UNSUPPORTED;
 #if FXL__FAST_SPANS
     span = fxl__pick_span_fn(&tri, fn);

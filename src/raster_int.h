@@ -216,6 +216,14 @@ static inline uint32_t fxl__seg_coord(uint32_t c, int32_t d, int32_t dd, int32_t
 typedef uint32_t (*fxl__seg_fn)(const fxl__tri_t *tri, const fxl__seg_t *seg);
 /* after fxl__span_setup */
 fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri);
+/* The specialised walk (its variant's number, 1..16) that draws with d on
+ * this target, or 0 where only the generic walk can: RGB565 texture,
+ * repeat on both axes, no key, REPLACE, level 0 of at most 2^16 texels,
+ * depth unused or tested and written, and the variant built (FXL_FAST_*).
+ * From the settings alone, so check_build refuses from it before any
+ * vertex is read (builds without the generic walk). mip_linear: two levels
+ * blended (per triangle). */
+int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear);
 
 /* fxl_draw_triangle with the span loop replaced by `probe` when non-NULL:
  * the measuring hook of the tests and the benchmark (they read the exact

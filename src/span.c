@@ -547,7 +547,7 @@ static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v6
 #endif
 
 /* ---- the fast path ----------------------------------------------------------
- * RGB565, repeat on both axes, no key, REPLACE (fast_id_of). The walk is the
+ * RGB565, repeat on both axes, no key, REPLACE (fxl__fast_id). The walk is the
  * generic one (fxl__draw_span below) with everything that cannot occur
  * there removed; every value is bit-identical to it:
  * - coordinates are modular uint32 (repeat), so coord_diff is the uint32
@@ -1434,26 +1434,26 @@ static const struct {
     TWO(1, 1, 1, tri_z_swap),
 };
 
-static int fast_id_of(const fxl__tri_t *tri)
+int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear)
 {
-    const fxl_draw_t *d = tri->draw;
-    const fxl_texture_t *t = tri->tex;
-    int zmode = fxl__uses_depth(tri);
+    const fxl_texture_t *t = d->texture;
+    const uint32_t both = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+    const int zmode = target->depth && (d->depth & both);
     int id;
 
     if (!(t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
           !(t->flags & FXL_TEXF_KEY) && d->texenv == FXL_TEXENV_REPLACE && t->log2_w + t->log2_h <= 16 &&
-          (!zmode || (tri->depth_test && tri->depth_write))))
+          (!zmode || (d->depth & both) == both)))
         return 0;
-    id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) + (tri->swap ? 4 : 0) +
-         (tri->mip_linear ? 8 : 0);
+    id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) +
+         (target->format == FXL_PIXFMT_RGB565_SWAP ? 4 : 0) + (mip_linear ? 8 : 0);
     return fast_tab[id].seg ? id : 0;
 }
 
 fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
 {
     /* fxl__span_setup found it (0 without texture coordinates, as
-     * fast_id_of gives there) */
+     * fxl__fast_id gives there) */
     int id = tri->fast_id;
     if (id)
         return fast_tab[id].seg;
@@ -1482,7 +1482,7 @@ void fxl__span_setup(fxl__tri_t *tri)
     if (fxl__has_uv(tri)) {
         tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         tri->persp_eb[1] = fxl__persp_eb(tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
-        tri->fast_id = (uint8_t)fast_id_of(tri);
+        tri->fast_id = (uint8_t)fxl__fast_id(tri->target, tri->draw, tri->mip_linear);
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment && tri->nlevels > 1)
             lod_setup(tri);

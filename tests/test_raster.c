@@ -8,6 +8,7 @@
 #include "unity.h"
 #include "test_vertex.h"
 #include "test_features.h"
+#include "left_out.h"
 #include "fixel/fixel.h"
 #include "../src/raster_int.h"
 #include "../src/auto.h"
@@ -362,7 +363,9 @@ void test_no_write_outside_clip_rectangle_canaries(void)
             random_tri(v, (k % 3 == 0) ? 60000.0 : 120.0);   /* some near the q16 limit */
             d.filter = (uint8_t)(FXL_HAVE_BILINEAR ? k & 1 : FXL_FILTER_POINT);   /* the filters this build has */
             d.persp = (int16_t)((k % 4 == 0) ? 0 : (k % 4 == 1 ? 1 : 16));
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            /* refused draws (left_out.h) must leave every canary too */
+            TEST_ASSERT_EQUAL_INT(left_out_feature(&d, &tex, t.format, t.depth != NULL) ? FXL_ERR_UNSUPPORTED : FXL_OK,
+                                  fxl_draw_triangle(&t, &d, v, NULL));
         }
         for (y = 0; y < BH; y++)
             for (x = 0; x < BW; x++) {
@@ -594,6 +597,12 @@ void test_exact_mode_within_one_64th_texel_on_floor_and_cube(void)
     char msg[120];
     for (tw = 64; tw <= 1024; tw *= 16) {
         double e;
+        if (!FXL_HAVE_GENERIC && tw * tw > 65536) {
+            /* level 0 above 2^16 texels has no specialised walk (config.h) */
+            snprintf(msg, sizeof msg, "%d-texel texture not checked: needs FXL_HAVE_GENERIC", tw);
+            TEST_MESSAGE(msg);
+            continue;
+        }
         n = floor_scene(tris);
         e = scene_max_error(tris, n, FXL_PERSP_EXACT, tw);
         snprintf(msg, sizeof msg, "floor, %d-texel texture: max error %.6f texels", tw, e);
@@ -1174,13 +1183,17 @@ void test_row_const_walk_matches_generic(void)
         fxl_draw_defaults(&d);
         d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
         d.persp = persp[pm];
-        if ((bil && !FXL_HAVE_BILINEAR) || (depth && !FXL_HAVE_DEPTH)) {
+        d.texture = &tex[0];
+        if (left_out_feature(&d, &tex[0], swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565, depth) != NULL) {
             /* a variant this build left out: refused where it is asked for */
-            fxl_target_init(&t, fast, W, H, W, FXL_PIXFMT_RGB565);
-            d.texture = &tex[0];
-            TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, depth && !FXL_HAVE_DEPTH
-                                                           ? fxl_target_set_depth(&t, zfast)
-                                                           : fxl_draw_triangle(&t, &d, tris[0], NULL));
+            fxl_target_init(&t, fast, W, H, W, swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565);
+            if (depth && !FXL_HAVE_DEPTH) {
+                TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_target_set_depth(&t, zfast));
+            } else {
+                if (depth)
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zfast));
+                TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_draw_triangle(&t, &d, tris[0], NULL));
+            }
             continue;
         }
         for (k = 0; k < NT; k++) {
@@ -1215,7 +1228,8 @@ void test_row_const_walk_matches_generic(void)
     snprintf(msg, sizeof msg, "%d of 64 variants x lengths x clips checked, %d need features this build lacks",
              compared / NT, 64 - compared / NT);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
+    if (FXL_HAVE_GENERIC) /* then only the features themselves are refused */
+        TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
     (void)m;
     (void)rowc;
 }
@@ -1416,6 +1430,13 @@ void test_depth_buffer_unused_without_test_or_write(void)
         a[i] = b[i] = 0;
         zb[i] = 0;
     }
+    d.depth = FXL_DEPTH_TEST;
+    if (left_out_feature(&d, d.texture, tb.format, 1) != NULL) {
+        /* without the generic walk: no walk tests without writing */
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_draw_check(&tb, &d));
+        TEST_MESSAGE("depth test without write not checked: needs FXL_HAVE_GENERIC");
+        return;
+    }
     for (k = 0; k < 100; k++) {
         fxl_vertex_t v[3];
         random_tri(v, 120.0);
@@ -1431,30 +1452,37 @@ void test_depth_buffer_unused_without_test_or_write(void)
 
 /* Each optional feature either works or, left out by the configuration, is
  * refused with FXL_ERR_UNSUPPORTED and draws nothing: never drawn some
- * other way. Both halves run in the configuration they belong to (the full
- * build checks every draw below returns FXL_OK); CI runs this file in
- * reduced configurations too. */
-static void expect_feature(int have, fxl_target_t *t, const fxl_draw_t *d, const fxl_vertex_t v[3], const char *what)
+ * other way. Which is expected comes from left_out.h (config.h's rules,
+ * not the core's code), so in the full build every draw below must give
+ * pixels; CI runs this file in reduced configurations too. fxl_draw_check
+ * must give the draw's status, and a refused draw is refused for a
+ * zero-area triangle as well (before culling). */
+static void expect_feature(fxl_target_t *t, const fxl_draw_t *d, const fxl_vertex_t v[3], const char *what)
 {
+    const fxl_vertex_t flat[3] = {vtx(1, 1, 0.5, 0, 0), vtx(11, 1, 0.5, 1, 0), vtx(21, 1, 0.5, 2, 0)};
+    const char *need = left_out_feature(d, d->texture, t->format, t->depth != NULL);
     fxl_stats_t st;
-    char msg[120];
+    char msg[160];
     fxl_status_t got;
     memset(&st, 0, sizeof st);
     memset(pix, 0, sizeof pix);
     got = fxl_draw_triangle(t, d, v, &st);
-    snprintf(msg, sizeof msg, "%s: status %d, %lu pixels, with the feature %s", what, (int)got,
-             (unsigned long)st.pixels, have ? "in" : "left out");
-    TEST_ASSERT_EQUAL_INT_MESSAGE(have ? FXL_OK : FXL_ERR_UNSUPPORTED, got, msg);
-    TEST_ASSERT_TRUE_MESSAGE(have ? st.pixels > 0 : st.pixels == 0, msg);
+    snprintf(msg, sizeof msg, "%s: status %d, %lu pixels, %s%s", what, (int)got, (unsigned long)st.pixels,
+             need ? "needs " : "every feature it needs is in", need ? need : "");
+    TEST_ASSERT_EQUAL_INT_MESSAGE(need ? FXL_ERR_UNSUPPORTED : FXL_OK, got, msg);
+    TEST_ASSERT_TRUE_MESSAGE(need ? st.pixels == 0 : st.pixels > 0, msg);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(got, fxl_draw_check(t, d), msg);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(got, fxl_draw_triangle(t, d, flat, NULL), msg);
 }
 
 void test_left_out_features_are_refused(void)
 {
     static uint16_t chain[64 * 64 * 4 / 3 + 8];
+    static uint16_t big[512 * 256];
     static uint16_t zbuf[W * H];
     fxl_target_t t;
     fxl_draw_t d;
-    fxl_texture_t tex, mip, lum;
+    fxl_texture_t tex, mip, lum, wide;
     fxl_vertex_t v[3];
     v[0] = vtx(1, 1, 0.5, 0, 0);
     v[1] = vtx(40, 2, 0.25, 8, 0);
@@ -1463,50 +1491,70 @@ void test_left_out_features_are_refused(void)
     make_texture(&tex);
     fxl_draw_defaults(&d);
     d.texture = &tex;
-    expect_feature(1, &t, &d, v, "point, subdivided, RGB565 repeat (always present)");
+    expect_feature(&t, &d, v, "point, subdivided, RGB565 repeat");
     d.filter = FXL_FILTER_BILINEAR;
-    expect_feature(FXL_HAVE_BILINEAR, &t, &d, v, "FXL_FILTER_BILINEAR");
+    expect_feature(&t, &d, v, "FXL_FILTER_BILINEAR");
     fxl_draw_defaults(&d);
     d.texture = &tex;
     d.persp = FXL_PERSP_AUTO;
-    expect_feature(FXL_HAVE_AUTO, &t, &d, v, "FXL_PERSP_AUTO");
+    expect_feature(&t, &d, v, "FXL_PERSP_AUTO");
     /* A chain of levels: selection needs FXL_HAVE_MIPMAP; FXL_MIP_NONE (level
      * 0) and a one-level texture need nothing. */
     memset(chain, 0x5A, sizeof chain);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&mip, chain, 64, 64, FXL_TEXFMT_RGB565, 7));
     fxl_draw_defaults(&d);
     d.texture = &mip;
-    expect_feature(FXL_HAVE_MIPMAP, &t, &d, v, "FXL_MIP_NEAREST on 7 levels");
+    expect_feature(&t, &d, v, "FXL_MIP_NEAREST on 7 levels");
     d.mip = FXL_MIP_LINEAR;
-    expect_feature(FXL_HAVE_MIPMAP, &t, &d, v, "FXL_MIP_LINEAR on 7 levels");
+    expect_feature(&t, &d, v, "FXL_MIP_LINEAR on 7 levels");
     d.mip = FXL_MIP_NONE;
-    expect_feature(1, &t, &d, v, "FXL_MIP_NONE on 7 levels");
+    expect_feature(&t, &d, v, "FXL_MIP_NONE on 7 levels");
     d.texture = &tex;
     d.mip = FXL_MIP_LINEAR;
-    expect_feature(1, &t, &d, v, "FXL_MIP_LINEAR on one level");
+    expect_feature(&t, &d, v, "FXL_MIP_LINEAR on one level");
     /* The generic walk's kinds of draw */
     fxl_draw_defaults(&d);
-    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "untextured");
+    expect_feature(&t, &d, v, "untextured");
     d.texture = &tex;
     d.texenv = FXL_TEXENV_MODULATE;
-    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_TEXENV_MODULATE");
+    expect_feature(&t, &d, v, "FXL_TEXENV_MODULATE");
     d.texenv = FXL_TEXENV_REPLACE;
     d.shade = FXL_SHADE_GOURAUD;
-    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_SHADE_GOURAUD");
+    expect_feature(&t, &d, v, "FXL_SHADE_GOURAUD");
     d.shade = FXL_SHADE_FLAT;
     tex.wrap_u = FXL_WRAP_CLAMP;
-    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_WRAP_CLAMP");
+    expect_feature(&t, &d, v, "FXL_WRAP_CLAMP");
     tex.wrap_u = FXL_WRAP_REPEAT;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&lum, tex_data, 64, 64, FXL_TEXFMT_L8, 1));
     d.texture = &lum;
-    expect_feature(FXL_HAVE_GENERIC, &t, &d, v, "FXL_TEXFMT_L8");
-    /* The depth buffer is refused where it is attached. */
+    expect_feature(&t, &d, v, "FXL_TEXFMT_L8");
+    /* level 0 above 2^16 texels: only the generic walk */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&wide, big, 512, 256, FXL_TEXFMT_RGB565, 1));
+    d.texture = &wide;
+    expect_feature(&t, &d, v, "512 x 256 texture");
+    /* The specialised walks of each kind of target */
+    d.texture = &tex;
+    d.filter = FXL_FILTER_BILINEAR;
+    expect_feature(&t, &d, v, "bilinear, native target");
+    t.format = FXL_PIXFMT_RGB565_SWAP;
+    expect_feature(&t, &d, v, "bilinear, byte-swapped target");
+    d.filter = FXL_FILTER_POINT;
+    expect_feature(&t, &d, v, "point, byte-swapped target");
+    t.format = FXL_PIXFMT_RGB565;
+    /* The depth buffer is refused where it is attached: by
+     * fxl_target_set_depth, and by the draw for one put in the struct. */
     TEST_ASSERT_EQUAL_INT(FXL_HAVE_DEPTH ? FXL_OK : FXL_ERR_UNSUPPORTED, fxl_target_set_depth(&t, zbuf));
-    if (FXL_HAVE_DEPTH) {
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
-        d.texture = &tex;
-        expect_feature(1, &t, &d, v, "depth test and write");
-    }
+    t.depth = zbuf;
+    memset(zbuf, 0, sizeof zbuf);
+    expect_feature(&t, &d, v, "depth test and write");
+    d.depth = FXL_DEPTH_TEST;
+    memset(zbuf, 0, sizeof zbuf);   /* farthest: every pixel passes */
+    expect_feature(&t, &d, v, "depth test only");
+    d.depth = FXL_DEPTH_WRITE;
+    memset(zbuf, 0, sizeof zbuf);
+    expect_feature(&t, &d, v, "depth write only");
+    d.depth = 0;
+    expect_feature(&t, &d, v, "depth buffer, neither test nor write");
 }
 
 int main(void)

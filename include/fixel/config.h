@@ -59,7 +59,11 @@
 #endif
 
 /* Texel formats other than RGB565, wrap modes other than repeat, colour key,
- * Gouraud colour. Without it the core keeps only the RGB565 repeat fast path. */
+ * Gouraud colour. Without it the core keeps only the specialised walks, and
+ * a draw must suit one: textured, RGB565, repeat on both axes, no colour
+ * key, REPLACE, flat, level 0 of at most 2^16 texels, depth either unused
+ * or tested and written, and a kind of draw its FXL_FAST_* below keep;
+ * anything else is FXL_ERR_UNSUPPORTED (fxl_draw_check tells up front). */
 #ifndef FXL_HAVE_GENERIC
 #define FXL_HAVE_GENERIC 1
 #endif
@@ -123,6 +127,10 @@
 #endif
 #if FXL_HAVE_MIPMAP && !FXL_HAVE_GENERIC
 #error "FXL_HAVE_MIPMAP needs FXL_HAVE_GENERIC (mip sampling runs on the generic span loop)"
+#endif
+#if !FXL_HAVE_GENERIC && (!(FXL_FAST_NATIVE || FXL_FAST_SWAPPED) || !(FXL_FAST_NO_DEPTH || FXL_FAST_DEPTH) || \
+                          !(FXL_FAST_POINT || FXL_FAST_BILINEAR))
+#error "without FXL_HAVE_GENERIC keep a specialised walk of each kind (FXL_FAST_*): this build would draw nothing"
 #endif
 #if (FXL_FAST_DEPTH && !FXL_HAVE_DEPTH) || (FXL_FAST_BILINEAR && !FXL_HAVE_BILINEAR) || \
     (FXL_FAST_MIP && !FXL_HAVE_MIPMAP)

@@ -125,9 +125,19 @@ int32_t fxl_snap_subpx(fxl_q16_t x);
  * (inv_w == 0, persp not allowed, bad budget), FXL_ERR_UNSUPPORTED (a feature
  * compiled out by config.h), or whatever fxl_texture_validate() returns for
  * an invalid texture. Nothing is drawn on error. Degenerate and off-clip
- * triangles return FXL_OK and are counted. */
+ * triangles return FXL_OK and are counted; the errors that do not depend on
+ * the vertices (fxl_draw_check) are returned for them too. */
 fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw,
                                const fxl_vertex_t v[3], fxl_stats_t *stats);
+
+/* The status every fxl_draw_triangle with this target and these settings
+ * gets before its vertices are read: FXL_OK, or the error (FXL_ERR_ARG,
+ * FXL_ERR_UNSUPPORTED, ...) each such triangle returns. Call it once at
+ * start-up to learn whether this build draws what a scene asks for:
+ * FXL_ERR_UNSUPPORTED means a feature config.h left out (bilinear,
+ * FXL_PERSP_AUTO, mip selection on a chain of levels, a depth buffer), or,
+ * without FXL_HAVE_GENERIC, a draw no specialised walk serves (see there). */
+fxl_status_t fxl_draw_check(const fxl_target_t *target, const fxl_draw_t *draw);
 
 /* Draw an indexed list: `count` triangles from idx[3*i .. 3*i+2] into verts.
  * Stops at the first error (which is returned); out-of-range indices are

@@ -18,7 +18,9 @@
  *  1 status: FXL_OK exactly when the case is valid by the documented rules
  *    (raster.h, target.h, texture.h), else one of the applicable errors
  *    (FXL_ERR_UNSUPPORTED for a feature config.h left out: fz_left_out);
- *    on error no pixel and no depth value changes.
+ *    on error no pixel and no depth value changes. fxl_draw_check on the
+ *    same target and draw returns the draw's error, or FXL_OK where only
+ *    the vertices fail (FXL_ERR_RANGE) or nothing does.
  *  2 memory: canary words before and after the pixel and depth buffers are
  *    intact; textures and palettes end (or start) at a PROT_NONE guard page,
  *    so a texel read outside the chain faults.
@@ -47,6 +49,7 @@
 #include <unistd.h>
 
 #include "fixel/fixel.h"
+#include "left_out.h"
 #include "reference.h"
 #include "../../src/raster_int.h"
 
@@ -427,47 +430,12 @@ static int fz_target_valid(const fz_case *c)
     return 1;
 }
 
-/* The first optional feature (fixel/config.h) the draw uses that this build
- * left out, or NULL: such a draw is FXL_ERR_UNSUPPORTED (raster.h). Always
- * NULL in the default configuration. The rules are check_draw's in
- * src/raster.c; a depth buffer is the target's (fz_depth_left_out). Not
- * modelled: without FXL_HAVE_GENERIC the core also refuses draws with no
- * specialised walk (a variant left out by FXL_FAST_*, one depth flag
- * without the other, log2 w + log2 h > 16), so the fuzzer reports those
- * as findings in such configurations; none of them is run by CI. */
+/* The first optional feature (fixel/config.h) the case needs that this
+ * build left out, or NULL (left_out.h): such a draw is FXL_ERR_UNSUPPORTED
+ * for every triangle, culled or not. */
 static const char *fz_left_out(const fz_case *c)
 {
-    const fxl_draw_t *d = &c->draw;
-    const fxl_texture_t *t = d->texture;
-    (void)d;
-    (void)t;
-#if !FXL_HAVE_AUTO
-    if (d->persp == FXL_PERSP_AUTO)
-        return "FXL_HAVE_AUTO";
-#endif
-#if !FXL_HAVE_BILINEAR
-    if (d->filter == FXL_FILTER_BILINEAR)
-        return "FXL_HAVE_BILINEAR";
-#endif
-#if !FXL_HAVE_GENERIC
-    if (d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT || !t || t->format != FXL_TEXFMT_RGB565 ||
-        t->wrap_u != FXL_WRAP_REPEAT || t->wrap_v != FXL_WRAP_REPEAT || (t->flags & FXL_TEXF_KEY))
-        return "FXL_HAVE_GENERIC";
-#endif
-#if !FXL_HAVE_MIPMAP
-    if (t && d->mip != FXL_MIP_NONE && t->levels > 1u)
-        return "FXL_HAVE_MIPMAP";
-#endif
-    return NULL;
-}
-
-/* Without FXL_HAVE_DEPTH, fxl_target_set_depth refuses a depth buffer; one
- * put into the struct directly makes a draw that tests or writes depth
- * FXL_ERR_UNSUPPORTED, except that degenerate and off-clip triangles are
- * culled before and return FXL_OK (raster.h). Always 0 by default. */
-static int fz_depth_left_out(const fz_case *c)
-{
-    return !FXL_HAVE_DEPTH && c->has_depth && (c->draw.depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE)) != 0;
+    return left_out_feature(&c->draw, c->draw.texture, c->format, c->has_depth);
 }
 
 /* Which errors the documented rules allow for this case (0: must be OK). */
@@ -697,7 +665,7 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
 {
     fxl_target_t ta, tb;
     fxl_stats_t sa, sb, sp;
-    fxl_status_t st_a, st_b, st_p;
+    fxl_status_t st_a, st_b, st_p, st_chk;
     uint32_t allowed, written = 0, covered = 0;
     size_t n = (size_t)c->stride * (size_t)c->h, i;
     int32_t row, col;
@@ -743,15 +711,11 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     if (st_a != st_b)
         FZ_FAIL("nondeterministic status: %s then %s", fxl_status_name(st_a), fxl_status_name(st_b));
     allowed = fz_expected_errors(c);
-    if (allowed == 0 && fz_depth_left_out(c)) {
-        /* refused exactly when the triangle is not culled first */
-        int culled = sa.culled_degenerate + sa.culled_outside != 0;
-        if ((st_a == FXL_OK) != culled)
-            FZ_FAIL("status %s for a %s triangle on a depth buffer this build left out", fxl_status_name(st_a),
-                    culled ? "culled" : "visible");
-        if (st_a != FXL_OK)
-            allowed = FZ_E_UNSUP;
-    }
+    /* fxl_draw_check answers for every triangle: its error is the draw's,
+     * and after its FXL_OK only the vertices can fail (FXL_ERR_RANGE) */
+    st_chk = fxl_draw_check(&ta, &c->draw);
+    if (st_chk != FXL_OK ? st_a != st_chk : (st_a != FXL_OK && st_a != FXL_ERR_RANGE))
+        FZ_FAIL("status %s, but fxl_draw_check says %s", fxl_status_name(st_a), fxl_status_name(st_chk));
     if (allowed == 0 && st_a != FXL_OK)
         FZ_FAIL("status %s for a valid case", fxl_status_name(st_a));
     if (allowed != 0 && (st_a == FXL_OK || (fz_status_bit(st_a) & allowed) == 0))
@@ -830,8 +794,6 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
         }
     }
     out->covered = covered;
-    if (fz_depth_left_out(c) && covered)
-        FZ_FAIL("status OK for %u covered pixels on a depth buffer this build left out", (unsigned)covered);
     need_equal = !(c->has_depth && (c->draw.depth & FXL_DEPTH_TEST)) &&
                  !(c->draw.texture && (c->tex.flags & FXL_TEXF_KEY) && c->draw.texenv != FXL_TEXENV_DECAL);
     out->checked_equal = need_equal;

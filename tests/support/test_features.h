@@ -17,6 +17,10 @@
  * texture, which covers the same pixels in the same colour. */
 const fxl_texture_t *test_flat_texture(void);
 
+/* TEST_NEEDS for a draw: `missing` is left_out.h's answer for the draws
+ * the test makes (NULL: all drawn, go on; else IGNORE with that name). */
+void test_needs_draw(const char *missing);
+
 #define TEST_NEEDS(flag)                                                                                   \
     do {                                                                                                   \
         if (!(flag))                                                                                       \

@@ -1,0 +1,68 @@
+/* left_out.h - which draws this build of the core refuses, host side only.
+ *
+ * The tests expect FXL_ERR_UNSUPPORTED for a draw that needs a feature
+ * config.h left out, and the default build's pixels for every other. This
+ * predicate is written from config.h's documented rules, not from the
+ * core's code (raster.c: check_draw, check_build), so the tests compare the
+ * two. Header-only: the libFuzzer target compiles it without the host
+ * library.
+ */
+#ifndef FIXEL_LEFT_OUT_H
+#define FIXEL_LEFT_OUT_H
+
+#include <stddef.h>
+#include "fixel/fixel.h"
+
+/* The first optional feature that a draw with settings d (texture tex, may
+ * be NULL) onto a target of pixel format `format` with (depth_buffer != 0)
+ * or without a depth buffer needs and this build left out, by its config.h
+ * name ("FXL_HAVE_BILINEAR", "FXL_FAST_SWAPPED", ...), or NULL when the core
+ * draws it. Every triangle of such a draw is refused, culled ones included.
+ * Always NULL in the default configuration. */
+static inline const char *left_out_feature(const fxl_draw_t *d, const fxl_texture_t *tex, int32_t format,
+                                           int depth_buffer)
+{
+    const uint32_t both = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+    const int zmode = depth_buffer && (d->depth & both) != 0;
+    (void)tex;
+    (void)format;
+    (void)both;
+    (void)zmode;
+#if !FXL_HAVE_BILINEAR
+    if (d->filter == FXL_FILTER_BILINEAR)
+        return "FXL_HAVE_BILINEAR";
+#endif
+#if !FXL_HAVE_AUTO
+    if (d->persp == FXL_PERSP_AUTO)
+        return "FXL_HAVE_AUTO";
+#endif
+#if !FXL_HAVE_MIPMAP
+    if (d->mip != FXL_MIP_NONE && tex != NULL && tex->levels > 1u)
+        return "FXL_HAVE_MIPMAP";
+#endif
+#if !FXL_HAVE_GENERIC
+    if (tex == NULL || d->shade != FXL_SHADE_FLAT || d->texenv != FXL_TEXENV_REPLACE ||
+        tex->format != FXL_TEXFMT_RGB565 || tex->wrap_u != FXL_WRAP_REPEAT || tex->wrap_v != FXL_WRAP_REPEAT ||
+        (tex->flags & FXL_TEXF_KEY) != 0)
+        return "FXL_HAVE_GENERIC";
+#endif
+#if !FXL_HAVE_DEPTH
+    /* fxl_target_set_depth refuses a buffer; this one was put in the struct */
+    if (zmode)
+        return "FXL_HAVE_DEPTH";
+#endif
+#if !FXL_HAVE_GENERIC
+    /* only the specialised walks: each kind of draw needs its own */
+    if (d->filter == FXL_FILTER_BILINEAR ? !FXL_FAST_BILINEAR : !FXL_FAST_POINT)
+        return d->filter == FXL_FILTER_BILINEAR ? "FXL_FAST_BILINEAR" : "FXL_FAST_POINT";
+    if (zmode ? !FXL_FAST_DEPTH : !FXL_FAST_NO_DEPTH)
+        return zmode ? "FXL_FAST_DEPTH" : "FXL_FAST_NO_DEPTH";
+    if (format == FXL_PIXFMT_RGB565_SWAP ? !FXL_FAST_SWAPPED : !FXL_FAST_NATIVE)
+        return format == FXL_PIXFMT_RGB565_SWAP ? "FXL_FAST_SWAPPED" : "FXL_FAST_NATIVE";
+    if ((zmode && (d->depth & both) != both) || (uint32_t)tex->log2_w + tex->log2_h > 16u)
+        return "FXL_HAVE_GENERIC";
+#endif
+    return NULL;
+}
+
+#endif
