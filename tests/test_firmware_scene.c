@@ -94,14 +94,15 @@ static void init_app(void)
     app.spi.capture_cap = sizeof captured;
 }
 
-/* The FXL_HAVE_ flag that frame i's draw state needs and this build left
- * out (scene.h: draw_missing_feature), or NULL. After init_app. */
+/* The feature that frame i's draw needs and this build left out (scene.h:
+ * draw_missing_feature; the bands are byte-swapped, with a depth band where
+ * the build has depth), or NULL. After init_app. */
 static const char *frame_missing(uint32_t i)
 {
     fw_view_t v;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fw_scene_setup(&app.scenes, fw_frames[i].scene, fw_frames[i].frame,
                                                  FW_WIDTH, FW_HEIGHT, &v));
-    return draw_missing_feature(&v.draw, v.draw.texture);
+    return draw_missing_feature(&v.draw, v.draw.texture, FXL_PIXFMT_RGB565_SWAP, FXL_HAVE_DEPTH);
 }
 
 /* A frame that frame_missing says this build cannot draw: asserts that it

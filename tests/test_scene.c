@@ -501,7 +501,7 @@ static void test_pscene_collected_triangles_draw_the_same_image(void)
         TEST_ASSERT_EQUAL_INT(0, frame_alloc(&b, 320, 240, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH));
         scene_clear_flat(&a.target, 0);
         scene_clear_flat(&b.target, 0);
-        missing = pscene_missing_feature(&s, &d);
+        missing = pscene_missing_feature(&s, &d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
         if (missing != NULL) { /* p_lit without FXL_HAVE_GENERIC: both ways refused */
             snprintf(msg, sizeof(msg), "%s needs %s", pscene_name(i), missing);
             TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_UNSUPPORTED, pscene_draw(&s, &d, &a.target, &st),

@@ -312,14 +312,15 @@ void pscene_part_draw(const pscene_t *s, int i, const fxl_draw_t *base, fxl_draw
     }
 }
 
-const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base)
+const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base, fxl_pixfmt_t format,
+                                   int depth_buffer)
 {
     const char *m = NULL;
     int i;
     for (i = 0; i < s->parts && m == NULL; i++) {
         fxl_draw_t d;
         pscene_part_draw(s, i, base, &d);
-        m = draw_missing_feature(&d, d.texture);
+        m = draw_missing_feature(&d, d.texture, format, depth_buffer);
     }
     return m;
 }

@@ -88,10 +88,11 @@ void pscene_free(pscene_t *s);
  * parts, Gouraud shading and modulate). */
 void pscene_part_draw(const pscene_t *s, int i, const fxl_draw_t *base, fxl_draw_t *out);
 
-/* The first FXL_HAVE_ flag a draw of s with *base needs and this build
- * left out (draw_missing_feature of scene.h on every part's state), or
- * NULL. */
-const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base);
+/* The first feature a draw of s with *base onto a target of that format,
+ * with or without a depth buffer, needs and this build left out
+ * (draw_missing_feature of scene.h on every part's state), or NULL. */
+const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base, fxl_pixfmt_t format,
+                                   int depth_buffer);
 
 /* Draw every part with fxl_mesh_draw (no clear). Stats are added to. */
 fxl_status_t pscene_draw(pscene_t *s, const fxl_draw_t *base, fxl_target_t *t,

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "crc32.h"
+#include "left_out.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -787,29 +788,17 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
 
 /* ---- what a draw needs of the build --------------------------------------- */
 
-const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex)
+const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex, fxl_pixfmt_t format,
+                                 int depth_buffer)
 {
-    if (!FXL_HAVE_BILINEAR && d->filter == FXL_FILTER_BILINEAR) {
-        return "FXL_HAVE_BILINEAR";
-    }
-    if (!FXL_HAVE_AUTO && d->persp == FXL_PERSP_AUTO) {
-        return "FXL_HAVE_AUTO";
-    }
-    if (!FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE && tex != NULL && tex->levels > 1u) {
-        return "FXL_HAVE_MIPMAP";
-    }
-    if (!FXL_HAVE_GENERIC &&
-        (tex == NULL || d->shade != FXL_SHADE_FLAT || d->texenv != FXL_TEXENV_REPLACE ||
-         tex->format != FXL_TEXFMT_RGB565 || tex->wrap_u != FXL_WRAP_REPEAT ||
-         tex->wrap_v != FXL_WRAP_REPEAT || (tex->flags & FXL_TEXF_KEY) != 0)) {
-        return "FXL_HAVE_GENERIC";
-    }
-    return NULL;
+    return left_out_feature(d, tex, (int32_t)format, depth_buffer);
 }
 
-const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d)
+const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d, fxl_pixfmt_t format,
+                                     int depth_buffer)
 {
-    return a->is_pipe ? pscene_missing_feature(&a->p, d) : draw_missing_feature(d, &a->tex.tex);
+    return a->is_pipe ? pscene_missing_feature(&a->p, d, format, depth_buffer)
+                      : draw_missing_feature(d, &a->tex.tex, format, depth_buffer);
 }
 
 int anyscene_needs_depth(const char *name)
@@ -821,7 +810,8 @@ int anyscene_needs_depth(const char *name)
 
 /* anyscene_missing_feature of scene `name` built for the query; NULL when it
  * cannot be built (the render reports that). */
-static const char *named_missing_feature(const char *name, int texture, const fxl_draw_t *d)
+static const char *named_missing_feature(const char *name, int texture, const fxl_draw_t *d,
+                                         fxl_pixfmt_t format, int depth_buffer)
 {
     anyscene_t a;
     const char *m;
@@ -829,7 +819,7 @@ static const char *named_missing_feature(const char *name, int texture, const fx
         SCENE_OK) {
         return NULL;
     }
-    m = anyscene_missing_feature(&a, d);
+    m = anyscene_missing_feature(&a, d, format, depth_buffer);
     anyscene_free(&a);
     return m;
 }
@@ -838,10 +828,14 @@ static const char *named_missing_feature(const char *name, int texture, const fx
 
 const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d)
 {
+    const char *m;
     if (!FXL_HAVE_DEPTH && anyscene_needs_depth(scene)) {
         return "FXL_HAVE_DEPTH";
     }
-    return named_missing_feature(scene, -1, d);
+    /* the bands in the wire's format, and the direct render it is checked
+     * against (native), both with depth where the build has it */
+    m = named_missing_feature(scene, -1, d, fxl_port_wire_format(), FXL_HAVE_DEPTH);
+    return m != NULL ? m : named_missing_feature(scene, -1, d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
 }
 
 fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
@@ -1077,7 +1071,8 @@ const char *gallery_missing_feature(const gallery_entry_t *e)
     if (!FXL_HAVE_DEPTH && anyscene_needs_depth(e->scene)) {
         return "FXL_HAVE_DEPTH";
     }
-    return named_missing_feature(e->scene, e->texture, &d);
+    /* gallery_render's frame: native, with depth where the build has it */
+    return named_missing_feature(e->scene, e->texture, &d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
 }
 
 static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)

@@ -165,21 +165,19 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
 
 /* ---- what a draw needs of the build (fixel/config.h) ---------------------- */
 
-/* The first FXL_HAVE_ flag that a draw with state *d and texture tex (NULL:
- * untextured; d->texture is not looked at) needs and this build left out,
- * as its name ("FXL_HAVE_BILINEAR"), or NULL when the core draws it, by
- * check_draw's rules (config.h): bilinear, FXL_PERSP_AUTO, mip selection on
- * a texture of more than one level, and (FXL_HAVE_GENERIC) untextured
- * draws, Gouraud, modulate/decal, texel formats other than RGB565, wraps
- * other than repeat, colour key. Not modelled: without FXL_HAVE_GENERIC
- * the core also refuses draws that have no specialised walk (a variant an
- * FXL_FAST_* switch left out, depth test without write or the reverse,
- * log2 w + log2 h > 16); the scenes here use none of those in the CI
- * configurations. A depth buffer belongs to the target: anyscene_needs_depth. */
-const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex);
+/* The first optional feature that a draw with state *d and texture tex
+ * (NULL: untextured; d->texture is not looked at) onto a target of that
+ * pixel format, with (depth_buffer != 0) or without a depth buffer, needs
+ * and this build left out, by its config.h name ("FXL_HAVE_BILINEAR",
+ * "FXL_FAST_SWAPPED"), or NULL when the core draws it: left_out.h, written
+ * from config.h's rules. A scene whose image needs a depth buffer:
+ * anyscene_needs_depth. */
+const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex, fxl_pixfmt_t format,
+                                 int depth_buffer);
 /* The same for a built scene drawn by anyscene_draw with *d (its own
  * textures, all with mip chains; each part's state for pipeline scenes). */
-const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d);
+const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d, fxl_pixfmt_t format,
+                                     int depth_buffer);
 /* 1 when the image of scene `name` (either kind, any size) depends on the
  * depth test, i.e. some of its triangles cover the same pixel: small_tris
  * (random triangles in space) and p_cubemap (its cube sphere's split quads
@@ -216,11 +214,12 @@ typedef struct panel_check {
 fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
                                 const char *scene, const fxl_draw_t *d, frame_t *panel_img,
                                 panel_check_t *chk);
-/* The first FXL_HAVE_ flag panel_scene_render of `scene` with *d needs and
- * this build left out, or NULL: FXL_HAVE_DEPTH for a scene whose image
- * depends on the depth test (anyscene_needs_depth), then the draw settings'
- * (anyscene_missing_feature). A render needing a left-out draw setting
- * returns FXL_ERR_UNSUPPORTED. */
+/* The first feature panel_scene_render of `scene` with *d needs and this
+ * build left out, or NULL: FXL_HAVE_DEPTH for a scene whose image depends
+ * on the depth test (anyscene_needs_depth), then the draw settings' on the
+ * bands (the wire's format) and on the direct render (native), each with
+ * depth where the build has it (anyscene_missing_feature). A render needing
+ * a left-out feature returns FXL_ERR_UNSUPPORTED. */
 const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d);
 
 /* ---- the gallery ---------------------------------------------------------- */

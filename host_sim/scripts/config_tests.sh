@@ -9,11 +9,19 @@
 # the API refuses such draws with FXL_ERR_UNSUPPORTED; draws of present
 # features must still match the default build's golden CRCs bit for bit.
 # Between them the configurations leave every FXL_HAVE_* option out at
-# least once, and the specialised walks of three kinds of draw.
+# least once, and the specialised walks of three kinds of draw; three have
+# no generic walk, where a draw without its specialised walk is refused
+# too (tests model the refusals with host_sim/lib/left_out.h). Each also
+# runs fixel-fuzz (FXL_CONFIG_FUZZ_CASES, default 200000 cases), whose
+# status check holds the core to the same model.
+#
+# Not run: a build without the generic walk that cannot draw native RGB565
+# targets (FXL_FAST_NATIVE 0): most tests draw native frames, and there
+# they fail on refusals (docs/porting.md).
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
-# About 1.5 minutes a configuration on 2 cores.
+# About 15 s a configuration on 2 cores.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 out="${FXL_CONFIG_TESTS_DIR:-build-config-tests}"
@@ -29,12 +37,16 @@ config_defines() {
         echo FXL_HAVE_DEPTH ;;
     subset) # specialised code left out: those draws take the generic walk
         echo FXL_FAST_SWAPPED FXL_FAST_POINT FXL_FAST_MIP ;;
+    min-depth) # min with a depth buffer
+        echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_AUTO ;;
+    min-native) # min for a display fed native RGB565 (no byte-swapped walks)
+        echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_DEPTH FXL_HAVE_AUTO FXL_FAST_SWAPPED ;;
     *) return 1 ;;
     esac
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min no-bilinear no-mipmap no-depth subset)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native no-bilinear no-mipmap no-depth subset)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do
@@ -64,12 +76,17 @@ for name in "${names[@]}"; do
         status=1
         grep -E ':FAIL' "$dir/ctest.log" | grep -v 'unity_compat/selftest' | head -n 30
     fi
+    fuzz=$("$dir/build/bin/fixel-fuzz" --cases "${FXL_CONFIG_FUZZ_CASES:-200000}" 2>&1 | tail -n 1)
+    case "$fuzz" in
+    *" 0 finding(s)"*) ;;
+    *) result=FAILED; status=1; echo "$fuzz" ;;
+    esac
     # Unity summary lines, "N: T Tests F Failures I Ignored" (N: ctest's test
     # number), less the compat runner's self-test, whose failures are its test.
     cases=$(awk '/unity_compat\/selftest\.c/ { self[$1] = 1 }
         $3 == "Tests" && $5 == "Failures" && $7 == "Ignored" { t[$1] = $2; f[$1] = $4; i[$1] = $6 }
         END { for (n in t) if (!(n in self)) { T += t[n]; F += f[n]; I += i[n] }
               printf "%d test cases, %d failed, %d ignored", T, F, I }' "$dir/ctest.log")
-    echo "-- $name: $result; $(grep -E 'tests passed' "$dir/ctest.log" | sed 's/^[0-9]*: //'); $cases ($((SECONDS - t0)) s)"
+    echo "-- $name: $result; $(grep -E 'tests passed' "$dir/ctest.log" | sed 's/^[0-9]*: //'); $cases; fuzz: $(echo "$fuzz" | sed -n 's/.*run in [^,]*, \([0-9]* valid\).*\( [0-9]* finding(s)\)$/\1,\2/p') ($((SECONDS - t0)) s)"
 done
 exit $status
