@@ -1234,6 +1234,100 @@ void test_row_const_walk_matches_generic(void)
     (void)rowc;
 }
 
+/* The walk along rows of constant q declines a span whose correction points
+ * fall outside the range its one shift serves (span_fast.h: FXL_T_ROWC
+ * returns 0, having drawn nothing) and the lean walk draws it. These
+ * triangles reach that path: their constant-q row is the top edge at a depth
+ * 10^7 to 10^9 times the far vertex's. Found by a counter at the decline (one
+ * declined span each; 10 in 905,475 random triangles with inv_w from 1 to
+ * 2^32, not a hook the core keeps). Every variant this build has must draw
+ * them as the generic walk does, pixel and depth value. */
+void test_row_const_walk_declined_spans_match_generic(void)
+{
+    static const struct {
+        int lw, lh, persp;
+        fxl_vertex_t v[3];
+    } cases[] = {
+        {1, 6, 8, {{-18234151, 4161680, 1u, -20068, 13380, 0}, {41418381, 4161680, 1u, -1967, 1880, 0},
+                   {-8073391, 20421899, 2427099573u, 41643550, 125737166, 0}}},
+        {8, 0, 32, {{16450791, 1538371, 10u, -93852118, -33495858, 0}, {40452838, 1538371, 10u, 603, -680, 0},
+                    {31608853, 29299344, 1503346949u, 13792, -50012, 0}}},
+        {0, 6, 8, {{11329030, 4292931, 1u, 53712755, 38584277, 0}, {-20480963, 4292931, 1u, 150849701, -127605684, 0},
+                   {3923511, 15621026, 1047668216u, 6363, 527, 0}}},
+        {7, 3, 2, {{23001737, 10320867, 1u, -14571, 15185, 0}, {13558078, 10320867, 1u, -210953, 332201, 0},
+                   {22872887, 17399910, 1614403555u, -188060404, 434582704, 0}}},
+        {0, 6, 32, {{25298293, 7505729, 3u, -150071480, -177734709, 0}, {14370928, 7505729, 3u, 111178714, 49210177, 0},
+                    {2795368, 9833081, 2495497870u, -2942840, -2737389, 0}}},
+        {7, 6, 2, {{12305331, 7241505, 8u, 16609, 20035, 0}, {-13344837, 7241505, 8u, 1402396, 3085048, 0},
+                   {-11233403, 13903103, 2328082652u, 83092818, -33924347, 0}}},
+        {6, 4, 16, {{22944126, 5146317, 2u, 10315, 15004, 0}, {-14310357, 5146317, 2u, 314, -1353, 0},
+                    {1871132, 27055329, 2348976272u, -109915722, 167258605, 0}}},
+        {5, 7, 4, {{8273458, 490186, 45u, 153359, 205229, 0}, {5964771, 490186, 45u, 4375, -4017, 0},
+                   {30763603, 29068120, 3562605630u, -160688530, 251450062, 0}}},
+        {3, 8, 8, {{12053965, 5012194, 1u, 76409651, -64979740, 0}, {15662811, 5012194, 1u, 1140197, 166365, 0},
+                   {38941787, 18733808, 3128880183u, -1632, -2801, 0}}},
+        {5, 4, 16, {{6724783, 12549340, 1u, -8622659, -15753782, 0}, {35115516, 12549340, 1u, 5183, -8243, 0},
+                    {-13799652, 30909720, 4123818727u, 38976848, -20599080, 0}}},
+    };
+    static uint16_t texels[256 * 256];
+    enum { FW = 320, FH = 240 };   /* the frame they were found in */
+    static uint16_t fast[FW * FH], gen[FW * FH], zfast[FW * FH], zgen[FW * FH];
+    char msg[160];
+    size_t c;
+    int i, cfg, drawn = 0, refused = 0;
+    for (i = 0; i < 256 * 256; i++)
+        texels[i] = (uint16_t)(i * 2654435761u >> 16);
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        for (cfg = 0; cfg < 8; cfg++) {
+            const int bil = cfg & 1, depth = (cfg >> 1) & 1, swap = cfg >> 2;
+            const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+            fxl_texture_t tex;
+            fxl_target_t t;
+            fxl_draw_t d;
+            int pass, covered = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 1u << cases[c].lw, 1u << cases[c].lh,
+                                                           FXL_TEXFMT_RGB565, 1));
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.persp = (int16_t)cases[c].persp;
+            d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+            if (!depth)
+                d.depth = 0;
+            if ((depth && !FXL_HAVE_DEPTH) || left_out_feature(&d, &tex, fmt, depth) != NULL) {
+                refused++;   /* checked by test_left_out_features_are_refused */
+                continue;
+            }
+            for (pass = 0; pass < 2; pass++) {
+                uint16_t *px = pass ? gen : fast, *zb = pass ? zgen : zfast;
+                fxl_target_init(&t, px, FW, FH, FW, fmt);
+                fxl_target_clear(&t, 0xDEAD);
+                if (depth) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+                }
+                TEST_ASSERT_EQUAL_INT(FXL_OK, pass ? fxl__draw_triangle_with(&t, &d, cases[c].v, NULL, probe_real_seg)
+                                                   : fxl_draw_triangle(&t, &d, cases[c].v, NULL));
+            }
+            for (i = 0; i < FW * FH; i++) {
+                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+                    snprintf(msg, sizeof msg, "case %d bilinear %d depth %d swap %d pixel (%d,%d): fast %04x/%04x "
+                             "generic %04x/%04x", (int)c, bil, depth, swap, i % FW, i / FW, fast[i], zfast[i], gen[i],
+                             zgen[i]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+                covered += gen[i] != 0xDEAD;
+            }
+            snprintf(msg, sizeof msg, "case %d draws nothing", (int)c);
+            TEST_ASSERT_TRUE_MESSAGE(covered > 0, msg);
+            drawn++;
+        }
+    snprintf(msg, sizeof msg, "%d draws equal to the generic walk's, %d need features this build lacks", drawn,
+             refused);
+    TEST_MESSAGE(msg);
+    if (FXL_HAVE_GENERIC && FXL_HAVE_BILINEAR && FXL_HAVE_DEPTH)
+        TEST_ASSERT_EQUAL_INT(80, drawn);
+}
+
 /* ---- which walk drew a triangle (fxl_stats_t.generic) ------------------------- */
 
 /* A triangle drawn with the given target format, depth buffer and texture
@@ -1578,6 +1672,7 @@ int main(void)
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_row_const_walk_matches_generic);
+    RUN_TEST(test_row_const_walk_declined_spans_match_generic);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_left_out_features_are_refused);
