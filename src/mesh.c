@@ -20,7 +20,10 @@ fxl_status_t fxl_mesh_draw(fxl_pipeline_t *p, fxl_target_t *t, const fxl_draw_t 
                            const fxl_mesh_t *m, fxl_stats_t *stats)
 {
     draw_ctx_t c;
+    fxl_status_t st;
     if (!p || !t || !d || !m) return FXL_ERR_ARG;
+    /* the settings' errors once, before the vertex work */
+    if ((st = fxl_draw_check(t, d)) != FXL_OK) return st;
     c.target = t;
     c.draw = d;
     c.stats = stats;

@@ -740,6 +740,39 @@ static uint32_t draw_wall(double ext, int n, int cull, uint32_t *pixels_out, uin
     return st.drawn;
 }
 
+/* Settings every triangle would be refused for are refused by the mesh
+ * draw before any vertex work, also when the clip planes reject the whole
+ * mesh (which with valid settings is FXL_OK, one triangle culled). */
+static void test_mesh_draw_refuses_bad_settings_before_culling(void)
+{
+    static uint16_t pixels[16 * 16];
+    static const fxl_vec3_t behind[3] = {{0, 0, 3 << 16}, {1 << 16, 0, 3 << 16}, {0, 1 << 16, 3 << 16}};
+    static const uint16_t idx[3] = {0, 1, 2};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_stats_t st;
+    memset(&m, 0, sizeof m);
+    m.pos = behind; m.vert_count = 3; m.idx = idx; m.tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 16, 16));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, 16, 16, 16, FXL_PIXFMT_RGB565));
+    fxl_draw_defaults(&d);
+    d.depth = 0;
+    d.texture = test_flat_texture();
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, &st));
+    TEST_ASSERT_EQUAL_UINT32(1, st.culled_outside);
+    d.persp = 3;   /* not a power of two */
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mesh_draw(&p, &t, &d, &m, &st));
+    TEST_ASSERT_EQUAL_UINT32(0, st.triangles);
+    d.persp = FXL_PERSP_SPAN;
+    t.clip.x1 = 17;   /* edited past the buffer */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mesh_draw(&p, &t, &d, &m, &st));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_check(&t, &d));
+}
+
 static void test_mesh_draw_clipped_wall_covers_each_pixel_once(void)
 {
     uint32_t px, px2, outside, drawn;
@@ -977,6 +1010,7 @@ int main(void)
     RUN_TEST(test_host_meshes_wind_counter_clockwise_toward_normals);
     RUN_TEST(test_cube_mesh_shows_at_most_three_faces);
     RUN_TEST(test_mesh_draw_clipped_wall_covers_each_pixel_once);
+    RUN_TEST(test_mesh_draw_refuses_bad_settings_before_culling);
     RUN_TEST(test_vertex_cache_output_bit_identical);
     RUN_TEST(test_vertex_cache_arguments);
     return UNITY_END();

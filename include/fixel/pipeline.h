@@ -330,7 +330,9 @@ typedef fxl_status_t (*fxl_emit_fn)(void *user, const fxl_vertex_t tri[3]);
  * vertex cache set, writes p->vcache (the pipeline itself is not changed). */
 fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl_emit_fn fn,
                                void *user, fxl_stats_t *stats);
-/* fxl_pipeline_emit into fxl_draw_triangle(t, d, ...). */
+/* fxl_pipeline_emit into fxl_draw_triangle(t, d, ...). A target or draw
+ * setting every triangle would be refused for (fxl_draw_check) is returned
+ * before any vertex is transformed, even when every triangle is culled. */
 fxl_status_t fxl_mesh_draw(fxl_pipeline_t *p, fxl_target_t *t, const fxl_draw_t *d,
                            const fxl_mesh_t *m, fxl_stats_t *stats);
 
