@@ -70,11 +70,6 @@ static fxl_status_t check_draw(const fxl_draw_t *d)
         if (d->mip != FXL_MIP_NONE && d->texture->levels > 1u)
             return FXL_ERR_UNSUPPORTED;
 #endif
-#if !FXL_HAVE_GENERIC
-        if (d->texture->format != FXL_TEXFMT_RGB565 || d->texture->wrap_u != FXL_WRAP_REPEAT ||
-            d->texture->wrap_v != FXL_WRAP_REPEAT || (d->texture->flags & FXL_TEXF_KEY))
-            return FXL_ERR_UNSUPPORTED;
-#endif
     }
     return FXL_OK;
 }
@@ -90,8 +85,9 @@ static fxl_status_t check_build(const fxl_target_t *t, const fxl_draw_t *d)
         return FXL_ERR_UNSUPPORTED;
 #endif
 #if !FXL_HAVE_GENERIC
-    /* no generic walk: a draw needs its specialised one (FXL_FAST_*, depth
-     * test and write together, level 0 of at most 2^16 texels) */
+    /* no generic walk: a draw needs its specialised one (RGB565, repeat, no
+     * key, FXL_FAST_*, depth test and write together, level 0 of at most
+     * 2^16 texels) */
     if (!fxl__fast_id(t, d, 0))   /* mip-linear draws need FXL_HAVE_MIPMAP */
         return FXL_ERR_UNSUPPORTED;
 #endif

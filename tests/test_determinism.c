@@ -102,7 +102,7 @@ void test_determinism_repeat_bands_and_crc_list(void)
             const char *missing;
 
             det_draw_settings(var, &d);
-            missing = draw_missing_feature(&d, &ht.tex, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
+            missing = left_out_feature(&d, &ht.tex, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
             snprintf(msg, sizeof msg, "%s %s", s.name, var->name);
             st = render(&s, &ht.tex, var, full, 0, DET_H);
             if (missing != NULL) { /* never in the default configuration */

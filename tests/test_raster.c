@@ -1139,6 +1139,42 @@ static uint32_t probe_real_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
     return fxl__pick_seg_fn(tri)(tri, s);
 }
 
+/* Draw v with d on a w x h target of format fmt (with a depth buffer when
+ * depth, the clip rectangle clip when not NULL) twice: by the walk the
+ * core picks into fast/zfast, by the generic walk with the same pixel
+ * loops into gen/zgen; fail at the first pixel or depth value that
+ * differs, the message starting with `what`. Returns the pixels drawn. */
+static int draw_fast_and_generic(const fxl_draw_t *d, const fxl_vertex_t v[3], int32_t w, int32_t h,
+                                 fxl_pixfmt_t fmt, int depth, const fxl_rect_t *clip, uint16_t *fast,
+                                 uint16_t *zfast, uint16_t *gen, uint16_t *zgen, const char *what)
+{
+    char msg[200];
+    fxl_target_t t;
+    int pass, i, covered = 0;
+    for (pass = 0; pass < 2; pass++) {
+        uint16_t *px = pass ? gen : fast, *zb = pass ? zgen : zfast;
+        fxl_target_init(&t, px, w, h, w, fmt);
+        fxl_target_clear(&t, 0xDEAD);
+        if (depth) {
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+        }
+        if (clip)
+            fxl_target_set_clip(&t, clip);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, pass ? fxl__draw_triangle_with(&t, d, v, NULL, probe_real_seg)
+                                           : fxl_draw_triangle(&t, d, v, NULL));
+    }
+    for (i = 0; i < w * h; i++) {
+        if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+            snprintf(msg, sizeof msg, "%s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, (int)(i % w),
+                     (int)(i / w), fast[i], zfast[i], gen[i], zgen[i]);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        covered += gen[i] != 0xDEAD;
+    }
+    return covered;
+}
+
 /* Rows of constant q with fixed segment lengths take their own walk
  * (FXL_T_ROWC: the span's 1/q kept, each correction a multiply and a
  * shift): every pixel and depth value equals the generic walk's, for
@@ -1157,7 +1193,7 @@ void test_row_const_walk_matches_generic(void)
     fxl_target_t t;
     fxl_draw_t d;
     char msg[160];
-    int i, k, m, cfg, compared = 0, rowc = 0;
+    int i, k, cfg, compared = 0;
     for (i = 0; i < 256 * 256; i++)
         tex_big[i] = (uint16_t)(i * 2654435761u >> 16);
     for (i = 0; i < 16 * 4; i++)
@@ -1197,31 +1233,11 @@ void test_row_const_walk_matches_generic(void)
             continue;
         }
         for (k = 0; k < NT; k++) {
-            int pass;
             d.texture = &tex[k & 1];
-            for (pass = 0; pass < 2; pass++) {
-                uint16_t *px = pass ? gen : fast, *zb = pass ? zgen : zfast;
-                fxl_target_init(&t, px, W, H, W, swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565);
-                fxl_target_clear(&t, 0xDEAD);
-                if (depth) {
-                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
-                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
-                }
-                if (clip)
-                    fxl_target_set_clip(&t, &cr);
-                probe_last_tri = NULL;
-                probe_row_const_tris = 0;
-                TEST_ASSERT_EQUAL_INT(FXL_OK, pass ? fxl__draw_triangle_with(&t, &d, tris[k], NULL, probe_real_seg)
-                                                   : fxl_draw_triangle(&t, &d, tris[k], NULL));
-            }
-            for (i = 0; i < W * H; i++)
-                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
-                    snprintf(msg, sizeof msg,
-                             "bilinear %d depth %d swap %d persp %d clip %d triangle %d pixel (%d,%d): "
-                             "fast %04x/%04x generic %04x/%04x",
-                             bil, depth, swap, persp[pm], clip, k, i % W, i / W, fast[i], zfast[i], gen[i], zgen[i]);
-                    TEST_FAIL_MESSAGE(msg);
-                }
+            snprintf(msg, sizeof msg, "bilinear %d depth %d swap %d persp %d clip %d triangle %d", bil, depth, swap,
+                     persp[pm], clip, k);
+            draw_fast_and_generic(&d, tris[k], W, H, swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565, depth,
+                                  clip ? &cr : NULL, fast, zfast, gen, zgen, msg);
             compared++;
         }
     }
@@ -1230,8 +1246,6 @@ void test_row_const_walk_matches_generic(void)
     TEST_MESSAGE(msg);
     if (FXL_HAVE_GENERIC) /* then only the features themselves are refused */
         TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
-    (void)m;
-    (void)rowc;
 }
 
 /* The walk along rows of constant q declines a span whose correction points
@@ -1281,10 +1295,9 @@ void test_row_const_walk_declined_spans_match_generic(void)
         for (cfg = 0; cfg < 8; cfg++) {
             const int bil = cfg & 1, depth = (cfg >> 1) & 1, swap = cfg >> 2;
             const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+            int covered;
             fxl_texture_t tex;
-            fxl_target_t t;
             fxl_draw_t d;
-            int pass, covered = 0;
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 1u << cases[c].lw, 1u << cases[c].lh,
                                                            FXL_TEXFMT_RGB565, 1));
             fxl_draw_defaults(&d);
@@ -1293,30 +1306,12 @@ void test_row_const_walk_declined_spans_match_generic(void)
             d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
             if (!depth)
                 d.depth = 0;
-            if ((depth && !FXL_HAVE_DEPTH) || left_out_feature(&d, &tex, fmt, depth) != NULL) {
+            if (left_out_feature(&d, &tex, fmt, depth) != NULL) {
                 refused++;   /* checked by test_left_out_features_are_refused */
                 continue;
             }
-            for (pass = 0; pass < 2; pass++) {
-                uint16_t *px = pass ? gen : fast, *zb = pass ? zgen : zfast;
-                fxl_target_init(&t, px, FW, FH, FW, fmt);
-                fxl_target_clear(&t, 0xDEAD);
-                if (depth) {
-                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
-                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
-                }
-                TEST_ASSERT_EQUAL_INT(FXL_OK, pass ? fxl__draw_triangle_with(&t, &d, cases[c].v, NULL, probe_real_seg)
-                                                   : fxl_draw_triangle(&t, &d, cases[c].v, NULL));
-            }
-            for (i = 0; i < FW * FH; i++) {
-                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
-                    snprintf(msg, sizeof msg, "case %d bilinear %d depth %d swap %d pixel (%d,%d): fast %04x/%04x "
-                             "generic %04x/%04x", (int)c, bil, depth, swap, i % FW, i / FW, fast[i], zfast[i], gen[i],
-                             zgen[i]);
-                    TEST_FAIL_MESSAGE(msg);
-                }
-                covered += gen[i] != 0xDEAD;
-            }
+            snprintf(msg, sizeof msg, "case %d bilinear %d depth %d swap %d", (int)c, bil, depth, swap);
+            covered = draw_fast_and_generic(&d, cases[c].v, FW, FH, fmt, depth, NULL, fast, zfast, gen, zgen, msg);
             snprintf(msg, sizeof msg, "case %d draws nothing", (int)c);
             TEST_ASSERT_TRUE_MESSAGE(covered > 0, msg);
             drawn++;

@@ -320,7 +320,7 @@ const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base, fx
     for (i = 0; i < s->parts && m == NULL; i++) {
         fxl_draw_t d;
         pscene_part_draw(s, i, base, &d);
-        m = draw_missing_feature(&d, d.texture, format, depth_buffer);
+        m = left_out_feature(&d, d.texture, format, depth_buffer);
     }
     return m;
 }

@@ -90,7 +90,7 @@ void pscene_part_draw(const pscene_t *s, int i, const fxl_draw_t *base, fxl_draw
 
 /* The first feature a draw of s with *base onto a target of that format,
  * with or without a depth buffer, needs and this build left out
- * (draw_missing_feature of scene.h on every part's state), or NULL. */
+ * (left_out_feature of left_out.h on every part's state), or NULL. */
 const char *pscene_missing_feature(const pscene_t *s, const fxl_draw_t *base, fxl_pixfmt_t format,
                                    int depth_buffer);
 

@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "crc32.h"
-#include "left_out.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -788,17 +787,11 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
 
 /* ---- what a draw needs of the build --------------------------------------- */
 
-const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex, fxl_pixfmt_t format,
-                                 int depth_buffer)
-{
-    return left_out_feature(d, tex, (int32_t)format, depth_buffer);
-}
-
 const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d, fxl_pixfmt_t format,
                                      int depth_buffer)
 {
     return a->is_pipe ? pscene_missing_feature(&a->p, d, format, depth_buffer)
-                      : draw_missing_feature(d, &a->tex.tex, format, depth_buffer);
+                      : left_out_feature(d, &a->tex.tex, format, depth_buffer);
 }
 
 int anyscene_needs_depth(const char *name)
@@ -808,13 +801,17 @@ int anyscene_needs_depth(const char *name)
            strcmp(name, "p_cubemap") == 0;
 }
 
-/* anyscene_missing_feature of scene `name` built for the query; NULL when it
- * cannot be built (the render reports that). */
+/* FXL_HAVE_DEPTH for a scene whose image needs depth in a build without,
+ * else anyscene_missing_feature of scene `name` built for the query; NULL
+ * when it cannot be built (the render reports that). */
 static const char *named_missing_feature(const char *name, int texture, const fxl_draw_t *d,
                                          fxl_pixfmt_t format, int depth_buffer)
 {
     anyscene_t a;
     const char *m;
+    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(name)) {
+        return "FXL_HAVE_DEPTH";
+    }
     if (anyscene_build(&a, name, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT, texture, 0) !=
         SCENE_OK) {
         return NULL;
@@ -829,9 +826,6 @@ static const char *named_missing_feature(const char *name, int texture, const fx
 const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d)
 {
     const char *m;
-    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(scene)) {
-        return "FXL_HAVE_DEPTH";
-    }
     /* the bands in the wire's format, and the direct render it is checked
      * against (native), both with depth where the build has it */
     m = named_missing_feature(scene, -1, d, fxl_port_wire_format(), FXL_HAVE_DEPTH);
@@ -1067,9 +1061,6 @@ const char *gallery_missing_feature(const gallery_entry_t *e)
     gallery_draw_settings(e, &d);
     if (e->kind == GALLERY_PANEL) {
         return panel_scene_missing_feature(e->scene, &d);
-    }
-    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(e->scene)) {
-        return "FXL_HAVE_DEPTH";
     }
     /* gallery_render's frame: native, with depth where the build has it */
     return named_missing_feature(e->scene, e->texture, &d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);

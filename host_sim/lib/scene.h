@@ -58,6 +58,7 @@
 #include <stdint.h>
 
 #include "fixel/fixel.h"
+#include "left_out.h"
 #include "panel_emu.h"
 #include "pipe_scenes.h"
 #include "textures.h"
@@ -165,17 +166,11 @@ fxl_status_t anyscene_collect(anyscene_t *a, const fxl_draw_t *d,
 
 /* ---- what a draw needs of the build (fixel/config.h) ---------------------- */
 
-/* The first optional feature that a draw with state *d and texture tex
- * (NULL: untextured; d->texture is not looked at) onto a target of that
- * pixel format, with (depth_buffer != 0) or without a depth buffer, needs
- * and this build left out, by its config.h name ("FXL_HAVE_BILINEAR",
- * "FXL_FAST_SWAPPED"), or NULL when the core draws it: left_out.h, written
- * from config.h's rules. A scene whose image needs a depth buffer:
- * anyscene_needs_depth. */
-const char *draw_missing_feature(const fxl_draw_t *d, const fxl_texture_t *tex, fxl_pixfmt_t format,
-                                 int depth_buffer);
-/* The same for a built scene drawn by anyscene_draw with *d (its own
- * textures, all with mip chains; each part's state for pipeline scenes). */
+/* One draw: left_out_feature (left_out.h, included above). A scene whose
+ * image needs a depth buffer: anyscene_needs_depth. */
+/* left_out_feature for a built scene drawn by anyscene_draw with *d (its
+ * own textures, all with mip chains; each part's state for pipeline
+ * scenes) onto a target of that format, with or without a depth buffer. */
 const char *anyscene_missing_feature(const anyscene_t *a, const fxl_draw_t *d, fxl_pixfmt_t format,
                                      int depth_buffer);
 /* 1 when the image of scene `name` (either kind, any size) depends on the
