@@ -34,7 +34,8 @@ void tearDown(void) {}
 static uint16_t full[DET_W * DET_H], again[DET_W * DET_H], banded[DET_W * DET_H];
 static uint16_t depth[DET_W * DET_H];
 
-/* Frame procedure of det_entries.h into rows [y0, y0 + h) of buf. */
+/* Frame procedure of det_entries.h into rows [y0, y0 + h) of buf, native
+ * RGB565 (drawn in the byte order this build draws, left_out.h). */
 static fxl_status_t render(const scene_t *s, const fxl_texture_t *tex, const det_variant_t *var, uint16_t *buf,
                            int32_t y0, int32_t h)
 {
@@ -45,7 +46,7 @@ static fxl_status_t render(const scene_t *s, const fxl_texture_t *tex, const det
 
     det_draw_settings(var, &d);
     d.texture = tex;
-    st = fxl_target_init(&tg, buf + (size_t)y0 * DET_W, DET_W, h, DET_W, FXL_PIXFMT_RGB565);
+    st = fxl_target_init(&tg, buf + (size_t)y0 * DET_W, DET_W, h, DET_W, drawable_rgb565());
     if (st == FXL_OK)
         st = fxl_target_set_origin(&tg, 0, y0);
     if (st == FXL_OK && FXL_HAVE_DEPTH)
@@ -60,6 +61,7 @@ static fxl_status_t render(const scene_t *s, const fxl_texture_t *tex, const det
         if (st != FXL_OK)
             return st;
     }
+    pixels_to_native(buf + (size_t)y0 * DET_W, (size_t)h * DET_W, tg.format);
     return FXL_OK;
 }
 
@@ -102,7 +104,7 @@ void test_determinism_repeat_bands_and_crc_list(void)
             const char *missing;
 
             det_draw_settings(var, &d);
-            missing = left_out_feature(&d, &ht.tex, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
+            missing = left_out_feature(&d, &ht.tex, drawable_rgb565(), FXL_HAVE_DEPTH);
             snprintf(msg, sizeof msg, "%s %s", s.name, var->name);
             st = render(&s, &ht.tex, var, full, 0, DET_H);
             if (missing != NULL) { /* never in the default configuration */

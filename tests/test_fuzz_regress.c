@@ -151,12 +151,13 @@ void test_fuzz_recorded_inputs_replay_clean(void)
     TEST_MESSAGE(counts);
 }
 
-/* A valid 16x16 target, untextured flat draw without depth, full clip. */
+/* A valid 16x16 target (in the RGB565 byte order this build draws),
+ * untextured flat draw without depth, full clip. */
 static void base_case(fz_case *c)
 {
     memset(c, 0, sizeof *c);
     c->w = c->h = c->stride = 16;
-    c->format = FXL_PIXFMT_RGB565;
+    c->format = drawable_rgb565();
     c->clip.x1 = c->clip.y1 = 16;
     fxl_draw_defaults(&c->draw);
     c->draw.depth = 0;

@@ -227,7 +227,7 @@ static uint32_t pixels_without_depth(const char *scene)
     memset(&st, 0, sizeof(st));
     TEST_ASSERT_EQUAL_INT(SCENE_OK, scene_build(scene, 320, 240, &s));
     TEST_ASSERT_EQUAL_INT(0, texture_make(&tex, s.texture));
-    TEST_ASSERT_EQUAL_INT(0, frame_alloc(&f, 320, 240, FXL_PIXFMT_RGB565, 0));
+    TEST_ASSERT_EQUAL_INT(0, frame_alloc(&f, 320, 240, drawable_rgb565(), 0));
     fxl_draw_defaults(&d);
     d.mip = FXL_MIP_NONE;
     d.depth = 0;
@@ -319,9 +319,10 @@ static void render_320(const char *scene, int texture, uint8_t filter, uint8_t m
     TEST_ASSERT_EQUAL_INT(SCENE_OK, anyscene_build(&a, scene, 320, 240, texture, 0));
     /* Without FXL_HAVE_DEPTH, no depth buffer: these scenes draw the same
      * pixels without (scene.h), any other would be refused here. */
-    TEST_ASSERT_EQUAL_INT(0, frame_alloc(f, 320, 240, FXL_PIXFMT_RGB565,
+    TEST_ASSERT_EQUAL_INT(0, frame_alloc(f, 320, 240, drawable_rgb565(),
                                          FXL_HAVE_DEPTH || anyscene_needs_depth(scene)));
     TEST_ASSERT_EQUAL_INT(FXL_OK, anyscene_render(&a, &d, &f->target, NULL));
+    frame_to_native(f);
     anyscene_free(&a);
 }
 

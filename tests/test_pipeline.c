@@ -12,6 +12,7 @@
 #include "unity.h"
 #include "test_rng.h"
 #include "test_features.h"
+#include "left_out.h"
 #include "fixel/pipeline.h"
 #include "meshes.h"
 #include "crc32.h"
@@ -729,7 +730,7 @@ static uint32_t draw_wall(double ext, int n, int cull, uint32_t *pixels_out, uin
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(&p, FXL_ANGLE_DEG(60), dq16(1.5),
                                                                dq16(0.05), 0));
     p.cull = (uint8_t)cull;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, WALL_W, WALL_H, WALL_W, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, WALL_W, WALL_H, WALL_W, drawable_rgb565()));
     fxl_draw_defaults(&d);
     d.depth = 0;
     d.texture = test_flat_texture();   /* untextured where the build has untextured draws */
@@ -756,7 +757,7 @@ static void test_mesh_draw_refuses_bad_settings_before_culling(void)
     memset(&m, 0, sizeof m);
     m.pos = behind; m.vert_count = 3; m.idx = idx; m.tri_count = 1;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 16, 16));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, 16, 16, 16, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, 16, 16, 16, drawable_rgb565()));
     fxl_draw_defaults(&d);
     d.depth = 0;
     d.texture = test_flat_texture();
@@ -884,7 +885,7 @@ static uint32_t vc_draw(int c, fxl_angle_t spin, fxl_vcache_entry_t *cache, uint
     e->n = 0;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, emitted_fn, e, NULL));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 4, 4, FXL_TEXFMT_RGB565, 1));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, VC_W, VC_H, VC_W, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, VC_W, VC_H, VC_W, drawable_rgb565()));
     (void)fxl_target_clear(&t, 0);
     fxl_draw_defaults(&d);
     d.depth = 0;

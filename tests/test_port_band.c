@@ -170,18 +170,20 @@ static void render_full(const scene_t *s, int w, int h, uint16_t *out, fxl_stats
     int i;
     TEST_ASSERT_NOT_NULL(depth);
     memset(stats, 0, sizeof(*stats));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, out, w, h, w, FXL_PIXFMT_RGB565));
+    /* native pixels, drawn in the byte order this build draws */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, out, w, h, w, drawable_rgb565()));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, DEPTH_BUF(depth)));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, CLEAR_COLOR));
     if (FXL_HAVE_DEPTH)
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
     for (i = 0; i < s->count; i++) TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, s->draw[i], s->v[i], stats));
+    pixels_to_native(out, (size_t)w * (size_t)h, t.format);
     free(depth);
 }
 
 /* The scenes' draw states into bands in the wire's format and into the
- * native full frame, each with depth where the build has it: the band
- * tests need both (left_out.h), else they report IGNORE. */
+ * full frame (in drawable_rgb565's order), each with depth where the build
+ * has it: the band tests need both (left_out.h), else they report IGNORE. */
 static void need_band_draws(void)
 {
     const fxl_draw_t *const draws[4] = {&d_tex, &d_flat_red, &d_flat_green, &d_flat_blue};
@@ -190,7 +192,7 @@ static void need_band_draws(void)
     for (i = 0; i < 4 && m == NULL; i++) {
         m = left_out_feature(draws[i], draws[i]->texture, fxl_port_wire_format(), FXL_HAVE_DEPTH);
         if (m == NULL)
-            m = left_out_feature(draws[i], draws[i]->texture, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
+            m = left_out_feature(draws[i], draws[i]->texture, drawable_rgb565(), FXL_HAVE_DEPTH);
     }
     test_needs_draw(m);
 }

@@ -65,4 +65,29 @@ static inline const char *left_out_feature(const fxl_draw_t *d, const fxl_textur
     return NULL;
 }
 
+/* The RGB565 byte order this build draws every kind of draw it keeps in:
+ * native, except in a build with only the byte-swapped walks (an SPI
+ * panel's: no generic walk, FXL_FAST_NATIVE 0). Host code that needs
+ * native pixels but not a native target (coverage, texel and CRC checks)
+ * draws in this order and converts with pixels_to_native: both orders draw
+ * the same colours (test_fast_and_generic_walks_agree, test_span_modes). */
+static inline fxl_pixfmt_t drawable_rgb565(void)
+{
+#if !FXL_HAVE_GENERIC && !FXL_FAST_NATIVE
+    return FXL_PIXFMT_RGB565_SWAP;
+#else
+    return FXL_PIXFMT_RGB565;
+#endif
+}
+
+/* n pixels drawn in format `format` as native RGB565, in place. */
+static inline void pixels_to_native(uint16_t *px, size_t n, fxl_pixfmt_t format)
+{
+    size_t i;
+    if (format != FXL_PIXFMT_RGB565_SWAP)
+        return;
+    for (i = 0; i < n; i++)
+        px[i] = (uint16_t)((px[i] >> 8) | (px[i] << 8));
+}
+
 #endif

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "left_out.h"
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -132,7 +133,7 @@ fxl_status_t metrics_coverage_count(const fxl_vertex_t *tris, int ntri, int32_t 
     if (px == NULL) {
         return FXL_ERR_NOMEM;
     }
-    st = fxl_target_init(&tg, px, width, height, width, FXL_PIXFMT_RGB565);
+    st = fxl_target_init(&tg, px, width, height, width, drawable_rgb565());
     fxl_draw_defaults(&d);
     d.texture = NULL;
 #if !FXL_HAVE_GENERIC

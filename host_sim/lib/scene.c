@@ -554,6 +554,14 @@ int frame_alloc(frame_t *f, int32_t width, int32_t height, fxl_pixfmt_t format, 
     return st;
 }
 
+void frame_to_native(frame_t *f)
+{
+    if (f != NULL && f->pixels != NULL) {
+        pixels_to_native(f->pixels, (size_t)f->target.width * (size_t)f->target.height, f->target.format);
+        f->target.format = FXL_PIXFMT_RGB565;
+    }
+}
+
 void frame_free(frame_t *f)
 {
     if (f != NULL) {
@@ -827,9 +835,10 @@ const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d)
 {
     const char *m;
     /* the bands in the wire's format, and the direct render it is checked
-     * against (native), both with depth where the build has it */
+     * against (in the order this build draws), both with depth where the
+     * build has it */
     m = named_missing_feature(scene, -1, d, fxl_port_wire_format(), FXL_HAVE_DEPTH);
-    return m != NULL ? m : named_missing_feature(scene, -1, d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
+    return m != NULL ? m : named_missing_feature(scene, -1, d, drawable_rgb565(), FXL_HAVE_DEPTH);
 }
 
 fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
@@ -861,7 +870,7 @@ fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
      * here, where the core refuses the buffer (FXL_ERR_UNSUPPORTED). */
     st = (fxl_status_t)frame_alloc(panel_img, w, h, FXL_PIXFMT_RGB565, 0);
     if (st == FXL_OK) {
-        st = (fxl_status_t)frame_alloc(&direct, w, h, FXL_PIXFMT_RGB565,
+        st = (fxl_status_t)frame_alloc(&direct, w, h, drawable_rgb565(),
                                        FXL_HAVE_DEPTH || anyscene_needs_depth(scene));
         if (st != FXL_OK) {
             frame_free(panel_img);
@@ -882,6 +891,7 @@ fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
         if (st == FXL_OK) {
             st = anyscene_draw(&a, d, &direct.target, NULL);
         }
+        frame_to_native(&direct);
         c.panel_crc = fxl_host_crc_target(&panel_img->target);
         c.direct_crc = fxl_host_crc_target(&direct.target);
         for (k = 0; k < n; k++) {
@@ -1062,8 +1072,8 @@ const char *gallery_missing_feature(const gallery_entry_t *e)
     if (e->kind == GALLERY_PANEL) {
         return panel_scene_missing_feature(e->scene, &d);
     }
-    /* gallery_render's frame: native, with depth where the build has it */
-    return named_missing_feature(e->scene, e->texture, &d, FXL_PIXFMT_RGB565, FXL_HAVE_DEPTH);
+    /* render_single's frame, with depth where the build has it */
+    return named_missing_feature(e->scene, e->texture, &d, drawable_rgb565(), FXL_HAVE_DEPTH);
 }
 
 static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_stats_t *stats)
@@ -1078,9 +1088,10 @@ static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_st
     }
     /* With depth, as the goldens were drawn. A build without FXL_HAVE_DEPTH
      * draws a scene that does not need it without a depth buffer (the same
-     * pixels, scene.h); for the others the core refuses the buffer. */
+     * pixels, scene.h); for the others the core refuses the buffer. Drawn
+     * in the byte order the build draws, returned native. */
     st = (fxl_status_t)frame_alloc(out, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT,
-                                   FXL_PIXFMT_RGB565,
+                                   drawable_rgb565(),
                                    FXL_HAVE_DEPTH || anyscene_needs_depth(e->scene));
     if (st != FXL_OK) {
         anyscene_free(&a);
@@ -1088,6 +1099,7 @@ static fxl_status_t render_single(const gallery_entry_t *e, frame_t *out, fxl_st
     }
     gallery_draw_settings(e, &d);
     st = anyscene_render(&a, &d, &out->target, stats);
+    frame_to_native(out);
     anyscene_free(&a);
     return st;
 }

@@ -109,6 +109,9 @@ typedef struct frame {
  * the core's (FXL_ERR_UNSUPPORTED for a depth buffer in a build without
  * FXL_HAVE_DEPTH). */
 int frame_alloc(frame_t *f, int32_t width, int32_t height, fxl_pixfmt_t format, int with_depth);
+/* Convert f's pixels to native RGB565 in place and mark its target so:
+ * for frames drawn in drawable_rgb565()'s order (left_out.h). */
+void frame_to_native(frame_t *f);
 void frame_free(frame_t *f);
 
 /* Clear the clip rectangle to the background, a vertical sky gradient over

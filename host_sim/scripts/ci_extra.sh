@@ -7,9 +7,10 @@
 #   3. host_sim/scripts/config_matrix.sh: the core compiles warning-free in
 #      every documented configuration (FXL_HAVE_*, FXL_FAST_*);
 #      host_sim/scripts/config_tests.sh: the whole test suite and 200,000
-#      fuzz cases pass in seven reduced ones (every FXL_HAVE_* option left
-#      out at least once, three without the generic walk, and point,
-#      swapped and two-level specialisations);
+#      fuzz cases pass in eight reduced ones (every FXL_HAVE_* option left
+#      out at least once, four without the generic walk, one of them an SPI
+#      panel's with byte-swapped walks only, and point, swapped and
+#      two-level specialisations);
 #   4. host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, a build with
 #      specialised code left out, Cortex-M4 and Cortex-M0+ code on qemu where
 #      the tools exist);

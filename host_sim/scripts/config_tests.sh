@@ -9,15 +9,13 @@
 # the API refuses such draws with FXL_ERR_UNSUPPORTED; draws of present
 # features must still match the default build's golden CRCs bit for bit.
 # Between them the configurations leave every FXL_HAVE_* option out at
-# least once, and the specialised walks of three kinds of draw; three have
+# least once, and the specialised walks of four kinds of draw; four have
 # no generic walk, where a draw without its specialised walk is refused
-# too (tests model the refusals with host_sim/lib/left_out.h). Each also
+# too (tests model the refusals with host_sim/lib/left_out.h). One of them,
+# min-panel, draws byte-swapped targets only: tests that check native
+# pixels draw in left_out.h's drawable_rgb565() order and convert. Each also
 # runs fixel-fuzz (FXL_CONFIG_FUZZ_CASES, default 200000 cases), whose
 # status check holds the core to the same model.
-#
-# Not run: a build without the generic walk that cannot draw native RGB565
-# targets (FXL_FAST_NATIVE 0): most tests draw native frames, and there
-# they fail on refusals (docs/porting.md).
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
@@ -41,12 +39,16 @@ config_defines() {
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_AUTO ;;
     min-native) # min for a display fed native RGB565 (no byte-swapped walks)
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_DEPTH FXL_HAVE_AUTO FXL_FAST_SWAPPED ;;
+    min-panel) # min-depth for an SPI panel fed byte-swapped RGB565 (no native
+        # walks): tests that want native pixels draw swapped and convert
+        # (left_out.h, drawable_rgb565)
+        echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_AUTO FXL_FAST_NATIVE ;;
     *) return 1 ;;
     esac
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native no-bilinear no-mipmap no-depth subset)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do

@@ -87,7 +87,8 @@ static void usage(FILE *f)
             "                      checker_hc --filter trilinear)\n"
             "  --size WxH          target size, 1..%d each (default %dx%d)\n"
             "  --depth on|off      16-bit depth buffer (default on)\n"
-            "  --format F          rgb565|rgb565swap (default rgb565)\n"
+            "  --format F          rgb565|rgb565swap (default rgb565; rgb565swap in a build\n"
+            "                      with byte-swapped walks only)\n"
             "  -o FILE.png         write the frame as a PNG (with --animate: a directory)\n"
             "  --crc               print the CRC-32 of the frame's pixel bytes\n"
             "  --animate N         render N frames of the pipeline cube (p_cube) turning\n"
@@ -210,7 +211,7 @@ static int parse_args(int argc, char **argv, options_t *o)
     o->width = SCENE_DEFAULT_WIDTH;
     o->height = SCENE_DEFAULT_HEIGHT;
     o->depth = 1;
-    o->format = FXL_PIXFMT_RGB565;
+    o->format = drawable_rgb565();   /* byte-swapped in a build with those walks only */
     o->band_rows = 24;
     o->texture = -1;
     for (i = 1; i < argc; i++) {
@@ -481,13 +482,14 @@ static int gallery_single(const gallery_entry_t *e, const char *dir, frame_t *ke
     uint32_t crc;
     gallery_draw_settings(e, &d);
     if (job_init(&j, e->scene, e->texture, 0, SCENE_DEFAULT_WIDTH, SCENE_DEFAULT_HEIGHT,
-                 FXL_PIXFMT_RGB565, &d) != 0) {
+                 drawable_rgb565(), &d) != 0) {
         return -1;
     }
     if (job_run(&j, TIMING_RUNS, &s, &ms) != 0) {
         job_free(&j);
         return -1;
     }
+    frame_to_native(&j.frame);   /* the goldens' byte order */
     crc = fxl_host_crc_target(&j.frame.target);
     table_row(e->kind == GALLERY_PIPE ? e->id : e->id, e->persp_name, e->filter_name, &s, ms,
               crc);
