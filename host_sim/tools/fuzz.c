@@ -128,7 +128,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "fixel-fuzz: --replay wants an even number of hex digits (max %d bytes)\n", MAX_BYTES);
             return 2;
         }
-        fz_decode(buf, n, &c);
+        fz_prepare(buf, n, &c);
         bad = fz_run_case(&st, &c, &o, msg);
         printf("replay: %s (status %s, %u written, %u covered)\n", bad ? msg : "ok", fxl_status_name(o.status),
                (unsigned)o.written, (unsigned)o.covered);
@@ -141,7 +141,7 @@ int main(int argc, char **argv)
         fz_case c;
         fz_outcome o;
         case_bytes(seed, i, buf, nbytes);
-        fz_decode(buf, nbytes, &c);
+        fz_prepare(buf, nbytes, &c);
         if (fz_run_case(&st, &c, &o, msg)) {
             findings++;
             printf("FINDING seed %llu case %llu: %s\n  bytes ", (unsigned long long)seed, (unsigned long long)i, msg);

@@ -24,7 +24,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         ready = 1;
     }
-    fz_decode(data, size, &c);
+    fz_prepare(data, size, &c);
     if (fz_run_case(&st, &c, &o, msg)) {
         fprintf(stderr, "fuzz_raster: %s\n", msg);
         fz_print_case(stderr, &c);
