@@ -733,7 +733,7 @@ static uint32_t draw_wall(double ext, int n, int cull, uint32_t *pixels_out, uin
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, WALL_W, WALL_H, WALL_W, drawable_rgb565()));
     fxl_draw_defaults(&d);
     d.depth = 0;
-    d.texture = test_flat_texture();   /* untextured where the build has untextured draws */
+    d.texture = flat_white_texture();   /* untextured where the build has untextured draws */
     memset(&st, 0, sizeof st);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, &st));
     *pixels_out = st.pixels;
@@ -760,7 +760,7 @@ static void test_mesh_draw_refuses_bad_settings_before_culling(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, pixels, 16, 16, 16, drawable_rgb565()));
     fxl_draw_defaults(&d);
     d.depth = 0;
-    d.texture = test_flat_texture();
+    d.texture = flat_white_texture();
     memset(&st, 0, sizeof st);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mesh_draw(&p, &t, &d, &m, &st));
     TEST_ASSERT_EQUAL_UINT32(1, st.culled_outside);

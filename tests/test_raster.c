@@ -99,7 +99,7 @@ static void flat_draw(fxl_draw_t *d)
     fxl_draw_defaults(d);
     d->depth = 0;
     d->color = 0xFFFF;
-    d->texture = test_flat_texture();
+    d->texture = flat_white_texture();
 }
 
 /* Draw v on a cleared W x H target and compare with ref_covered. Returns
@@ -1416,7 +1416,7 @@ void test_draw_api_errors(void)
     fxl_stats_t st;
     /* the draw each check starts from: untextured, or without
      * FXL_HAVE_GENERIC (no untextured draws) an RGB565 repeat texture */
-    const fxl_texture_t *base = test_flat_texture();
+    const fxl_texture_t *base = flat_white_texture();
     memset(&st, 0, sizeof st);
     v[0] = vtx(1, 1, 0.5, 0, 0);
     v[1] = vtx(20, 2, 0.5, 1, 0);

@@ -65,6 +65,21 @@ static inline const char *left_out_feature(const fxl_draw_t *d, const fxl_textur
     return NULL;
 }
 
+/* The texture of a flat white draw any build draws: NULL (untextured)
+ * where it has the generic walk, else a 1x1 white RGB565 repeat texture,
+ * which covers the same pixels in the same colour (coverage never depends
+ * on the texture). */
+static inline const fxl_texture_t *flat_white_texture(void)
+{
+#if FXL_HAVE_GENERIC
+    return NULL;
+#else
+    static const uint16_t white[1] = {0xFFFFu};
+    static fxl_texture_t tex;
+    return fxl_texture_init(&tex, white, 1, 1, FXL_TEXFMT_RGB565, 1) == FXL_OK ? &tex : NULL;
+#endif
+}
+
 /* The RGB565 byte order this build draws every kind of draw it keeps in:
  * native, except in a build with only the byte-swapped walks (an SPI
  * panel's: no generic walk, FXL_FAST_NATIVE 0). Host code that needs

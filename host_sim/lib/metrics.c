@@ -135,16 +135,7 @@ fxl_status_t metrics_coverage_count(const fxl_vertex_t *tris, int ntri, int32_t 
     }
     st = fxl_target_init(&tg, px, width, height, width, drawable_rgb565());
     fxl_draw_defaults(&d);
-    d.texture = NULL;
-#if !FXL_HAVE_GENERIC
-    /* Untextured draws are the generic walk's, left out of this build: a
-     * 1x1 white texture covers the same pixels (coverage never depends on
-     * the texture). */
-    static const uint16_t white = 0xFFFFu;
-    fxl_texture_t tex;
-    if (st == FXL_OK) st = fxl_texture_init(&tex, &white, 1, 1, FXL_TEXFMT_RGB565, 1);
-    d.texture = &tex;
-#endif
+    d.texture = flat_white_texture();   /* untextured, or white where a build has no such draws */
     d.depth = 0;
     d.shade = FXL_SHADE_FLAT;
     d.color = 0xFFFFu;

@@ -12,11 +12,6 @@
 #include "unity.h"
 #include "fixel/fixel.h"
 
-/* The texture of a flat white draw: NULL (untextured), or without
- * FXL_HAVE_GENERIC, which untextured draws need, a 1x1 white RGB565 repeat
- * texture, which covers the same pixels in the same colour. */
-const fxl_texture_t *test_flat_texture(void);
-
 /* TEST_NEEDS for a draw: `missing` is left_out.h's answer for the draws
  * the test makes (NULL: all drawn, go on; else IGNORE with that name). */
 void test_needs_draw(const char *missing);
