@@ -23,6 +23,16 @@ static int64_t floor_px(int64_t q16)
     return q16 >= 0 ? q16 / 65536 : -((-q16 + 65535) / 65536);
 }
 
+/* The target band y0 (rows rows from frame row y0) is drawn into: buffer
+ * buf in the wire's format, the depth band if any. */
+static fxl_status_t band_target(const fxl_band_t *b, uint16_t *buf, int32_t y0, int32_t rows, fxl_target_t *t)
+{
+    fxl_status_t st = fxl_target_init(t, buf, b->width, rows, b->width, fxl_port_wire_format());
+    if (st == FXL_OK) st = fxl_target_set_origin(t, 0, y0);
+    if (st == FXL_OK && b->depth != NULL) st = fxl_target_set_depth(t, b->depth);
+    return st;
+}
+
 static int binning(const fxl_band_t *b)
 {
     return b->bins != NULL && b->bin_cap >= (uint32_t)b->band_count;
@@ -87,10 +97,17 @@ fxl_status_t fxl_band_add(fxl_band_t *b, const fxl_vertex_t v[3], const fxl_draw
      * ceil(ymin - h - 0.5) >= floor(ymin - h) and ymax + h - 0.5 < ymax + h. */
     const int64_t half_step_q16 = (int64_t)1 << (15 - FXL_SUBPIXEL_BITS);
     fxl_band_tri_t *t;
+    fxl_target_t band;
+    fxl_status_t st;
     uint32_t idx, need;
     int32_t k, band0, band1;
     int i;
     if (b == NULL || v == NULL || draw == NULL || b->panel == NULL) return FXL_ERR_ARG;
+    /* Settings every band would refuse are refused here, before anything
+     * is sent (the core would return the same status for each band). */
+    st = band_target(b, b->buf[0], 0, b->band_rows, &band);
+    if (st == FXL_OK) st = fxl_draw_check(&band, draw);
+    if (st != FXL_OK) return st;
     for (i = 0; i < 3; i++)
         if (v[i].inv_w == 0) return FXL_ERR_RANGE;
     ymin = ymax = v[0].y;
@@ -155,7 +172,6 @@ static void draw_one(fxl_target_t *t, const fxl_band_tri_t *tri, fxl_stats_t *st
 fxl_status_t fxl_band_render(fxl_band_t *b, uint16_t clear_rgb565, fxl_stats_t *stats)
 {
     fxl_status_t st, first_err = FXL_OK;
-    const fxl_pixfmt_t fmt = fxl_port_wire_format();
     int32_t k;
     if (b == NULL || b->panel == NULL) return FXL_ERR_ARG;
     /* The band geometry was derived from the panel's rotation at init. */
@@ -175,9 +191,7 @@ fxl_status_t fxl_band_render(fxl_band_t *b, uint16_t clear_rgb565, fxl_stats_t *
         if (st != FXL_OK) return st;
 
         /* Band k is the frame rectangle [0, width) x [y0, y0 + rows). */
-        st = fxl_target_init(&t, b->buf[i], b->width, rows, b->width, fmt);
-        if (st == FXL_OK) st = fxl_target_set_origin(&t, 0, y0);
-        if (st == FXL_OK && b->depth != NULL) st = fxl_target_set_depth(&t, b->depth);
+        st = band_target(b, b->buf[i], y0, rows, &t);
         if (st == FXL_OK) st = fxl_target_clear(&t, clear_rgb565);
         if (st == FXL_OK && b->depth != NULL) st = fxl_target_clear_depth(&t);
         if (st != FXL_OK) {

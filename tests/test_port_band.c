@@ -521,21 +521,50 @@ void test_band_api_errors(void)
     fixture_free(f);
 }
 
-void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
+void test_bad_draw_is_refused_when_added_before_anything_is_sent(void)
 {
-    /* A triangle the core refuses (persp 3) must not leave the panel
-     * mid-RAMWR: every band is still sent, then the error is returned. */
+    /* Settings the core refuses for every band (persp 3) are refused by
+     * fxl_band_add with the core's status, the triangle not stored, also
+     * one entirely off the frame (the core refuses before culling too). */
     band_fixture_t *f = fixture();
     fxl_vertex_t v[3];
     fxl_draw_t d;
     fxl_draw_defaults(&d);
     flat(&d, 3);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
+                                                f->store, 4, f->bins, 64));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_add(&f->band, v, &d_bad));
+    TEST_ASSERT_EQUAL_UINT32(0, f->band.tri_count);
+    flat_tri(v, -900, -800);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_add(&f->band, v, &d_bad));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));   /* off the frame: dropped */
+    TEST_ASSERT_EQUAL_UINT32(0, f->band.tri_count);
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(1, f->band.tri_count);
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)f->emu.transfers);
+    fixture_free(f);
+}
+
+void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
+{
+    /* A draw changed after it was added into one the core refuses (persp
+     * 3) must not leave the panel mid-RAMWR: every band is still sent,
+     * then the error is returned. */
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d, later;
+    fxl_draw_defaults(&d);
+    flat(&d, 3);
+    later = d;
     f->emu.dma_delay = 2;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
                                                 f->store, 4, f->bins, 64));
     flat_tri(v, 10, 50);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d_bad));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &later));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    later.persp = d_bad.persp;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_render(&f->band, 0, NULL));
     TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)f->emu.transfers);
     TEST_ASSERT_EQUAL_UINT32(f->panel.started, f->panel.done);
@@ -592,6 +621,7 @@ int main(void)
     RUN_TEST(test_triangle_is_listed_once_in_each_band_it_touches);
     RUN_TEST(test_triangle_that_does_not_fit_the_bins_starts_the_fallback);
     RUN_TEST(test_band_api_errors);
+    RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);
     RUN_TEST(test_render_scene_helper_matches_full_frame);
     return UNITY_END();

@@ -268,8 +268,11 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
 /* Start a new scene (forget the triangles of the last frame). */
 fxl_status_t fxl_band_begin(fxl_band_t *b);
 /* Add one triangle. Triangles entirely above or below the frame are dropped
- * (FXL_OK). Errors: FXL_ERR_ARG (NULL), FXL_ERR_RANGE (an inv_w of 0),
- * FXL_ERR_NOMEM (triangle store full; the triangle is not added). */
+ * (FXL_OK). Errors (the triangle is not added): FXL_ERR_ARG (NULL), what
+ * fxl_draw_check says of the draw on a band of this frame (in the wire's
+ * format, with the depth band if any: bad settings, or a draw this build
+ * left out), FXL_ERR_RANGE (an inv_w of 0), FXL_ERR_NOMEM (triangle store
+ * full). A draw changed after it was added is checked again per band. */
 fxl_status_t fxl_band_add(fxl_band_t *b, const fxl_vertex_t v[3], const fxl_draw_t *draw);
 /* Render and send the frame: full-frame window, RAMWR, then each band
  * cleared to `clear_rgb565` (native RGB565), its depth cleared, its
