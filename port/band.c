@@ -63,6 +63,13 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     b->bin_cap = bin_cap > 0xFFFFu ? 0xFFFFu : bin_cap;
     b->seq[0] = 0;
     b->seq[1] = 0;
+    {
+        /* A band the core cannot draw into (a depth band in a build without
+         * FXL_HAVE_DEPTH) is refused now rather than mid-frame. */
+        fxl_target_t t;
+        const fxl_status_t st = band_target(b, buf0, 0, band_rows, &t);
+        if (st != FXL_OK) return st;
+    }
     return fxl_band_begin(b);
 }
 

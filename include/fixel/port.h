@@ -261,7 +261,8 @@ typedef struct fxl_band {
  * or width * band_rows entries. bins may be NULL with bin_cap 0 (fallback
  * only). Errors: FXL_ERR_ARG (NULL/zero), FXL_ERR_RANGE (band_rows > height
  * or more than 65535 bands), FXL_ERR_NOMEM (bin_cap below one header per
- * band while non-zero). */
+ * band while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build
+ * without FXL_HAVE_DEPTH). */
 fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, uint16_t *buf1,
                            uint16_t *depth, int32_t band_rows, fxl_band_tri_t *tris,
                            uint32_t tri_cap, fxl_band_bin_t *bins, uint32_t bin_cap);
