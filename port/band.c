@@ -23,8 +23,8 @@ static int64_t floor_px(int64_t q16)
     return q16 >= 0 ? q16 / 65536 : -((-q16 + 65535) / 65536);
 }
 
-/* The target band y0 (rows rows from frame row y0) is drawn into: buffer
- * buf in the wire's format, the depth band if any. */
+/* The target of the band of `rows` rows from frame row y0: buffer buf in
+ * the wire's format, with the depth band if any. */
 static fxl_status_t band_target(const fxl_band_t *b, uint16_t *buf, int32_t y0, int32_t rows, fxl_target_t *t)
 {
     fxl_status_t st = fxl_target_init(t, buf, b->width, rows, b->width, fxl_port_wire_format());
