@@ -551,7 +551,9 @@ void test_bad_draw_is_refused_when_added_before_anything_is_sent(void)
     TEST_ASSERT_EQUAL_UINT32(0, f->band.tri_count);
     flat_tri(v, 10, 50);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
-    TEST_ASSERT_EQUAL_UINT32(1, f->band.tri_count);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));      /* found valid once */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_add(&f->band, v, &d_bad));
+    TEST_ASSERT_EQUAL_UINT32(2, f->band.tri_count);
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)f->emu.transfers);
     fixture_free(f);
 }

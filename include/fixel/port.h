@@ -253,6 +253,7 @@ typedef struct fxl_band {
     fxl_band_bin_t *bins;
     uint32_t bin_cap, bin_used;
     uint32_t first_unbinned; /* triangles from here on use the fallback scan */
+    const fxl_draw_t *checked; /* the draw fxl_band_add last found valid this frame */
     uint32_t seq[2];         /* transfer number that last sent buf[i] (0: none) */
 } fxl_band_t;
 
