@@ -95,14 +95,14 @@ static void init_app(void)
 }
 
 /* The feature that frame i's draw needs and this build left out (scene.h:
- * left_out_feature; the bands are byte-swapped, with a depth band where
+ * left_out_feature; the bands are in the wire's format, with a depth band where
  * the build has depth), or NULL. After init_app. */
 static const char *frame_missing(uint32_t i)
 {
     fw_view_t v;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fw_scene_setup(&app.scenes, fw_frames[i].scene, fw_frames[i].frame,
                                                  FW_WIDTH, FW_HEIGHT, &v));
-    return left_out_feature(&v.draw, v.draw.texture, FXL_PIXFMT_RGB565_SWAP, FXL_HAVE_DEPTH);
+    return left_out_feature(&v.draw, v.draw.texture, fxl_port_wire_format(), FXL_HAVE_DEPTH);
 }
 
 /* A frame that frame_missing says this build cannot draw: asserts that it

@@ -146,13 +146,8 @@ fxl_status_t fw_app_init(fw_app_t *a)
     /* Every scene is one convex mesh with back faces culled, or one quad:
      * the same image with or without depth, so a build without
      * FXL_HAVE_DEPTH draws them without a depth band. */
-#if FXL_HAVE_DEPTH
-    st = fxl_band_init(&a->band, &a->panel, a->band_a, a->band_b, a->depth, FW_BAND_ROWS, a->tris,
+    st = fxl_band_init(&a->band, &a->panel, a->band_a, a->band_b, FW_DEPTH_BAND(a), FW_BAND_ROWS, a->tris,
                        FW_TRI_CAP, a->bins, FW_BIN_CAP);
-#else
-    st = fxl_band_init(&a->band, &a->panel, a->band_a, a->band_b, NULL, FW_BAND_ROWS, a->tris,
-                       FW_TRI_CAP, a->bins, FW_BIN_CAP);
-#endif
     if (st != FXL_OK) return st;
     return fw_scenes_init(&a->scenes);
 }

@@ -61,6 +61,13 @@ typedef struct fw_app {
     uint32_t init_crc, init_bytes; /* the panel init sequence on the wire */
 } fw_app_t;
 
+/* The app's depth band, or NULL in a build without FXL_HAVE_DEPTH. */
+#if FXL_HAVE_DEPTH
+#define FW_DEPTH_BAND(a) ((a)->depth)
+#else
+#define FW_DEPTH_BAND(a) ((uint16_t *)0)
+#endif
+
 /* One frame of the run: scene and frame number. */
 typedef struct fw_frame {
     uint8_t scene, frame;
