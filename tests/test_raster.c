@@ -616,6 +616,37 @@ void test_exact_mode_within_one_64th_texel_on_floor_and_cube(void)
     }
 }
 
+/* The stability issue's precision target: exact mode within 1/64 texel up to
+ * a depth ratio (far w / near w) of 10^3 across one triangle, and within
+ * 1/8 up to 10^4. A quad over the target with 1/w varying along its diagonal
+ * (spans of varying depth), 4 periods of a 64-texel texture, at two inv_w
+ * scales: nearest vertex at 2^32 - 1, and the whole quad 1000 times farther
+ * (every inv_w below 2^22.1: what per-triangle scaling is for). The
+ * stability sweep measures 5e-5 texels across this range (docs/stability.md);
+ * 1/1024 here keeps that claim honest with room for rounding. */
+void test_exact_mode_precision_holds_across_depth_ratios(void)
+{
+    static const double ratios[] = {1, 10, 100, 1000, 3000, 10000};
+    static const double scales[] = {1.0, 1.0 / 1000};
+    tri_t tris[2];
+    char msg[160];
+    size_t i, s;
+    for (s = 0; s < sizeof scales / sizeof scales[0]; s++)
+        for (i = 0; i < sizeof ratios / sizeof ratios[0]; i++) {
+            const double R = ratios[i], k = scales[s], qf = k / R, qm = (qf + k) / 2;
+            const fxl_vertex_t a = vtx(0.25, 0.5, qf, 0, 0), b = vtx(319.75, 0.5, qm, 4, 0);
+            const fxl_vertex_t c = vtx(319.75, 239.5, k, 4, 4), d = vtx(0.25, 239.5, qm, 0, 4);
+            double e;
+            tris[0].v[0] = a; tris[0].v[1] = b; tris[0].v[2] = c;
+            tris[1].v[0] = a; tris[1].v[1] = c; tris[1].v[2] = d;
+            e = scene_max_error(tris, 2, FXL_PERSP_EXACT, 64);
+            snprintf(msg, sizeof msg, "depth ratio %g, inv_w scale %g: max error %.2e texels", R, k, e);
+            TEST_MESSAGE(msg);
+            TEST_ASSERT_TRUE_MESSAGE(e <= (R <= 1000 ? 1.0 / 64 : 1.0 / 8), msg);
+            TEST_ASSERT_TRUE_MESSAGE(e <= 1.0 / 1024, msg);
+        }
+}
+
 /* Subdivision error bound. Along a span u(x) = s(x) / q(x) with s, q linear,
  * u'' = -2 u' q' / q, so linear interpolation over L pixels errs by at most
  * L^2/8 max|u''| = L^2 max|u' q'| / (4 q). u' = (s' q - s q') / q^2 where
@@ -1663,6 +1694,7 @@ int main(void)
     RUN_TEST(test_no_write_outside_clip_rectangle_canaries);
     RUN_TEST(test_band_and_clip_renders_are_bit_identical_to_full_frame);
     RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
+    RUN_TEST(test_exact_mode_precision_holds_across_depth_ratios);
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
