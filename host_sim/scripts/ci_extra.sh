@@ -3,7 +3,9 @@
 #   1. fixel-fuzz, 10^6 cases built with -fsanitize=address,undefined
 #      (two processes, half the cases each; fixed seed, so a finding
 #      reproduces with the printed bytes);
-#   2. the libFuzzer target for 20 s when clang is installed;
+#   2. the stability sweeps (fixel-stability, all of them) in the same
+#      sanitizer build; the libFuzzer target for 20 s when clang is
+#      installed;
 #   3. host_sim/scripts/config_matrix.sh: the core compiles warning-free in
 #      every documented configuration (FXL_HAVE_*, FXL_FAST_*);
 #      host_sim/scripts/config_tests.sh: the whole test suite and 200,000
@@ -47,6 +49,22 @@ wait "$pa" || status=1
 wait "$pb" || status=1
 cat "$adir/fuzz_a.txt" "$adir/fuzz_b.txt"
 echo "-- fuzz: $((SECONDS - t0)) s"
+
+# The stability sweeps (issue 5: nothing in them may crash, trip a
+# sanitizer or write outside the target; fixel-stability checks canaries
+# and statuses itself and exits non-zero) in the sanitizer build.
+echo "== stability sweeps: ASan+UBSan"
+if [ ! -x "$adir/bin/fixel-stability" ]; then
+    cmake --build "$adir" -j "${JOBS:-2}" --target fixel-stability
+fi
+t0=$SECONDS
+if "$adir/bin/fixel-stability" --out "$adir/stability" > "$adir/stability.txt" 2>&1; then
+    tail -n 1 "$adir/stability.txt"
+else
+    tail -n 20 "$adir/stability.txt"
+    status=1
+fi
+echo "-- stability sweeps: $((SECONDS - t0)) s"
 
 if command -v clang >/dev/null 2>&1; then
     echo "== libFuzzer: 20 s"
