@@ -1201,7 +1201,7 @@ static int draw_fast_and_generic(const fxl_draw_t *d, const fxl_vertex_t v[3], i
     }
     for (i = 0; i < w * h; i++) {
         if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
-            snprintf(msg, sizeof msg, "%s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, (int)(i % w),
+            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, (int)(i % w),
                      (int)(i / w), fast[i], zfast[i], gen[i], zgen[i]);
             TEST_FAIL_MESSAGE(msg);
         }
