@@ -24,10 +24,10 @@ static int64_t floor_px(int64_t q16)
 }
 
 /* The target of the band of `rows` rows from frame row y0: buffer buf in
- * the wire's format, with the depth band if any. */
+ * the format the panel's HAL sends as it is, with the depth band if any. */
 static fxl_status_t band_target(const fxl_band_t *b, uint16_t *buf, int32_t y0, int32_t rows, fxl_target_t *t)
 {
-    fxl_status_t st = fxl_target_init(t, buf, b->width, rows, b->width, fxl_port_wire_format());
+    fxl_status_t st = fxl_target_init(t, buf, b->width, rows, b->width, fxl_panel_pixel_format(b->panel));
     if (st == FXL_OK) st = fxl_target_set_origin(t, 0, y0);
     if (st == FXL_OK && b->depth != NULL) st = fxl_target_set_depth(t, b->depth);
     return st;

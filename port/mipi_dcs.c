@@ -85,6 +85,14 @@ fxl_pixfmt_t fxl_port_wire_format(void)
     return first[0] == 0x02u ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
 }
 
+fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel)
+{
+    /* 16-bit frames shift each halfword out MSB first whatever the CPU's
+     * byte order, so the pixel values themselves are what go out. */
+    if (panel != NULL && (panel->hal.flags & FXL_PORT_PIXELS_16BIT)) return FXL_PIXFMT_RGB565;
+    return fxl_port_wire_format();
+}
+
 /* Wait until `done` has reached `seq` (transfer numbers start at 1).
  * Unsigned difference so the counters may wrap after 2^32 transfers. */
 static fxl_status_t wait_for(fxl_panel_t *p, uint32_t seq)

@@ -409,6 +409,31 @@ void test_wire_crc_covers_commands_parameters_and_pixels_in_order(void)
     TEST_ASSERT_EQUAL_HEX32(panel_emu_crc32(0, expect_bytes, sizeof(expect_bytes)), emu.crc);
 }
 
+/* 16-bit SPI frames: pixels() data are native uint16 words, each sent high
+ * byte first, whatever the host's byte order; commands stay bytes. An odd
+ * byte count cannot be 16-bit frames. */
+void test_spi16_sends_each_word_high_byte_first(void)
+{
+    static const uint8_t caset[4] = { 0, 0, 0, 1 };
+    static const uint16_t px[2] = { 0xABCD, 0xF800 };
+    const uint8_t expect_bytes[] = { 0x2A, 0, 0, 0, 1, 0x2C, 0xAB, 0xCD, 0xF8, 0x00 };
+    start_awake();
+    emu.spi16 = 1;
+    panel_emu_hal(&emu, &hal);
+    TEST_ASSERT_EQUAL_UINT32(FXL_PORT_PIXELS_16BIT, hal.flags);
+    panel_emu_clear_log(&emu);
+    raw_cmd(FXL_DCS_CASET, caset, 4);
+    raw_cmd(FXL_DCS_RAMWR, NULL, 0);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, hal.pixels(hal.user, px, sizeof(px)));
+    TEST_ASSERT_EQUAL_INT(0, emu.errors);
+    TEST_ASSERT_EQUAL_UINT32(sizeof(expect_bytes), (uint32_t)emu.wire_bytes);
+    TEST_ASSERT_EQUAL_HEX32(panel_emu_crc32(0, expect_bytes, sizeof(expect_bytes)), emu.crc);
+    TEST_ASSERT_EQUAL_HEX16(0xABCD, ram_at(0, 0));
+    TEST_ASSERT_EQUAL_HEX16(0xF800, ram_at(1, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, hal.pixels(hal.user, px, 3));
+    TEST_ASSERT_EQUAL_INT(1, emu.errors);
+}
+
 void test_lookup_by_name_and_alias(void)
 {
     int w, h;
@@ -442,6 +467,7 @@ int main(void)
     RUN_TEST(test_asleep_or_display_off_shows_black);
     RUN_TEST(test_crc32_check_value_and_agreement_with_host_crc);
     RUN_TEST(test_wire_crc_covers_commands_parameters_and_pixels_in_order);
+    RUN_TEST(test_spi16_sends_each_word_high_byte_first);
     RUN_TEST(test_lookup_by_name_and_alias);
     return UNITY_END();
 }

@@ -61,6 +61,7 @@ typedef struct run_cfg {
     int dma_delay;
     int bins;          /* 0: room for everything, 1: a few entries (fallback), 2: no bin memory */
     int no_wait_hook;
+    int spi16;         /* 1: the HAL sends pixels in 16-bit SPI frames (FXL_PORT_PIXELS_16BIT) */
 } run_cfg_t;
 
 typedef struct run_out {
@@ -72,6 +73,7 @@ typedef struct run_out {
     int protocol_errors;
     unsigned long transfers, waits;
     uint32_t bin_used;
+    uint32_t wire_crc; /* every byte the panel received, commands included */
     char first_error[160];
 } run_out_t;
 
@@ -181,20 +183,46 @@ static void render_full(const scene_t *s, int w, int h, uint16_t *out, fxl_stats
     free(depth);
 }
 
-/* The scenes' draw states into bands in the wire's format and into the
- * full frame (in drawable_rgb565's order), each with depth where the build
- * has it: the band tests need both (left_out.h), else they report IGNORE. */
-static void need_band_draws(void)
+/* The format the band renderer draws in for a HAL sending bytes (spi16 0)
+ * or 16-bit frames (fxl_panel_pixel_format). */
+static fxl_pixfmt_t band_format(int spi16)
+{
+    return spi16 ? FXL_PIXFMT_RGB565 : fxl_port_wire_format();
+}
+
+/* The feature the scenes' draw states need and this build left out, into
+ * bands of format band_fmt or into the full frame (in drawable_rgb565's
+ * order), each with depth where the build has it; NULL when none. */
+static const char *band_draws_missing(fxl_pixfmt_t band_fmt)
 {
     const fxl_draw_t *const draws[4] = {&d_tex, &d_flat_red, &d_flat_green, &d_flat_blue};
     const char *m = NULL;
     int i;
     for (i = 0; i < 4 && m == NULL; i++) {
-        m = left_out_feature(draws[i], draws[i]->texture, fxl_port_wire_format(), FXL_HAVE_DEPTH);
+        m = left_out_feature(draws[i], draws[i]->texture, band_fmt, FXL_HAVE_DEPTH);
         if (m == NULL)
             m = left_out_feature(draws[i], draws[i]->texture, drawable_rgb565(), FXL_HAVE_DEPTH);
     }
-    test_needs_draw(m);
+    return m;
+}
+
+/* The band tests need both (left_out.h), else they report IGNORE. */
+static void need_band_draws_in(fxl_pixfmt_t band_fmt)
+{
+    test_needs_draw(band_draws_missing(band_fmt));
+}
+
+/* The emulated HAL sends bytes, unless only 16-bit frames let this build
+ * draw the bands (native walks only, FXL_FAST_SWAPPED 0): then the tests
+ * run as such a firmware would, with FXL_PORT_PIXELS_16BIT. */
+static int default_spi16(void)
+{
+    return band_draws_missing(band_format(0)) != NULL && band_draws_missing(band_format(1)) == NULL;
+}
+
+static void need_band_draws(void)
+{
+    need_band_draws_in(band_format(default_spi16()));
 }
 
 /* Render through init -> band renderer -> emulated panel. Only asserts on
@@ -215,6 +243,7 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&emu, panel_emu_module_find(cfg->panel), 0));
     emu.panel = &panel;
     emu.dma_delay = cfg->dma_delay;
+    emu.spi16 = cfg->spi16 || default_spi16();
     panel_emu_hal(&emu, &hal);
     if (cfg->no_wait_hook) hal.wait = NULL;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, panel_emu_preset_find(cfg->panel),
@@ -246,6 +275,7 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     memcpy(o->first_error, emu.first_error, sizeof(o->first_error));
     o->transfers = emu.transfers;
     o->waits = emu.waits;
+    o->wire_crc = emu.crc;
     panel_emu_free(&emu);
     free(bins);
     free(buf0);
@@ -260,7 +290,7 @@ static void check_identical(const run_cfg_t *cfg, run_out_t *o)
     fxl_stats_t full_stats;
     uint16_t *full;
     int w, h, x, y;
-    need_band_draws();
+    need_band_draws_in(band_format(cfg->spi16 || default_spi16()));
     TEST_ASSERT_EQUAL_INT(0, panel_emu_frame_size(cfg->panel, cfg->rotation, &w, &h));
     build_scene(&s, w, h);
     full = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
@@ -296,7 +326,7 @@ static void check_identical(const run_cfg_t *cfg, run_out_t *o)
 
 void test_banded_frame_equals_full_frame_render(void)
 {
-    run_cfg_t cfg = { "st7789", 1, 24, 2, 0, 0 };
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 0, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     /* 320x240 in 24-row bands: 10 transfers, no fallback. */
@@ -313,7 +343,7 @@ void test_banded_frame_equals_full_frame_for_any_band_height(void)
     static const int rows[] = { 1, 7, 24, 240 };
     size_t i;
     for (i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
-        run_cfg_t cfg = { "st7789", 1, 24, 1, 0, 0 };
+        run_cfg_t cfg = { "st7789", 1, 24, 1, 0, 0, 0 };
         run_out_t o;
         cfg.band_rows = rows[i];
         check_identical(&cfg, &o);
@@ -329,13 +359,60 @@ void test_banded_frame_equals_full_frame_every_preset_and_rotation(void)
     int r;
     for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
         for (r = 0; r < 4; r++) {
-            run_cfg_t cfg = { NULL, 0, 16, 2, 0, 0 };
+            run_cfg_t cfg = { NULL, 0, 16, 2, 0, 0, 0 };
             run_out_t o;
             cfg.panel = names[i];
             cfg.rotation = r;
             check_identical(&cfg, &o);
         }
     }
+}
+
+/* A HAL that sends pixels in 16-bit SPI frames (FXL_PORT_PIXELS_16BIT): the
+ * band renderer draws native RGB565 bands, and the panel receives the same
+ * bytes as from a byte-stream HAL with byte-swapped bands. Each mode needs
+ * its walks: a build with native walks only (an SPI peripheral in 16-bit
+ * mode) checks the 16-bit mode alone, a build with swapped walks only the
+ * byte mode; the wire bytes are compared where both draw. */
+void test_spi16_frames_draw_native_bands_and_send_the_same_bytes(void)
+{
+    static const run_cfg_t cfgs[] = { { "st7789", 1, 24, 2, 0, 0, 0 }, { "ili9341", 2, 7, 0, 1, 1, 0 } };
+    size_t i;
+    int checked = 0;
+    for (i = 0; i < sizeof(cfgs) / sizeof(cfgs[0]); i++) {
+        const int have_bytes = band_draws_missing(band_format(0)) == NULL;
+        const int have_16 = band_draws_missing(band_format(1)) == NULL;
+        run_cfg_t cfg = cfgs[i];
+        run_out_t bytes, words;
+        if (have_16) {
+            cfg.spi16 = 1;
+            check_identical(&cfg, &words);
+            checked++;
+        }
+        if (have_bytes) {
+            cfg.spi16 = 0;
+            check_identical(&cfg, &bytes);
+            checked++;
+        }
+        if (have_16 && have_bytes) {
+            TEST_ASSERT_EQUAL_HEX32(bytes.wire_crc, words.wire_crc);
+            TEST_ASSERT_EQUAL_UINT32((uint32_t)bytes.transfers, (uint32_t)words.transfers);
+        }
+    }
+    if (checked == 0)
+        need_band_draws_in(band_format(1));
+}
+
+void test_panel_pixel_format_follows_the_hal_flags(void)
+{
+    fxl_panel_t panel;
+    memset(&panel, 0, sizeof(panel));
+    TEST_ASSERT_EQUAL_INT(fxl_port_wire_format(), fxl_panel_pixel_format(NULL));
+    TEST_ASSERT_EQUAL_INT(fxl_port_wire_format(), fxl_panel_pixel_format(&panel));
+    panel.hal.flags = FXL_PORT_PIXELS_SYNC;
+    TEST_ASSERT_EQUAL_INT(fxl_port_wire_format(), fxl_panel_pixel_format(&panel));
+    panel.hal.flags = FXL_PORT_PIXELS_16BIT | FXL_PORT_PIXELS_SYNC;
+    TEST_ASSERT_EQUAL_INT(FXL_PIXFMT_RGB565, fxl_panel_pixel_format(&panel));
 }
 
 void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
@@ -348,7 +425,7 @@ void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
     static const int delays[] = { 0, 1, 5, 50 };
     size_t i;
     for (i = 0; i < sizeof(delays) / sizeof(delays[0]); i++) {
-        run_cfg_t cfg = { "st7789", 1, 24, 0, 0, 0 };
+        run_cfg_t cfg = { "st7789", 1, 24, 0, 0, 0, 0 };
         run_out_t o;
         cfg.dma_delay = delays[i];
         check_identical(&cfg, &o);
@@ -358,7 +435,7 @@ void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
 
 void test_without_wait_hook_the_driver_spins_on_the_completion_counter(void)
 {
-    run_cfg_t cfg = { "ili9341", 0, 32, 0, 0, 1 };
+    run_cfg_t cfg = { "ili9341", 0, 32, 0, 0, 1, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)o.waits);
@@ -366,7 +443,7 @@ void test_without_wait_hook_the_driver_spins_on_the_completion_counter(void)
 
 void test_bin_budget_exceeded_falls_back_with_identical_image(void)
 {
-    run_cfg_t cfg = { "st7789", 1, 24, 2, 1, 0 };
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 1, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     TEST_ASSERT_TRUE(o.overflowed);
@@ -374,7 +451,7 @@ void test_bin_budget_exceeded_falls_back_with_identical_image(void)
 
 void test_no_bin_memory_scans_every_triangle_with_identical_image(void)
 {
-    run_cfg_t cfg = { "st7789", 3, 24, 2, 2, 0 };
+    run_cfg_t cfg = { "st7789", 3, 24, 2, 2, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     TEST_ASSERT_TRUE(o.overflowed);
@@ -398,6 +475,7 @@ static band_fixture_t *fixture(void)
     TEST_ASSERT_NOT_NULL(f);
     TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&f->emu, panel_emu_module_find("st7789"), 0));
     f->emu.panel = &f->panel;
+    f->emu.spi16 = default_spi16();
     panel_emu_hal(&f->emu, &f->hal);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&f->panel, &f->hal, &fxl_st7789_240x320, 1));
     return f;
@@ -593,7 +671,7 @@ void test_render_scene_helper_matches_full_frame(void)
     fxl_stats_t full_stats;
     uint16_t *full, *out;
     int i, w, h;
-    need_band_draws();
+    need_band_draws_in(band_format(0)); /* its HAL sends bytes */
     TEST_ASSERT_EQUAL_INT(0, panel_emu_frame_size("st7789-135x240", 1, &w, &h));
     build_scene(&s, w, h);
     for (i = 0; i < s.count; i++) {
@@ -626,6 +704,8 @@ int main(void)
     RUN_TEST(test_banded_frame_equals_full_frame_render);
     RUN_TEST(test_banded_frame_equals_full_frame_for_any_band_height);
     RUN_TEST(test_banded_frame_equals_full_frame_every_preset_and_rotation);
+    RUN_TEST(test_spi16_frames_draw_native_bands_and_send_the_same_bytes);
+    RUN_TEST(test_panel_pixel_format_follows_the_hal_flags);
     RUN_TEST(test_late_dma_completion_never_lets_a_buffer_be_reused_early);
     RUN_TEST(test_without_wait_hook_the_driver_spins_on_the_completion_counter);
     RUN_TEST(test_bin_budget_exceeded_falls_back_with_identical_image);

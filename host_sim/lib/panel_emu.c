@@ -234,7 +234,21 @@ static void complete(panel_emu_t *e)
     }
     /* The controller gets what the buffer holds when the DMA reads it; we
      * read it at the last moment, so any early reuse also shows in the image. */
-    pixel_bytes(e, x->data, x->bytes);
+    if (e->spi16) {
+        /* 16-bit frames: each word's high byte goes out first */
+        size_t i;
+        if (x->bytes & 1u) fail(e, "transfer %lu: %zu bytes in 16-bit frames", e->transfers, x->bytes);
+        for (i = 0; i + 1 < x->bytes; i += 2) {
+            uint16_t w;
+            uint8_t be[2];
+            memcpy(&w, x->data + i, 2);
+            be[0] = (uint8_t)(w >> 8);
+            be[1] = (uint8_t)w;
+            pixel_bytes(e, be, 2);
+        }
+    } else {
+        pixel_bytes(e, x->data, x->bytes);
+    }
     e->in_flight = 0;
     e->completions++;
     if (e->panel != NULL) fxl_port_transfer_done(e->panel);
@@ -404,6 +418,7 @@ void panel_emu_hal(panel_emu_t *e, fxl_port_hal_t *hal)
     hal->delay_ms = cb_delay;
     hal->wait = cb_wait;
     hal->user = e;
+    hal->flags = e->spi16 ? FXL_PORT_PIXELS_16BIT : 0u;
 }
 
 void panel_emu_glass(const panel_emu_t *e, uint16_t *out)

@@ -15,6 +15,11 @@
  * (snapshot compared at completion). Every violation counts in `errors`,
  * the first one is described in `first_error`.
  *
+ * SPI frame size: with `spi16` set (before panel_emu_hal, which then sets
+ * FXL_PORT_PIXELS_16BIT in the HAL's flags) pixels() data is read as native
+ * uint16 words, each sent high byte first, as an SPI peripheral in 16-bit
+ * frame mode does; commands stay bytes.
+ *
  * DMA mock: a transfer completes (its bytes are decoded, then
  * fxl_port_transfer_done is called) after `dma_delay` later HAL calls
  * (wait/delay hooks included); 0 completes inside pixels(), as an interrupt
@@ -86,6 +91,9 @@ typedef struct panel_emu {
     uint64_t now_ms, reset_ms, slpout_ms;
     int slpout_seen;
 
+    /* SPI: 0 = pixels() sends bytes in memory order, 1 = 16-bit frames */
+    int spi16;
+
     /* DMA mock */
     int dma_delay;
     panel_emu_xfer_t xfer;        /* the driver keeps at most one in flight */
@@ -109,7 +117,8 @@ typedef struct panel_emu {
 int panel_emu_init(panel_emu_t *e, const panel_emu_module_t *mod, uint16_t ram_fill);
 void panel_emu_free(panel_emu_t *e);
 /* HAL whose callbacks drive this emulator (cmd, pixels, reset, delay_ms,
- * wait all set; clear the ones a test wants missing). */
+ * wait all set; clear the ones a test wants missing; flags
+ * FXL_PORT_PIXELS_16BIT when spi16 is set). */
 void panel_emu_hal(panel_emu_t *e, fxl_port_hal_t *hal);
 /* Forget the wire record and CRC (state and RAM stay). */
 void panel_emu_clear_log(panel_emu_t *e);

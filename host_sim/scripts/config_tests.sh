@@ -37,7 +37,8 @@ config_defines() {
         echo FXL_FAST_SWAPPED FXL_FAST_POINT FXL_FAST_MIP ;;
     min-depth) # min with a depth buffer
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_AUTO ;;
-    min-native) # min for a display fed native RGB565 (no byte-swapped walks)
+    min-native) # min for a panel fed native RGB565 in 16-bit SPI frames
+        # (FXL_PORT_PIXELS_16BIT; no byte-swapped walks)
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_DEPTH FXL_HAVE_AUTO FXL_FAST_SWAPPED ;;
     min-panel) # min-depth for an SPI panel fed byte-swapped RGB565 (no native
         # walks): tests that want native pixels draw swapped and convert

@@ -30,10 +30,15 @@
  * they were started, so a count identifies which buffers are free.
  *
  * Byte order. MIPI DCS panels take RGB565 big-endian (high byte first) with
- * COLMOD 0x55. Render into FXL_PIXFMT_RGB565_SWAP targets on little-endian
- * CPUs (fxl_port_wire_format() picks it) so memory is already in wire order
- * and pixels() sends the buffer with no copy. Colour order (RGB/BGR) is the
- * MADCTL BGR bit, never a pixel conversion.
+ * COLMOD 0x55. A HAL that sends bytes (8-bit SPI frames) gets them from
+ * FXL_PIXFMT_RGB565_SWAP targets on little-endian CPUs
+ * (fxl_port_wire_format() picks it), so memory is already in wire order and
+ * pixels() sends the buffer with no copy. A HAL that sends pixel data as
+ * 16-bit SPI frames (each uint16 most significant bit first) sets
+ * FXL_PORT_PIXELS_16BIT: then native RGB565 is wire order on any CPU.
+ * fxl_panel_pixel_format() says which format a panel's HAL wants; the band
+ * renderer draws in it. Colour order (RGB/BGR) is the MADCTL BGR bit, never
+ * a pixel conversion.
  *
  * Rotation and RAM offsets are data (fxl_panel_preset_t): a MADCTL value and
  * an (x, y) offset per rotation 0/90/180/270. See docs/porting.md.
@@ -56,7 +61,10 @@ extern "C" {
 
 /* ---- HAL ---------------------------------------------------------------- */
 
-#define FXL_PORT_PIXELS_SYNC 0x01u /* pixels() is blocking: no completion call */
+#define FXL_PORT_PIXELS_SYNC 0x01u  /* pixels() is blocking: no completion call */
+#define FXL_PORT_PIXELS_16BIT 0x02u /* pixels() sends 16-bit frames, MSB first: data
+                                     * holds native uint16 pixels (cmd() still
+                                     * sends bytes) */
 
 typedef struct fxl_port_hal {
     fxl_status_t (*cmd)(void *user, uint8_t cmd, const uint8_t *params, size_t n);
@@ -172,9 +180,15 @@ typedef struct fxl_panel {
 /* Called by the HAL (DMA interrupt) when a pixels() transfer has ended. */
 void fxl_port_transfer_done(fxl_panel_t *panel);
 
-/* Pixel format whose memory layout is wire order on this CPU:
- * FXL_PIXFMT_RGB565_SWAP on little-endian CPUs, FXL_PIXFMT_RGB565 otherwise. */
+/* Pixel format whose memory layout is wire order on this CPU when pixels()
+ * sends bytes: FXL_PIXFMT_RGB565_SWAP on little-endian CPUs,
+ * FXL_PIXFMT_RGB565 otherwise. */
 fxl_pixfmt_t fxl_port_wire_format(void);
+
+/* Pixel format whose memory layout is what this panel's HAL puts on the
+ * wire: FXL_PIXFMT_RGB565 with FXL_PORT_PIXELS_16BIT in hal.flags, else
+ * fxl_port_wire_format(). NULL: fxl_port_wire_format(). */
+fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel);
 
 /* Reset (RESX pulse when hal->reset exists, else SWRESET), SLPOUT, the
  * preset's steps, COLMOD, MADCTL for `rotation`, INVON/INVOFF, NORON,
@@ -189,8 +203,8 @@ fxl_status_t fxl_panel_set_rotation(fxl_panel_t *panel, unsigned rotation);
  * (offsets of the rotation added) and start RAMWR. Waits for transfers.
  * FXL_ERR_RANGE when the rectangle is empty or leaves the visible area. */
 fxl_status_t fxl_panel_set_window(fxl_panel_t *panel, int32_t x, int32_t y, int32_t w, int32_t h);
-/* Send pixel bytes after fxl_panel_set_window (wire order, see
- * fxl_port_wire_format). Waits for the previous transfer, starts this one
+/* Send pixel bytes after fxl_panel_set_window (in the layout of
+ * fxl_panel_pixel_format). Waits for the previous transfer, starts this one
  * and returns; `data` must stay unchanged until fxl_panel_wait_idle (or the
  * next panel call) returns. FXL_ERR_ARG on NULL/odd/zero bytes. */
 fxl_status_t fxl_panel_write(fxl_panel_t *panel, const void *data, size_t bytes);
@@ -271,9 +285,9 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
 fxl_status_t fxl_band_begin(fxl_band_t *b);
 /* Add one triangle. Triangles entirely above or below the frame are dropped
  * (FXL_OK). Errors (the triangle is not added): FXL_ERR_ARG (NULL), what
- * fxl_draw_check says of the draw on a band of this frame (in the wire's
- * format, with the depth band if any: bad settings, or a draw this build
- * left out), FXL_ERR_RANGE (an inv_w of 0), FXL_ERR_NOMEM (triangle store
+ * fxl_draw_check says of the draw on a band of this frame (in
+ * fxl_panel_pixel_format, with the depth band if any: bad settings, or a
+ * draw this build left out), FXL_ERR_RANGE (an inv_w of 0), FXL_ERR_NOMEM (triangle store
  * full). A draw changed after it was added is checked again per band. */
 fxl_status_t fxl_band_add(fxl_band_t *b, const fxl_vertex_t v[3], const fxl_draw_t *draw);
 /* Render and send the frame: full-frame window, RAMWR, then each band
