@@ -621,9 +621,11 @@ void test_exact_mode_within_one_64th_texel_on_floor_and_cube(void)
  * 1/8 up to 10^4. A quad over the target with 1/w varying along its diagonal
  * (spans of varying depth), 4 periods of a 64-texel texture, at two inv_w
  * scales: nearest vertex at 2^32 - 1, and the whole quad 1000 times farther
- * (every inv_w below 2^22.1: what per-triangle scaling is for). The
- * stability sweep measures 5e-5 texels across this range (docs/stability.md);
- * 1/1024 here keeps that claim honest with room for rounding. */
+ * (every inv_w below 2^22.1: what per-triangle scaling is for). Measured
+ * here: at most 1.1e-4 texels at scale 1 and 3.9e-4 at scale 1/1000 (ratio
+ * 10^4), so the test holds every case to 1/1024, stricter than the issue's
+ * bounds: without the normalisation of 1/w, ratio 10^3 at scale 1/1000
+ * errs 1.3e-2, inside the issue's 1/64 but caught here. */
 void test_exact_mode_precision_holds_across_depth_ratios(void)
 {
     static const double ratios[] = {1, 10, 100, 1000, 3000, 10000};
@@ -642,7 +644,6 @@ void test_exact_mode_precision_holds_across_depth_ratios(void)
             e = scene_max_error(tris, 2, FXL_PERSP_EXACT, 64);
             snprintf(msg, sizeof msg, "depth ratio %g, inv_w scale %g: max error %.2e texels", R, k, e);
             TEST_MESSAGE(msg);
-            TEST_ASSERT_TRUE_MESSAGE(e <= (R <= 1000 ? 1.0 / 64 : 1.0 / 8), msg);
             TEST_ASSERT_TRUE_MESSAGE(e <= 1.0 / 1024, msg);
         }
 }

@@ -27,7 +27,11 @@
  * triangles (must match exactly), and against the intended triangle (pixels
  * that differ because a clipped vertex was snapped are reported apart).
  * Safety: each case is also drawn for real into a target with canary words
- * around pixels and depth; a damaged canary or an unexpected status aborts.
+ * around pixels and depth. Exit status: 3 at once when a canary is damaged
+ * or a probe leaves the target; after all sweeps, 4 when some method's
+ * coverage differed from the exact rule or a draw failed (summary.csv's last
+ * column says where; the deliberate counter-example variants excepted);
+ * else 0.
  * Inputs beyond q16 (|x| >= 32768 px) are clipped in double to the guard
  * band +-GUARD px first (Sutherland-Hodgman in screen space; 1/w, u/w, v/w
  * are affine there, so the clipped attributes are exact) - the core itself
@@ -498,6 +502,9 @@ static void sweep_begin(sweep_out_t *s, const char *name, const char *param)
     fprintf(stderr, "fixel-stability: sweep %s\n", name);
 }
 
+/* Sweep and method pairs whose coverage or status broke (exit status 4). */
+static int broken;
+
 static void emit(sweep_out_t *s, const char *variant, double param, int m, const result_t *r)
 {
     static const double lim[3] = {1.0 / 64, 1.0 / 8, 1.0};
@@ -519,6 +526,9 @@ static void emit(sweep_out_t *s, const char *variant, double param, int m, const
     if (!s->have[m][3] && (r->cov_mismatch || r->status != FXL_OK)) {
         s->have[m][3] = 1;
         s->brk[m][3] = param;
+        broken++;
+        fprintf(stderr, "fixel-stability: %s %s %s at %g: %s, %ld coverage mismatches\n", s->name, variant,
+                methods[m].name, param, fxl_status_name(r->status), r->cov_mismatch);
     }
 }
 
@@ -983,5 +993,10 @@ int main(int argc, char **argv)
     free(errbuf);
     free(tex_mem);
     fprintf(stderr, "fixel-stability: wrote %s/*.csv\n", outdir);
+    if (broken) {
+        fprintf(stderr, "fixel-stability: %d sweep/method pairs lost exact coverage or a valid draw failed\n",
+                broken);
+        return 4;
+    }
     return 0;
 }
