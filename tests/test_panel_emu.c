@@ -421,17 +421,20 @@ void test_spi16_sends_each_word_high_byte_first(void)
     emu.spi16 = 1;
     panel_emu_hal(&emu, &hal);
     TEST_ASSERT_EQUAL_UINT32(FXL_PORT_PIXELS_16BIT, hal.flags);
+    /* before RAMWR: one protocol error per transfer, as with bytes */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, hal.pixels(hal.user, px, sizeof(px)));
+    TEST_ASSERT_EQUAL_INT(1, emu.errors);
     panel_emu_clear_log(&emu);
     raw_cmd(FXL_DCS_CASET, caset, 4);
     raw_cmd(FXL_DCS_RAMWR, NULL, 0);
     TEST_ASSERT_EQUAL_INT(FXL_OK, hal.pixels(hal.user, px, sizeof(px)));
-    TEST_ASSERT_EQUAL_INT(0, emu.errors);
+    TEST_ASSERT_EQUAL_INT(1, emu.errors);
     TEST_ASSERT_EQUAL_UINT32(sizeof(expect_bytes), (uint32_t)emu.wire_bytes);
     TEST_ASSERT_EQUAL_HEX32(panel_emu_crc32(0, expect_bytes, sizeof(expect_bytes)), emu.crc);
     TEST_ASSERT_EQUAL_HEX16(0xABCD, ram_at(0, 0));
     TEST_ASSERT_EQUAL_HEX16(0xF800, ram_at(1, 0));
     TEST_ASSERT_EQUAL_INT(FXL_OK, hal.pixels(hal.user, px, 3));
-    TEST_ASSERT_EQUAL_INT(1, emu.errors);
+    TEST_ASSERT_EQUAL_INT(2, emu.errors);
 }
 
 void test_lookup_by_name_and_alias(void)

@@ -95,6 +95,31 @@ static inline fxl_pixfmt_t drawable_rgb565(void)
 #endif
 }
 
+/* Whether the emulated SPI panel's HAL sends pixels as 16-bit frames
+ * (FXL_PORT_PIXELS_16BIT, port.h) rather than bytes: only where this build
+ * cannot draw the byte stream's format, i.e. on a little-endian host
+ * without the generic walk and the byte-swapped walks (configuration
+ * min-native). Both send the same bytes to the panel. */
+static inline int panel_spi16(void)
+{
+#if !FXL_HAVE_GENERIC && !FXL_FAST_SWAPPED
+    const uint16_t probe = 1u;
+    return *(const unsigned char *)&probe == 1u;
+#else
+    return 0;
+#endif
+}
+
+/* The format the band renderer draws in for that HAL
+ * (fxl_panel_pixel_format): native RGB565 for 16-bit frames and on
+ * big-endian hosts, else byte-swapped. */
+static inline fxl_pixfmt_t panel_band_format(void)
+{
+    const uint16_t probe = 1u;
+    const int little = *(const unsigned char *)&probe == 1u;
+    return little && !panel_spi16() ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+}
+
 /* n pixels drawn in format `format` as native RGB565, in place. */
 static inline void pixels_to_native(uint16_t *px, size_t n, fxl_pixfmt_t format)
 {

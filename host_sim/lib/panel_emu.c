@@ -1,6 +1,7 @@
 /* panel_emu.c - emulated MIPI DCS panel (contract in panel_emu.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "panel_emu.h"
+#include "left_out.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -235,16 +236,24 @@ static void complete(panel_emu_t *e)
     /* The controller gets what the buffer holds when the DMA reads it; we
      * read it at the last moment, so any early reuse also shows in the image. */
     if (e->spi16) {
-        /* 16-bit frames: each word's high byte goes out first */
+        /* 16-bit frames: each word's high byte goes out first (decoded in
+         * one piece, so a protocol error counts once per transfer, as with
+         * bytes) */
+        const size_t n = x->bytes & ~(size_t)1;
+        uint8_t *wire = (uint8_t *)malloc(n ? n : 1);
         size_t i;
         if (x->bytes & 1u) fail(e, "transfer %lu: %zu bytes in 16-bit frames", e->transfers, x->bytes);
-        for (i = 0; i + 1 < x->bytes; i += 2) {
-            uint16_t w;
-            uint8_t be[2];
-            memcpy(&w, x->data + i, 2);
-            be[0] = (uint8_t)(w >> 8);
-            be[1] = (uint8_t)w;
-            pixel_bytes(e, be, 2);
+        if (wire == NULL) {
+            fail(e, "16-bit frames: out of memory");
+        } else {
+            for (i = 0; i < n; i += 2) {
+                uint16_t w;
+                memcpy(&w, x->data + i, 2);
+                wire[i] = (uint8_t)(w >> 8);
+                wire[i + 1] = (uint8_t)w;
+            }
+            pixel_bytes(e, wire, n);
+            free(wire);
         }
     } else {
         pixel_bytes(e, x->data, x->bytes);
@@ -512,6 +521,7 @@ fxl_status_t panel_emu_render_scene(const char *panel, int rotation, int band_ro
     if (panel_emu_init(&emu, mod, 0) != 0) return FXL_ERR_NOMEM;
     emu.dma_delay = 2;
     emu.panel = &p;
+    emu.spi16 = panel_spi16();
     panel_emu_hal(&emu, &hal);
     memset(&stats, 0, sizeof(stats));
 

@@ -163,9 +163,11 @@ int panel_emu_frame_size(const char *panel, int rotation, int *w, int *h);
 /* Initialise the named panel through the real driver, render `count`
  * triangles (vertices in frame coordinates of the rotated panel, each with
  * its draw state; band0/band1 are ignored) through the band renderer
- * (`band_rows` rows per band, 0 = 24; a depth band where the build has
- * depth; dma_delay 2) into the emulated panel, and write the view (panel_emu_view) into out, which holds
- * out_pixels >= width * height native RGB565 pixels. res may be NULL.
+ * (`band_rows` rows per band, 0 = 24; a HAL sending bytes, or 16-bit
+ * frames where the build cannot draw byte-swapped bands: panel_spi16,
+ * left_out.h; a depth band where the build has depth; dma_delay 2) into
+ * the emulated panel, and write the view (panel_emu_view) into out, which
+ * holds out_pixels >= width * height native RGB565 pixels. res may be NULL.
  * Returns the first fxl_status_t error, FXL_ERR_IO when the emulator found
  * protocol errors, FXL_ERR_ARG for an unknown panel or a small `out`. */
 fxl_status_t panel_emu_render_scene(const char *panel, int rotation, int band_rows,

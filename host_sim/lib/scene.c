@@ -834,10 +834,10 @@ static const char *named_missing_feature(const char *name, int texture, const fx
 const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d)
 {
     const char *m;
-    /* the bands in the wire's format, and the direct render it is checked
-     * against (in the order this build draws), both with depth where the
-     * build has it */
-    m = named_missing_feature(scene, -1, d, fxl_port_wire_format(), FXL_HAVE_DEPTH);
+    /* the bands in the emulated HAL's format, and the direct render it is
+     * checked against (in the order this build draws), both with depth
+     * where the build has it */
+    m = named_missing_feature(scene, -1, d, panel_band_format(), FXL_HAVE_DEPTH);
     return m != NULL ? m : named_missing_feature(scene, -1, d, drawable_rgb565(), FXL_HAVE_DEPTH);
 }
 

@@ -215,7 +215,7 @@ fxl_status_t panel_scene_render(const char *panel, int rotation, int band_rows,
 /* The first feature panel_scene_render of `scene` with *d needs and this
  * build left out, or NULL: FXL_HAVE_DEPTH for a scene whose image depends
  * on the depth test (anyscene_needs_depth), then the draw settings' on the
- * bands (the wire's format) and on the direct render (native), each with
+ * bands (panel_band_format, left_out.h) and on the direct render (native), each with
  * depth where the build has it (anyscene_missing_feature). A render needing
  * a left-out feature returns FXL_ERR_UNSUPPORTED. */
 const char *panel_scene_missing_feature(const char *scene, const fxl_draw_t *d);

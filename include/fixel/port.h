@@ -5,11 +5,14 @@
  *   cmd      blocking: D/C low, the command byte, D/C high, the n parameter
  *            bytes, in this order. Required.
  *   pixels   send `bytes` bytes of pixel data exactly as they are in memory
- *            (D/C high). May start a DMA and return at once; the transfer's
- *            end is then reported by calling fxl_port_transfer_done() (from
- *            the DMA interrupt). With FXL_PORT_PIXELS_SYNC in `flags` the
- *            callback returns only when the bytes are out and the driver
- *            counts the completion itself. Required.
+ *            (D/C high); with FXL_PORT_PIXELS_16BIT in `flags` instead
+ *            bytes / 2 16-bit frames, one per uint16 of the (2-byte aligned)
+ *            data, most significant bit first. May start a DMA and return
+ *            at once; the transfer's end is then reported by calling
+ *            fxl_port_transfer_done() (from the DMA interrupt). With
+ *            FXL_PORT_PIXELS_SYNC in `flags` the callback returns only when
+ *            the bytes are out and the driver counts the completion itself.
+ *            Required.
  *   reset    optional: drive the RESX pin to `level` (0 = in reset).
  *   delay_ms optional for drawing, required by fxl_panel_init (an init
  *            sequence without its datasheet delays leaves the panel in an
