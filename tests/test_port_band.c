@@ -214,16 +214,11 @@ static void need_band_draws_in(fxl_pixfmt_t band_fmt)
 
 /* The emulated HAL sends bytes, unless this build cannot draw the bands
  * for it (native walks only, FXL_FAST_SWAPPED 0): then the tests run as
- * such a firmware would, with FXL_PORT_PIXELS_16BIT (left_out.h, the rule
- * panel_emu_render_scene follows too). */
-static int default_spi16(void)
-{
-    return panel_spi16();
-}
-
+ * such a firmware would, with FXL_PORT_PIXELS_16BIT (panel_spi16 in
+ * left_out.h, the rule panel_emu_render_scene follows too). */
 static void need_band_draws(void)
 {
-    need_band_draws_in(band_format(default_spi16()));
+    need_band_draws_in(band_format(panel_spi16()));
 }
 
 /* Render through init -> band renderer -> emulated panel. Only asserts on
@@ -244,7 +239,7 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&emu, panel_emu_module_find(cfg->panel), 0));
     emu.panel = &panel;
     emu.dma_delay = cfg->dma_delay;
-    emu.spi16 = cfg->spi16 || default_spi16();
+    emu.spi16 = cfg->spi16 || panel_spi16();
     panel_emu_hal(&emu, &hal);
     if (cfg->no_wait_hook) hal.wait = NULL;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, panel_emu_preset_find(cfg->panel),
@@ -291,7 +286,7 @@ static void check_identical(const run_cfg_t *cfg, run_out_t *o)
     fxl_stats_t full_stats;
     uint16_t *full;
     int w, h, x, y;
-    need_band_draws_in(band_format(cfg->spi16 || default_spi16()));
+    need_band_draws_in(band_format(cfg->spi16 || panel_spi16()));
     TEST_ASSERT_EQUAL_INT(0, panel_emu_frame_size(cfg->panel, cfg->rotation, &w, &h));
     build_scene(&s, w, h);
     full = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
@@ -480,7 +475,7 @@ static band_fixture_t *fixture(void)
     TEST_ASSERT_NOT_NULL(f);
     TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&f->emu, panel_emu_module_find("st7789"), 0));
     f->emu.panel = &f->panel;
-    f->emu.spi16 = default_spi16();
+    f->emu.spi16 = panel_spi16();
     panel_emu_hal(&f->emu, &f->hal);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&f->panel, &f->hal, &fxl_st7789_240x320, 1));
     return f;
