@@ -95,6 +95,14 @@ static inline fxl_pixfmt_t drawable_rgb565(void)
 #endif
 }
 
+/* 1 on a little-endian host (the probe fxl_port_wire_format makes; here
+ * so this header needs no port library). */
+static inline int host_little_endian(void)
+{
+    const uint16_t probe = 1u;
+    return *(const unsigned char *)&probe == 1u;
+}
+
 /* Whether the emulated SPI panel's HAL sends pixels as 16-bit frames
  * (FXL_PORT_PIXELS_16BIT, port.h) rather than bytes: only where this build
  * cannot draw the byte stream's format, i.e. on a little-endian host
@@ -102,12 +110,7 @@ static inline fxl_pixfmt_t drawable_rgb565(void)
  * min-native). Both send the same bytes to the panel. */
 static inline int panel_spi16(void)
 {
-#if !FXL_HAVE_GENERIC && !FXL_FAST_SWAPPED
-    const uint16_t probe = 1u;
-    return *(const unsigned char *)&probe == 1u;
-#else
-    return 0;
-#endif
+    return !FXL_HAVE_GENERIC && !FXL_FAST_SWAPPED && host_little_endian();
 }
 
 /* The format the band renderer draws in for that HAL
@@ -115,9 +118,7 @@ static inline int panel_spi16(void)
  * big-endian hosts, else byte-swapped. */
 static inline fxl_pixfmt_t panel_band_format(void)
 {
-    const uint16_t probe = 1u;
-    const int little = *(const unsigned char *)&probe == 1u;
-    return little && !panel_spi16() ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+    return host_little_endian() && !panel_spi16() ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
 }
 
 /* n pixels drawn in format `format` as native RGB565, in place. */
