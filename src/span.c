@@ -99,14 +99,33 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
  * Coordinates uu = u - 1/2 texel, vv = v - 1/2 texel (q16): the weights are
  * bits 11..15 (constant shifts: UBFX on a Cortex-M4), row and column the
  * bits from 16 (the row times the width only on a new footprint). */
+#define FXL_RND565 0x02008010u    /* 16 in every lane: round to nearest */
+
+/* On 64-bit cores the two rows of a footprint share one register: row 1's
+ * lanes sit 32 bits above row 0's, so one multiply-add steps both
+ * horizontal lerps. The same identity as above holds across the halves
+ * (row 0's lane sum is below 2^32, so it never reaches row 1), and after
+ * the shift row 1's low bits land in bits 27..31, which the mask clears:
+ * the halves are bit for bit the two 32-bit lerps. Two values a footprint
+ * instead of four, and on x86-64 fewer of them spilled. */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+#define FXL__BL64 1
+#define FXL_MASK565_2 UINT64_C(0x07E0F81F07E0F81F)
+#define FXL_RND565_2 UINT64_C(0x0200801002008010)
+#else
+#define FXL__BL64 0
+#endif
+
 typedef struct bl {
     const uint16_t *tex;
     uint32_t mu, mv, lw;          /* mask_u, mask_v, log2 width */
     uint32_t key;
+#if FXL__BL64
+    uint64_t a, d;                /* 32 e0 + R, e1 - e0 for column 0 and 1, row 1 in the high half */
+#else
     uint32_t a0, d0, a1, d1;      /* 32 e00 + R, e10 - e00; the same for row 1 */
+#endif
 } bl_t;
-
-#define FXL_RND565 0x02008010u    /* 16 in every lane: round to nearest */
 
 static inline void bl_init(bl_t *b, const fxl__level_t *lv)
 {
@@ -115,7 +134,11 @@ static inline void bl_init(bl_t *b, const fxl__level_t *lv)
     b->mv = lv->mask_v;
     b->lw = lv->log2_w;
     b->key = 0xFFFFFFFFu;
+#if FXL__BL64
+    b->a = b->d = 0;
+#else
     b->a0 = b->d0 = b->a1 = b->d1 = 0;
+#endif
 }
 
 static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv)
@@ -128,15 +151,31 @@ static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv)
         const uint32_t c0 = (uu >> 16) & b->mu, c1 = (c0 + 1u) & b->mu;
         const uint32_t rv = (vv >> 16) & b->mv;
         const uint16_t *t0 = b->tex + (rv << b->lw), *t1 = b->tex + (((rv + 1u) & b->mv) << b->lw);
+#if FXL__BL64
+        const uint64_t e0 = expand565(t0[c0]) | (uint64_t)expand565(t1[c0]) << 32;
+        const uint64_t e1 = expand565(t0[c1]) | (uint64_t)expand565(t1[c1]) << 32;
+        b->key = key;
+        b->a = (e0 << 5) + FXL_RND565_2;
+        b->d = e1 - e0;
+#else
         const uint32_t e00 = expand565(t0[c0]), e01 = expand565(t1[c0]);
         b->key = key;
         b->a0 = (e00 << 5) + FXL_RND565;
         b->d0 = expand565(t0[c1]) - e00;
         b->a1 = (e01 << 5) + FXL_RND565;
         b->d1 = expand565(t1[c1]) - e01;
+#endif
     }
+#if FXL__BL64
+    {
+        const uint64_t tb = ((b->a + b->d * fu) >> 5) & FXL_MASK565_2;
+        top = (uint32_t)tb;
+        bot = (uint32_t)(tb >> 32);
+    }
+#else
     top = ((b->a0 + b->d0 * fu) >> 5) & 0x07E0F81Fu;
     bot = ((b->a1 + b->d1 * fu) >> 5) & 0x07E0F81Fu;
+#endif
     return (((top << 5) + FXL_RND565 + (bot - top) * fv) >> 5) & 0x07E0F81Fu;
 }
 #endif
