@@ -126,6 +126,7 @@ typedef struct fxl__tri {
     /* mip state */
     int32_t lod_q8_tri;          /* per-triangle LOD incl. bias, clamped, q8 levels */
     uint8_t lod_per_segment;
+    uint8_t lod_grid;            /* AUTO: per-segment LOD on the 16-pixel grid only (auto.h) */
     uint8_t nlevels;
     fxl__level_t level[FXL_TEX_MAX_LEVELS];
     uint8_t mip_linear;          /* blend two levels */

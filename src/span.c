@@ -1217,6 +1217,38 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 }
 #endif
 
+#if FXL_HAVE_MIPMAP
+/* A segment's LOD from lod_at's value: the bias added, clamped to the
+ * levels (the generic and the fast walks, bit for bit the same). */
+static inline int32_t seg_lod(const fxl__tri_t *tri, int32_t lod)
+{
+    lod += tri->draw->lod_bias_q8;
+    if (lod < 0)
+        lod = 0;
+    if (lod > tri->lod_max_q8)
+        lod = tri->lod_max_q8;
+    return lod;
+}
+
+#if FXL_HAVE_AUTO
+/* The LOD of the grid point left of x on `row` (auto.h), for a walk that
+ * starts off the grid (at a clip edge): the generic correction, which
+ * every walk equals bit for bit, out of line (once per such span, and
+ * the fast walks keep their own correction inline). Counts a division. */
+static FXL__NOINLINE int32_t lod_grid_start(const fxl__tri_t *tri, int32_t x, int32_t xl, int32_t row)
+{
+    const int32_t Yc = row * FXL__ONE + FXL__HALF, Xg = FXL__AUTO_LOD_GRID(x, xl) * FXL__ONE + FXL__HALF;
+    int64_t pv[NPLANES] = {0};
+    point_t pt;
+    int i;
+    for (i = 0; i < tri->np; i++)
+        pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, Xg, Yc);
+    correct(tri, pv, &pt);
+    return seg_lod(tri, lod_at(tri, pv[PQ], pt.u64, pt.v64));
+}
+#endif
+#endif
+
 /* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
 typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 
@@ -1518,6 +1550,7 @@ void fxl__span_setup(fxl__tri_t *tri)
     if (tri->q_const)
         fxl__recip(tri->q_min, &tri->rc_qmin);
     tri->fast_id = 0;
+    tri->lod_grid = 0;
     if (fxl__has_uv(tri)) {
         tri->persp_eb[0] = fxl__persp_eb(tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         tri->persp_eb[1] = fxl__persp_eb(tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
@@ -1525,6 +1558,11 @@ void fxl__span_setup(fxl__tri_t *tri)
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment && tri->nlevels > 1)
             lod_setup(tri);
+#endif
+#if FXL_HAVE_MIPMAP && FXL_HAVE_AUTO
+        /* whatever lengths AUTO chose (one for the triangle or one per
+         * segment): both keep segments aligned from the span's left end */
+        tri->lod_grid = tri->draw->persp == FXL_PERSP_AUTO && tri->lod_per_segment && tri->nlevels > 1;
 #endif
     }
 }
@@ -1555,6 +1593,15 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     for (i = 0; i < np; i++)
         pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
     correct(tri, pv, &p0);
+#if FXL_HAVE_MIPMAP
+    /* AUTO: the LOD at the latest grid point (auto.h); a walk that starts
+     * off the grid evaluates its grid point first */
+    int32_t lod_grid = 0;
+#if FXL_HAVE_AUTO
+    if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
+        lod_grid = lod_grid_start(tri, x, xl, row);
+#endif
+#endif
 
     seg.lvl = fxl__has_uv(tri) ? &tri->level[0] : 0;
     seg.lvl2 = 0;
@@ -1614,11 +1661,12 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
                 if (tri->lod_per_segment) {
-                    lod = lod_at(tri, pv0[PQ], p0.u64, p0.v64) + tri->draw->lod_bias_q8;
-                    if (lod < 0)
-                        lod = 0;
-                    if (lod > tri->lod_max_q8)
-                        lod = tri->lod_max_q8;
+#if FXL_HAVE_AUTO
+                    if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
+                        lod = lod_grid;
+                    else
+#endif
+                        lod = lod_grid = seg_lod(tri, lod_at(tri, pv0[PQ], p0.u64, p0.v64));
                 }
                 seg.lod_q8 = lod;
                 if (tri->mip_linear) {

@@ -97,11 +97,13 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
         if (tri->nlevels > 1) {
             int32_t lod = tri->lod_q8_tri;
             if (tri->lod_per_segment) {
-                lod = fast_lod(tri, (int64_t)w->sq, &w->pt) + tri->draw->lod_bias_q8;
-                if (lod < 0)
-                    lod = 0;
-                if (lod > tri->lod_max_q8)
-                    lod = tri->lod_max_q8;
+#if FXL_HAVE_AUTO
+                /* AUTO: on the LOD grid only (auto.h) */
+                if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(xe, xl))
+                    lod = clod[cnt - 1];   /* the walk keeps clod[-1] */
+                else
+#endif
+                    lod = seg_lod(tri, fast_lod(tri, (int64_t)w->sq, &w->pt));
             }
             clod[cnt] = lod;
         }
@@ -679,7 +681,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 #define FXL_T_CZ 0
 #endif
 #if FXL_HAVE_MIPMAP
-    int32_t clod[FXL__BATCH];   /* each segment's LOD, q8, clamped */
+    /* each segment's LOD, q8, clamped; clod[-1] the previous batch's last
+     * (AUTO holds it between grid points, auto.h) */
+    int32_t clodb[FXL__BATCH + 1];
+    int32_t *const clod = clodb + 1;
 #define FXL_T_CLOD clod
 #else
 #define FXL_T_CLOD 0
@@ -716,6 +721,11 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     cv[0] = w.pt.v;
 #if FXL_HAVE_MIPMAP
     clod[0] = 0;   /* written before it is read; this tells the compiler */
+    clodb[0] = 0;
+#if FXL_HAVE_AUTO
+    if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
+        clodb[0] = lod_grid_start(tri, x, xl, row);   /* the walk starts off the LOD grid */
+#endif
 #endif
 
     while (x < cr) {
@@ -846,6 +856,9 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
         cv[0] = cv[cnt];
 #if FXL_T_DEPTH
         cz[0] = cz[cnt];
+#endif
+#if FXL_HAVE_MIPMAP
+        clodb[0] = clod[cnt - 1];
 #endif
     }
 #undef FXL_T_CZ

@@ -323,6 +323,117 @@ void test_trilinear_weights_blend_levels_by_lod_fraction(void)
     TEST_ASSERT_EQUAL_INT(81, checked);
 }
 
+/* Probe of the generic walk that draws for real (the loops the core picks)
+ * and records each pixel's LOD and whether its segment starts there. */
+static uint8_t probe_start[320 * 240];
+static uint32_t probe_draw(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    int32_t i;
+    for (i = 0; i < s->n; i++) {
+        const size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
+        probe_lod[k] = s->lod_q8;
+        probe_start[k] = i == 0;
+    }
+    return fxl__pick_seg_fn(tri)(tri, s);
+}
+
+/* Under AUTO the per-segment LOD is evaluated on a 16-pixel grid from each
+ * span's left end and held between grid points (auto.h), where the error
+ * bound cuts segments shorter than that. A wall receding to the right
+ * with a 1/64-texel budget gets segments of 1 to 8 pixels. Asserted, for
+ * the generic walk, full frame and clipped at x = 101 (off the grid of
+ * most spans: the walk then evaluates the grid point left of the clip
+ * first): every pixel's LOD is its grid point's, and the clipped LODs are
+ * the full frame's. For the fast walk: its pixels equal the generic
+ * walk's, full and clipped, for point (nearest level) and trilinear (the
+ * stats say it drew them, not the generic walk). */
+void test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip(void)
+{
+    TEST_NEEDS(FXL_HAVE_MIPMAP && FXL_HAVE_AUTO);
+    static uint16_t fast[320 * 240], gen[320 * 240];
+    static int32_t lod_full[320 * 240];
+    const fxl_rect_t clip = {101, 0, 301, 240};
+    fxl_texture_t t;
+    fxl_target_t tg;
+    fxl_draw_t d;
+    fxl_vertex_t q[4], tri[2][3];
+    fxl_stats_t st;
+    int k, x, y, c, mode, off_grid = 0, changes = 0, fast_walks = 0;
+    char msg[160];
+    /* 256 x 256: the fast walks take textures up to 2^16 texels */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, texels, 256, 256, FXL_TEXFMT_RGB565, 9));
+    for (x = 0; x < 256 * 256 * 4 / 3; x++)
+        texels[x] = (uint16_t)(x * 2654435761u >> 16);
+    /* on screen, so each span's left end is drawn */
+    q[0] = test_project(-1, -0.8, -2.5, 0, 0);
+    q[1] = test_project(30, -0.8, -60, 40, 0);
+    q[2] = test_project(30, 0.8, -60, 40, 3);
+    q[3] = test_project(-1, 0.8, -2.5, 0, 3);
+    tri[0][0] = q[0]; tri[0][1] = q[1]; tri[0][2] = q[2];
+    tri[1][0] = q[0]; tri[1][1] = q[2]; tri[1][2] = q[3];
+    for (mode = 0; mode < 2; mode++) {
+        if (mode == 1 && !FXL_HAVE_BILINEAR)
+            continue;
+        fxl_draw_defaults(&d);
+        d.texture = &t;
+        d.depth = 0;
+        d.persp = FXL_PERSP_AUTO;
+        d.lod = FXL_LOD_SEGMENT;
+        d.filter = mode ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.mip = mode ? FXL_MIP_LINEAR : FXL_MIP_NEAREST;
+        for (k = 0; k < 2; k++)
+            for (c = 0; c < 2; c++) {
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
+                fxl_target_clear(&tg, 0xDEAD);
+                if (c)
+                    fxl_target_set_clip(&tg, &clip);
+                probe_base = gen;
+                for (x = 0; x < 320 * 240; x++)
+                    probe_lod[x] = INT32_MIN;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri[k], NULL, probe_draw));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
+                fxl_target_clear(&tg, 0xDEAD);
+                if (c)
+                    fxl_target_set_clip(&tg, &clip);
+                memset(&st, 0, sizeof st);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, tri[k], &st));
+                fast_walks += st.drawn - st.generic;
+                for (x = 0; x < 320 * 240; x++)
+                    if (fast[x] != gen[x]) {
+                        snprintf(msg, sizeof msg, "mode %d tri %d clip %d pixel (%d,%d): fast %04x generic %04x",
+                                 mode, k, c, x % 320, x / 320, fast[x], gen[x]);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+                for (y = 0; y < 240; y++) {
+                    int32_t *row = probe_lod + y * 320, xl = -1;
+                    for (x = 0; x < 320; x++) {
+                        if (row[x] == INT32_MIN)
+                            continue;
+                        if (c) {
+                            /* clipped: the full frame's LOD */
+                            TEST_ASSERT_EQUAL_INT32(lod_full[y * 320 + x], row[x]);
+                            continue;
+                        }
+                        if (xl < 0)
+                            xl = x;   /* full frame: the span's left end */
+                        TEST_ASSERT_EQUAL_INT32(row[xl + ((x - xl) & ~15)], row[x]);
+                        lod_full[y * 320 + x] = row[x];
+                        if (probe_start[y * 320 + x] && ((x - xl) & 15) != 0)
+                            off_grid++;
+                        if (((x - xl) & 15) == 0 && x > xl && row[x - 1] != row[x])
+                            changes++;
+                    }
+                }
+            }
+    }
+    snprintf(msg, sizeof msg, "%d segments start off the grid, the LOD changes at %d grid points; %d fast draws",
+             off_grid, changes, (int)fast_walks);
+    TEST_MESSAGE(msg);
+    /* not vacuous: short segments between grid points, and a LOD that
+     * does change along the spans */
+    TEST_ASSERT_TRUE_MESSAGE(off_grid > 1000 && changes > 100, msg);
+}
+
 /* The LOD and AUTO's bounds take logarithms in three forms (64-bit,
  * 32-bit, soft-float mantissa): all must give fxl__log2_q8's value, which
  * the bounds' margins are worked out for, and stay within its stated
@@ -380,6 +491,7 @@ int main(void)
     RUN_TEST(test_lod_per_segment_exact_at_extremes);
     RUN_TEST(test_lod_bias_and_per_triangle_mode);
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
+    RUN_TEST(test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip);
     RUN_TEST(test_log2_q8_forms_agree);
     return UNITY_END();
 }
