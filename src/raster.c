@@ -321,8 +321,21 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     if (st != FXL_OK)
         return st;
 #if FXL_HAVE_AUTO
+#if FXL_HAVE_MIPMAP
+    /* AUTO with a per-segment LOD: segments of at most the LOD grid
+     * (auto.h), whatever the coordinates allow. Whole-span segments took
+     * one LOD for up to 256 pixels: 0.84 level off the exact one at the
+     * floor's span ends, where the bound is 0.25. */
+    const int lod_cap = draw->persp == FXL_PERSP_AUTO && tri.has_uv && tri.lod_per_segment && tri.nlevels > 1;
+    if (lod_cap && tri.auto_cap > FXL__AUTO_LOD_LOG2)
+        tri.auto_cap = FXL__AUTO_LOD_LOG2;
+#endif
     if (draw->persp == FXL_PERSP_AUTO && tri.has_uv && !tri.affine)
         fxl__auto_setup(&tri, Y);
+#if FXL_HAVE_MIPMAP
+    if (lod_cap && tri.seg_log2 > FXL__AUTO_LOD_LOG2)
+        tri.seg_log2 = FXL__AUTO_LOD_LOG2;   /* the affine and q_x = 0 cases */
+#endif
 #endif
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

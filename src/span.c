@@ -1561,8 +1561,11 @@ void fxl__span_setup(fxl__tri_t *tri)
 #endif
 #if FXL_HAVE_MIPMAP && FXL_HAVE_AUTO
         /* whatever lengths AUTO chose (one for the triangle or one per
-         * segment): both keep segments aligned from the span's left end */
-        tri->lod_grid = tri->draw->persp == FXL_PERSP_AUTO && tri->lod_per_segment && tri->nlevels > 1;
+         * segment): both keep segments aligned from the span's left end;
+         * one length of at least the grid (raster.c caps it there) puts
+         * every segment start on the grid, with nothing to hold */
+        tri->lod_grid = tri->draw->persp == FXL_PERSP_AUTO && tri->lod_per_segment && tri->nlevels > 1 &&
+                        (tri->auto_seg || tri->seg_log2 < FXL__AUTO_LOD_LOG2);
 #endif
     }
 }
