@@ -114,9 +114,10 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
  * segments cost with mip levels (Cortex-M4 cube trilinear: lod_at 262k of
  * 1.70M instructions, against 137k under fixed subdiv16). On the grid it
  * is evaluated where subdiv16 evaluates it (or less often, on segments
- * longer than 16). A walk that starts off the grid (at the clip edge,
- * fxl__auto_first) evaluates the grid point before it first: the LOD of a
- * pixel does not depend on the clip rectangle or band. */
+ * longer than 16). A walk that would start off the grid (at the clip
+ * edge, fxl__auto_first) starts at the grid point before it, computing
+ * but not drawing the segments left of the clip: the LOD of a pixel does
+ * not depend on the clip rectangle or band. */
 #define FXL__AUTO_LOD_LOG2 4
 #define FXL__AUTO_LOD_ON_GRID(x, xl) ((((x) - (xl)) & (((int32_t)1 << FXL__AUTO_LOD_LOG2) - 1)) == 0)
 #define FXL__AUTO_LOD_GRID(x, xl) ((xl) + (((x) - (xl)) >> FXL__AUTO_LOD_LOG2 << FXL__AUTO_LOD_LOG2))

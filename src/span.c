@@ -1230,23 +1230,6 @@ static inline int32_t seg_lod(const fxl__tri_t *tri, int32_t lod)
     return lod;
 }
 
-#if FXL_HAVE_AUTO
-/* The LOD of the grid point left of x on `row` (auto.h), for a walk that
- * starts off the grid (at a clip edge): the generic correction, which
- * every walk equals bit for bit, out of line (once per such span, and
- * the fast walks keep their own correction inline). Counts a division. */
-static FXL__NOINLINE int32_t lod_grid_start(const fxl__tri_t *tri, int32_t x, int32_t xl, int32_t row)
-{
-    const int32_t Yc = row * FXL__ONE + FXL__HALF, Xg = FXL__AUTO_LOD_GRID(x, xl) * FXL__ONE + FXL__HALF;
-    int64_t pv[NPLANES] = {0};
-    point_t pt;
-    int i;
-    for (i = 0; i < tri->np; i++)
-        pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, Xg, Yc);
-    correct(tri, pv, &pt);
-    return seg_lod(tri, lod_at(tri, pv[PQ], pt.u64, pt.v64));
-}
-#endif
 #endif
 
 /* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
@@ -1592,18 +1575,20 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
 #if FXL_HAVE_AUTO
     if (tri->auto_seg == 1 && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, Yc - tri->Y0);
+#if FXL_HAVE_MIPMAP
+    /* AUTO's LOD grid (auto.h): a walk that would start between grid
+     * points starts at the one before (a segment start), so the LOD it
+     * holds is the one a walk from xl holds; the segments left of the
+     * clip are computed, not drawn */
+    if (tri->lod_grid)
+        x = FXL__AUTO_LOD_GRID(x, xl);
+#endif
 #endif
     for (i = 0; i < np; i++)
         pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
     correct(tri, pv, &p0);
 #if FXL_HAVE_MIPMAP
-    /* AUTO: the LOD at the latest grid point (auto.h); a walk that starts
-     * off the grid evaluates its grid point first */
-    int32_t lod_grid = 0;
-#if FXL_HAVE_AUTO
-    if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
-        lod_grid = lod_grid_start(tri, x, xl, row);
-#endif
+    int32_t lod_grid = 0;   /* AUTO: the LOD of the latest grid point */
 #endif
 
     seg.lvl = fxl__has_uv(tri) ? &tri->level[0] : 0;

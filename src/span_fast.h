@@ -702,6 +702,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 #if FXL_HAVE_AUTO
     if (autoseg && cl > xl)
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
+#if FXL_HAVE_MIPMAP
+    if (tri->lod_grid)
+        x = FXL__AUTO_LOD_GRID(x, xl);   /* as the generic walk (draw_span_generic) */
+#endif
 #endif
 
     {
@@ -721,11 +725,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     cv[0] = w.pt.v;
 #if FXL_HAVE_MIPMAP
     clod[0] = 0;   /* written before it is read; this tells the compiler */
-    clodb[0] = 0;
-#if FXL_HAVE_AUTO
-    if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
-        clodb[0] = lod_grid_start(tri, x, xl, row);   /* the walk starts off the LOD grid */
-#endif
+    clodb[0] = 0;  /* the walk starts on the LOD grid, where it is computed */
 #endif
 
     while (x < cr) {
@@ -815,8 +815,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
             }
 #endif
             if (x < cl) {
-                /* Only the first segment can start left of the clip: there
-                 * the pixel loop starts `off` pixels in. */
+                /* A segment that starts left of the clip: the pixel loop
+                 * starts `off` pixels in (the first segment; under AUTO's
+                 * LOD grid up to 15 pixels of segments lie wholly left of
+                 * it, and a >= b skips them). */
                 const uint32_t off = (uint32_t)(cl - x);
                 a = cl;
                 u += du * off;
