@@ -122,6 +122,12 @@ static inline int32_t fxl__auto_row(const fxl__tri_t *tri, int32_t dY)
 #define FXL__AUTO_LOD_ON_GRID(x, xl) ((((x) - (xl)) & (((int32_t)1 << FXL__AUTO_LOD_LOG2) - 1)) == 0)
 #define FXL__AUTO_LOD_GRID(x, xl) ((xl) + (((x) - (xl)) >> FXL__AUTO_LOD_LOG2 << FXL__AUTO_LOD_LOG2))
 
+/* Is the per-segment LOD of triangle t (a pointer, drawn with draw d) on
+ * the grid: AUTO with mip levels? Then its segments are capped at the grid too (raster.c). A
+ * macro: as an inline function GCC -Os kept a copy in each of its two
+ * users (46 bytes more of Cortex-M4 code). */
+#define FXL__AUTO_LOD_GRIDDED(d, t) ((d)->persp == FXL_PERSP_AUTO && (t)->lod_per_segment && (t)->nlevels > 1)
+
 /* Quadratic segments: at most 2^5 pixels (the fixed-point steps then err
  * by < 0.003 texel, fxl__quad_steps; beyond that, where chords would need
  * 32 pixels or more, a quadratic pixel's two extra adds cost more than

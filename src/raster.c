@@ -326,7 +326,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
      * (auto.h), whatever the coordinates allow. Whole-span segments took
      * one LOD for up to 256 pixels: 0.84 level off the exact one at the
      * floor's span ends, where the bound is 0.25. */
-    const int lod_cap = draw->persp == FXL_PERSP_AUTO && tri.has_uv && tri.lod_per_segment && tri.nlevels > 1;
+    const int lod_cap = tri.has_uv && FXL__AUTO_LOD_GRIDDED(draw, &tri);
     if (lod_cap && tri.auto_cap > FXL__AUTO_LOD_LOG2)
         tri.auto_cap = FXL__AUTO_LOD_LOG2;
 #endif

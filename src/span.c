@@ -1547,8 +1547,7 @@ void fxl__span_setup(fxl__tri_t *tri)
          * segment): both keep segments aligned from the span's left end;
          * one length of at least the grid (raster.c caps it there) puts
          * every segment start on the grid, with nothing to hold */
-        tri->lod_grid = tri->draw->persp == FXL_PERSP_AUTO && tri->lod_per_segment && tri->nlevels > 1 &&
-                        (tri->auto_seg || tri->seg_log2 < FXL__AUTO_LOD_LOG2);
+        tri->lod_grid = FXL__AUTO_LOD_GRIDDED(tri->draw, tri) && (tri->auto_seg || tri->seg_log2 < FXL__AUTO_LOD_LOG2);
 #endif
     }
 }
@@ -1588,7 +1587,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
     correct(tri, pv, &p0);
 #if FXL_HAVE_MIPMAP
-    int32_t lod_grid = 0;   /* AUTO: the LOD of the latest grid point */
+    int32_t lod_held = 0;   /* AUTO: the LOD of the latest grid point */
 #endif
 
     seg.lvl = fxl__has_uv(tri) ? &tri->level[0] : 0;
@@ -1651,10 +1650,10 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
                 if (tri->lod_per_segment) {
 #if FXL_HAVE_AUTO
                     if (tri->lod_grid && !FXL__AUTO_LOD_ON_GRID(x, xl))
-                        lod = lod_grid;
+                        lod = lod_held;
                     else
 #endif
-                        lod = lod_grid = seg_lod(tri, lod_at(tri, pv0[PQ], p0.u64, p0.v64));
+                        lod = lod_held = seg_lod(tri, lod_at(tri, pv0[PQ], p0.u64, p0.v64));
                 }
                 seg.lod_q8 = lod;
                 if (tri->mip_linear) {
