@@ -267,9 +267,14 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         /* Per segment pays ~40-70 Cortex-M4 instructions a segment for
          * the bound; it only wins where q varies enough that the longest
          * allowed length (at the largest vertex q) is 4x the one the whole
-         * triangle allows. */
+         * triangle allows. On several levels that length is not capped:
+         * there the cap is the LOD grid's (raster.c), and spans that fit
+         * the cap all along cost the batch walk one test and a fixed
+         * walk's segments (fxl__auto_span_fits_cap). The near quad's
+         * trilinear: ~1.19x fixed subdiv16's instructions with 8-pixel
+         * segments for the whole triangle, ~1.01x per segment. */
         const int32_t lqmax = fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
-        int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, cap);
+        int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, tri->nlevels > 1 ? 8 : cap);
         /* Quadratic segments (auto.h) on repeat and mirror axes (modular
          * coordinates: a parabola may overshoot its ends a little, which
          * a clamped int32 coordinate must not) of a texture with one level

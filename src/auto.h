@@ -228,6 +228,22 @@ static inline int fxl__auto_next(const fxl__tri_t *tri, int32_t t_row, int32_t x
     return k;
 }
 
+/* Does every block of 2^auto_cap from x (such a block's start) to the
+ * span's end xr fit, so that AUTO's segments there are exactly a fixed
+ * walk's of that length? q is the q plane value at x. One test for the
+ * span (the fast walks then take the fixed walk's cheaper segments) in
+ * place of a bound per segment. It implies fxl__auto_next's answer at
+ * every block start: q32 at x' >= q32(x) - auto_gx32 (x' - x) (a floor
+ * of a sum is at least the floors' sum less the ceiling), so each block's
+ * q_min bound is at least the one here, and auto_fit grows with q. */
+static inline int fxl__auto_span_fits_cap(const fxl__tri_t *tri, int32_t t_row, int32_t x, int32_t xr, int64_t q)
+{
+    int64_t q32 = fxl__auto_q32(q);
+    if (tri->q.gx < 0)
+        q32 -= (int64_t)((uint64_t)tri->auto_gx32 * (uint32_t)(xr - 1 - x));
+    return fxl__auto_fit(t_row, q32, tri->auto_cap) >= tri->auto_cap;
+}
+
 /* The same with quadratic segments (tri->auto_quad): the longest block
  * that either bound allows, FXL__AUTO_QUAD set where only the quadratic
  * one does. */

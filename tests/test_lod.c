@@ -441,6 +441,103 @@ void test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip(void)
     TEST_ASSERT_TRUE_MESSAGE(off_grid > 1000 && changes > 100, msg);
 }
 
+/* AUTO on several levels (segments capped at the 16-pixel LOD grid): the
+ * fast walk draws a span whose every 16-pixel block fits the error bound
+ * as fixed 16-pixel segments after one test (fxl__auto_span_fits_cap),
+ * and the other spans of the same triangle segment by segment. A near
+ * quad turned about the vertical axis, both ways (q falling along x, and
+ * rising), 4 texture repeats, the default budget: q varies ~4x across
+ * each, so AUTO segments it per segment (auto.c), and the generic walk's
+ * segments show both kinds of span (counted on spans with both ends on
+ * screen). Asserted: the fast walk's pixels equal the generic walk's,
+ * full frame and clipped at x = 101, and it drew them. A test that
+ * claims a span fits where one block does not (the fall of q along the
+ * span left out, say) draws that span with the wrong segments. */
+void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
+{
+    TEST_NEEDS(FXL_HAVE_MIPMAP && FXL_HAVE_AUTO && FXL_HAVE_BILINEAR);
+    static uint16_t fast[320 * 240], gen[320 * 240];
+    const fxl_rect_t clip = {101, 0, 301, 240};
+    fxl_texture_t t;
+    fxl_target_t tg;
+    fxl_draw_t d;
+    fxl_stats_t st;
+    int side, k, c, x, y, uniform = 0, mixed = 0, fast_walks = 0;
+    char msg[160];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, texels, 256, 256, FXL_TEXFMT_RGB565, 9));
+    for (x = 0; x < 256 * 256 * 4 / 3; x++)
+        texels[x] = (uint16_t)(x * 2654435761u >> 16);
+    fxl_draw_defaults(&d);
+    d.texture = &t;
+    d.depth = 0;
+    d.persp = FXL_PERSP_AUTO;
+    d.lod = FXL_LOD_SEGMENT;
+    d.filter = FXL_FILTER_BILINEAR;
+    d.mip = FXL_MIP_LINEAR;
+    for (side = 0; side < 2; side++) {
+        /* corners (+-1.6, +-1.2) turned 55 degrees about y, centre z = -3.2 */
+        const double a = (side ? -55.0 : 55.0) * 3.14159265358979323846 / 180.0;
+        const double cx[4] = {-1.6, 1.6, 1.6, -1.6}, cy[4] = {-1.2, -1.2, 1.2, 1.2};
+        fxl_vertex_t q[4], tri[2][3];
+        for (k = 0; k < 4; k++)
+            q[k] = test_project(cx[k] * cos(a), cy[k], -3.2 - cx[k] * sin(a), (cx[k] + 1.6) / 8.0, (1.2 - cy[k]) / 8.0);
+        tri[0][0] = q[0]; tri[0][1] = q[1]; tri[0][2] = q[2];
+        tri[1][0] = q[0]; tri[1][1] = q[2]; tri[1][2] = q[3];
+        for (k = 0; k < 2; k++)
+            for (c = 0; c < 2; c++) {
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
+                fxl_target_clear(&tg, 0xDEAD);
+                if (c)
+                    fxl_target_set_clip(&tg, &clip);
+                probe_base = gen;
+                memset(probe_start, 2, sizeof probe_start);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri[k], NULL, probe_draw));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
+                fxl_target_clear(&tg, 0xDEAD);
+                if (c)
+                    fxl_target_set_clip(&tg, &clip);
+                memset(&st, 0, sizeof st);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, tri[k], &st));
+                fast_walks += st.drawn - st.generic;
+                for (x = 0; x < 320 * 240; x++)
+                    if (fast[x] != gen[x]) {
+                        snprintf(msg, sizeof msg, "side %d tri %d clip %d pixel (%d,%d): fast %04x generic %04x", side,
+                                 k, c, x % 320, x / 320, fast[x], gen[x]);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+                if (c)
+                    continue;
+                for (y = 0; y < 240; y++) {
+                    /* the span's segment lengths, but the last */
+                    const uint8_t *row = probe_start + y * 320;
+                    int xl = -1, xr = -1, last = -1, short_seg = 0, seg16 = 0;
+                    for (x = 0; x < 320; x++)
+                        if (row[x] != 2) {
+                            xl = xl < 0 ? x : xl;
+                            xr = x + 1;
+                        }
+                    if (xl <= 0 || xr >= 320)
+                        continue;   /* empty, or cut by the frame */
+                    for (x = xl; x < xr; x++)
+                        if (row[x] == 1) {
+                            if (last >= 0) {
+                                short_seg |= x - last < 16;
+                                seg16 |= x - last == 16;
+                            }
+                            last = x;
+                        }
+                    uniform += seg16 && !short_seg;
+                    mixed += seg16 && short_seg;
+                }
+            }
+    }
+    snprintf(msg, sizeof msg, "spans of 16-pixel segments %d, with shorter ones %d; %d fast draws", uniform, mixed,
+             fast_walks);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(uniform > 50 && mixed > 50, msg);
+    TEST_ASSERT_EQUAL_INT(FXL__FAST_SPANS ? 8 : 0, fast_walks);
+}
+
 /* The LOD and AUTO's bounds take logarithms in three forms (64-bit,
  * 32-bit, soft-float mantissa): all must give fxl__log2_q8's value, which
  * the bounds' margins are worked out for, and stay within its stated
@@ -499,6 +596,7 @@ int main(void)
     RUN_TEST(test_lod_bias_and_per_triangle_mode);
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
     RUN_TEST(test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip);
+    RUN_TEST(test_auto_spans_that_fit_the_cap_take_fixed_segments);
     RUN_TEST(test_log2_q8_forms_agree);
     return UNITY_END();
 }
