@@ -151,6 +151,7 @@ typedef struct probe {
     int32_t *tri;         /* the one that passed the depth test last, -1 none */
     uint32_t *u, *v;      /* its level-0 q16 coordinates (modular) */
     int32_t cur;          /* triangle being drawn */
+    int off_level0;       /* a segment sampled another level (its u, v are not level 0's) */
 } probe_t;
 
 /* The probe hook has no user pointer; this tool is single-threaded. */
@@ -162,7 +163,8 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     probe_t *p = g_probe;
     int32_t i;
-    (void)tri;
+    if (s->lvl && s->lvl != &tri->level[0])
+        p->off_level0 = 1;
     for (i = 0; i < s->n; i++) {
         size_t k = (size_t)(s->dst - p->base) + (size_t)i;
         uint32_t zz = (s->z + (uint32_t)s->dz * (uint32_t)i) >> 16;
@@ -178,6 +180,52 @@ static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
         p->v[k] = fxl__seg_coord(s->v, s->dv, s->ddv, i);
     }
     return (uint32_t)s->n;
+}
+
+/* One probe pass of the scene drawn with d (its u, v must be level-0
+ * texels): per pixel coverage into p->count, and the texel error against
+ * the exact reference over the mask into *err, with the share of pixels
+ * whose point-sampled texel differs and the covered-pixel total. */
+static int probe_pass(const scene_t *s, const fxl_draw_t *d, probe_t *p, frame_t *pf, const ref_image *refs,
+                      const uint8_t *mask, double *errs, uint32_t tw, uint32_t th, metrics_summary *err,
+                      double *wrong_share, uint64_t *covered)
+{
+    size_t k, n = 0, wrong = 0;
+    uint32_t i;
+    memset(p->count, 0, NPIX);
+    for (k = 0; k < NPIX; k++)
+        p->tri[k] = -1;
+    p->base = pf->target.pixels;
+    p->off_level0 = 0;
+    (void)fxl_target_clear_depth(&pf->target);
+    g_probe = p;
+    for (i = 0; i < s->tri_count; i++) {
+        fxl_status_t st;
+        p->cur = (int32_t)i;
+        st = fxl__draw_triangle_with(&pf->target, d, &s->verts[3u * i], NULL, probe_seg);
+        if (st != FXL_OK) {
+            fprintf(stderr, "fixel-bench: probe pass: %s\n", fxl_status_name(st));
+            return 1;
+        }
+    }
+    *covered = 0;
+    for (k = 0; k < NPIX; k++) {
+        double du, dv;
+        uint32_t tx, ty;
+        *covered += p->count[k];
+        if (!mask[k] || p->tri[k] != refs[0].tri[k])
+            continue;
+        du = bench_wrap_diff(p->u[k], refs[0].u[k], tw);
+        dv = bench_wrap_diff(p->v[k], refs[0].v[k], th);
+        errs[n++] = hypot(du, dv);
+        tx = (p->u[k] >> 16) & (tw - 1u);
+        ty = (p->v[k] >> 16) & (th - 1u);
+        if ((int32_t)tx != refs[0].tex_x[k] || (int32_t)ty != refs[0].tex_y[k])
+            wrong++;
+    }
+    (void)metrics_summarize(errs, n, err);
+    *wrong_share = n ? (double)wrong / (double)n : 0;
+    return 0;
 }
 
 /* ---- analytic bound of affine segments --------------------------------------- */
@@ -372,47 +420,17 @@ static int run_scene(size_t si, const options_t *o)
     for (mi = 0; mi < NMETHODS; mi++) {
         fxl_draw_t d;
         metrics_coverage cov;
-        metrics_summary err;
-        size_t n = 0, wrong = 0;
-        uint64_t covered = 0;
-        uint32_t i;
+        metrics_summary err, err_f;
+        double wrong_share = 0, wrong_share_f = 0;
+        uint64_t covered = 0, covered_f = 0;
         if (!selected(o->method, methods[mi].name))
             continue;
         fprintf(stderr, "  %s %s\n", scenes[si], methods[mi].name);
         /* Probe pass: level 0 (FXL_MIP_NONE) so u, v are level-0 texels. */
         draw_settings(&methods[mi], &filters[0], &tex.tex, &d);
-        memset(pr.count, 0, NPIX);
-        for (k = 0; k < NPIX; k++)
-            pr.tri[k] = -1;
-        pr.base = pf.target.pixels;
-        (void)fxl_target_clear_depth(&pf.target);
-        g_probe = &pr;
-        for (i = 0; i < s.tri_count; i++) {
-            fxl_status_t st;
-            pr.cur = (int32_t)i;
-            st = fxl__draw_triangle_with(&pf.target, &d, &s.verts[3u * i], NULL, probe_seg);
-            if (st != FXL_OK) {
-                fprintf(stderr, "fixel-bench: %s %s: %s\n", scenes[si], methods[mi].name, fxl_status_name(st));
-                goto out;
-            }
-        }
-        for (k = 0; k < NPIX; k++)
-            covered += pr.count[k];
+        if (probe_pass(&s, &d, &pr, &pf, refs, mask, errs, tex.width, tex.height, &err, &wrong_share, &covered) != 0)
+            goto out;
         (void)metrics_coverage_compare(refcount, pr.count, NPIX, &cov);
-        for (k = 0; k < NPIX; k++) {
-            double du, dv;
-            uint32_t tx, ty;
-            if (!mask[k] || pr.tri[k] != refs[0].tri[k])
-                continue;
-            du = bench_wrap_diff(pr.u[k], refs[0].u[k], tex.width);
-            dv = bench_wrap_diff(pr.v[k], refs[0].v[k], tex.height);
-            errs[n++] = hypot(du, dv);
-            tx = (pr.u[k] >> 16) & (tex.width - 1u);
-            ty = (pr.v[k] >> 16) & (tex.height - 1u);
-            if ((int32_t)tx != refs[0].tex_x[k] || (int32_t)ty != refs[0].tex_y[k])
-                wrong++;
-        }
-        (void)metrics_summarize(errs, n, &err);
 
         for (fi = 0; fi < NFILTERS; fi++) {
             row_t *r = &rows[si][mi][fi];
@@ -421,6 +439,26 @@ static int run_scene(size_t si, const options_t *o)
             if (!selected(o->filter, filters[fi].name))
                 continue;
             draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
+            err_f = err;
+            wrong_share_f = wrong_share;
+            if (d.mip != FXL_MIP_NONE) {
+                /* The filter's own u, v: with mip levels AUTO cuts its
+                 * segments otherwise (capped at the LOD grid, per
+                 * segment more often; auto.c). The same draw biased to
+                 * level 0 everywhere segments as this one does (no
+                 * choice of segments reads the LOD) and reports level-0
+                 * texels. */
+                fxl_draw_t d0 = d;
+                d0.lod_bias_q8 = INT16_MIN;
+                if (probe_pass(&s, &d0, &pr, &pf, refs, mask, errs, tex.width, tex.height, &err_f, &wrong_share_f,
+                               &covered_f) != 0)
+                    goto out;
+                if (pr.off_level0 || covered_f != covered) {
+                    fprintf(stderr, "fixel-bench: %s %s %s: level-0 probe pass off level 0\n", scenes[si],
+                            methods[mi].name, filters[fi].name);
+                    goto out;
+                }
+            }
             (void)fxl_target_clear(&fr.target, 0);
             (void)fxl_target_clear_depth(&fr.target);
             if (draw_scene(&s, &d, &fr.target) != FXL_OK)
@@ -430,8 +468,8 @@ static int run_scene(size_t si, const options_t *o)
             r->valid = 1;
             r->covered = covered;
             r->cov = cov;
-            r->err = err;
-            r->wrong_share = n ? (double)wrong / (double)n : 0;
+            r->err = err_f;
+            r->wrong_share = wrong_share_f;
             r->psnr = im.psnr;
             r->max_diff = im.max_diff;
             r->bound = methods[mi].seg_len > 1 ? K * methods[mi].seg_len * methods[mi].seg_len : 0;
