@@ -864,50 +864,66 @@ void test_fast_and_generic_walks_agree(void)
 /* FXL_PERSP_AUTO keeps the max texel error under its budget on the floor,
  * the 40-degree rolled floor (spans cross depth: the hard case) and the cube
  * for budgets 1/16, 1/4 and 1 texel; the unrolled floor, whose spans have
- * constant depth, gets whole-span affine (log2 length 8). */
+ * constant depth, gets whole-span affine (log2 length 8). Also with mip
+ * levels and the per-segment LOD, where AUTO cuts its segments otherwise
+ * (at most the 16-pixel LOD grid, per segment more often: auto.c, raster.c
+ * and the batch walk's span test): drawn with the LOD biased to level 0
+ * everywhere, which cuts the same segments and keeps u, v in level-0
+ * texels. */
 void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
 {
     static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
     tri_t tris[12];
-    int b, sc, k, n;
+    int b, sc, k, n, mips;
     char msg[160];
     TEST_NEEDS(FXL_HAVE_AUTO);
-    for (sc = 0; sc < 3; sc++) {
-        n = sc == 0 ? floor_scene(tris) : (sc == 1 ? rolled_floor_scene(tris, 40) : cube_scene(tris));
-        for (b = 0; b < 3; b++) {
-            static uint16_t buf[320 * 240];
-            static uint16_t texels[64 * 64];
-            fxl_target_t t;
-            fxl_draw_t d;
-            fxl_texture_t tex;
-            double maxe = 0;
-            int x, y;
-            fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1);
-            fxl_draw_defaults(&d);
-            d.texture = &tex;
-            d.depth = 0;
-            d.persp = FXL_PERSP_AUTO;
-            d.auto_budget = budgets[b];
-            probe_seg_len_max = -1;
-            for (k = 0; k < n; k++) {
-                probe_target(&t, buf, 320, 240);
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg_len));
-                for (y = 0; y < 240; y++)
-                    for (x = 0; x < 320; x++)
-                        if (probe_count[y * 320 + x]) {
-                            double eu, ev, e;
-                            exact_uv(tris[k].v, 64, 64, 0, x, y, &eu, &ev);
-                            e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
-                            if (e > maxe)
-                                maxe = e;
-                        }
+    for (mips = 0; mips < 2; mips++) {
+        if (mips && !FXL_HAVE_MIPMAP)
+            continue;
+        for (sc = 0; sc < 3; sc++) {
+            n = sc == 0 ? floor_scene(tris) : (sc == 1 ? rolled_floor_scene(tris, 40) : cube_scene(tris));
+            for (b = 0; b < 3; b++) {
+                static uint16_t buf[320 * 240];
+                static uint16_t texels[64 * 64 * 4 / 3 + 1];
+                fxl_target_t t;
+                fxl_draw_t d;
+                fxl_texture_t tex;
+                double maxe = 0;
+                int x, y;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, mips ? 7 : 1));
+                fxl_draw_defaults(&d);
+                d.texture = &tex;
+                d.depth = 0;
+                d.persp = FXL_PERSP_AUTO;
+                d.auto_budget = budgets[b];
+                if (mips) {
+                    d.filter = FXL_FILTER_BILINEAR;
+                    d.mip = FXL_MIP_LINEAR;
+                    d.lod = FXL_LOD_SEGMENT;
+                    d.lod_bias_q8 = INT16_MIN;
+                }
+                probe_seg_len_max = -1;
+                for (k = 0; k < n; k++) {
+                    probe_target(&t, buf, 320, 240);
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg_len));
+                    for (y = 0; y < 240; y++)
+                        for (x = 0; x < 320; x++)
+                            if (probe_count[y * 320 + x]) {
+                                double eu, ev, e;
+                                exact_uv(tris[k].v, 64, 64, 0, x, y, &eu, &ev);
+                                e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64),
+                                          wrap_err(probe_v[y * 320 + x], ev, 64));
+                                if (e > maxe)
+                                    maxe = e;
+                            }
+                }
+                snprintf(msg, sizeof msg, "levels %d scene %d budget %.4f: max error %.4f texels, longest segment 2^%d",
+                         mips ? 7 : 1, sc, budgets[b] / 65536.0, maxe, probe_seg_len_max);
+                TEST_MESSAGE(msg);
+                TEST_ASSERT_TRUE_MESSAGE(maxe <= budgets[b] / 65536.0, msg);
+                if (sc == 0)
+                    TEST_ASSERT_EQUAL_INT_MESSAGE(mips ? 4 : 8, probe_seg_len_max, msg);
             }
-            snprintf(msg, sizeof msg, "scene %d budget %.4f: max error %.4f texels, longest segment 2^%d", sc,
-                     budgets[b] / 65536.0, maxe, probe_seg_len_max);
-            TEST_MESSAGE(msg);
-            TEST_ASSERT_TRUE_MESSAGE(maxe <= budgets[b] / 65536.0, msg);
-            if (sc == 0)
-                TEST_ASSERT_EQUAL_INT_MESSAGE(8, probe_seg_len_max, msg);
         }
     }
 }
