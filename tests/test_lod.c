@@ -344,6 +344,42 @@ static uint32_t probe_draw(const fxl__tri_t *tri, const fxl__seg_t *s)
     return fxl__pick_seg_fn(tri)(tri, s);
 }
 
+/* Draws triangle v with d twice into 320 x 240 frames, clipped to clip
+ * when it is not NULL: gen through the generic walk (probe_draw, which
+ * records each pixel's LOD and segment starts, reset here), fast through
+ * fxl_draw_triangle; fails on the first pixel where they differ (what
+ * names the case). Returns 1 when a specialised walk drew fast. */
+static int draw_generic_and_fast(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
+                                 uint16_t *gen, uint16_t *fast, const char *what)
+{
+    fxl_target_t tg;
+    fxl_stats_t st;
+    char msg[200];
+    int x;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
+    fxl_target_clear(&tg, 0xDEAD);
+    if (clip)
+        fxl_target_set_clip(&tg, clip);
+    probe_base = gen;
+    for (x = 0; x < 320 * 240; x++)
+        probe_lod[x] = INT32_MIN;
+    memset(probe_start, 2, sizeof probe_start);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, d, v, NULL, probe_draw));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
+    fxl_target_clear(&tg, 0xDEAD);
+    if (clip)
+        fxl_target_set_clip(&tg, clip);
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, d, v, &st));
+    for (x = 0; x < 320 * 240; x++)
+        if (fast[x] != gen[x]) {
+            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x generic %04x", what, x % 320, x / 320, fast[x],
+                     gen[x]);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    return st.drawn > st.generic;
+}
+
 /* Under AUTO the per-segment LOD is evaluated on a 16-pixel grid from each
  * span's left end and held between grid points (auto.h), where the error
  * bound cuts segments shorter than that. A wall receding to the right
@@ -361,10 +397,8 @@ void test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip(void)
     static int32_t lod_full[320 * 240];
     const fxl_rect_t clip = {101, 0, 301, 240};
     fxl_texture_t t;
-    fxl_target_t tg;
     fxl_draw_t d;
     fxl_vertex_t q[4], tri[2][3];
-    fxl_stats_t st;
     int k, x, y, c, mode, off_grid = 0, changes = 0, fast_walks = 0;
     char msg[160];
     /* 256 x 256: the fast walks take textures up to 2^16 texels */
@@ -390,27 +424,8 @@ void test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip(void)
         d.mip = mode ? FXL_MIP_LINEAR : FXL_MIP_NEAREST;
         for (k = 0; k < 2; k++)
             for (c = 0; c < 2; c++) {
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
-                fxl_target_clear(&tg, 0xDEAD);
-                if (c)
-                    fxl_target_set_clip(&tg, &clip);
-                probe_base = gen;
-                for (x = 0; x < 320 * 240; x++)
-                    probe_lod[x] = INT32_MIN;
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri[k], NULL, probe_draw));
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
-                fxl_target_clear(&tg, 0xDEAD);
-                if (c)
-                    fxl_target_set_clip(&tg, &clip);
-                memset(&st, 0, sizeof st);
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, tri[k], &st));
-                fast_walks += st.drawn - st.generic;
-                for (x = 0; x < 320 * 240; x++)
-                    if (fast[x] != gen[x]) {
-                        snprintf(msg, sizeof msg, "mode %d tri %d clip %d pixel (%d,%d): fast %04x generic %04x",
-                                 mode, k, c, x % 320, x / 320, fast[x], gen[x]);
-                        TEST_FAIL_MESSAGE(msg);
-                    }
+                snprintf(msg, sizeof msg, "mode %d tri %d clip %d", mode, k, c);
+                fast_walks += draw_generic_and_fast(&d, tri[k], c ? &clip : NULL, gen, fast, msg);
                 for (y = 0; y < 240; y++) {
                     int32_t *row = probe_lod + y * 320, xl = -1;
                     for (x = 0; x < 320; x++) {
@@ -459,9 +474,7 @@ void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
     static uint16_t fast[320 * 240], gen[320 * 240];
     const fxl_rect_t clip = {101, 0, 301, 240};
     fxl_texture_t t;
-    fxl_target_t tg;
     fxl_draw_t d;
-    fxl_stats_t st;
     int side, k, c, x, y, uniform = 0, mixed = 0, fast_walks = 0;
     char msg[160];
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, texels, 256, 256, FXL_TEXFMT_RGB565, 9));
@@ -485,26 +498,8 @@ void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
         tri[1][0] = q[0]; tri[1][1] = q[2]; tri[1][2] = q[3];
         for (k = 0; k < 2; k++)
             for (c = 0; c < 2; c++) {
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
-                fxl_target_clear(&tg, 0xDEAD);
-                if (c)
-                    fxl_target_set_clip(&tg, &clip);
-                probe_base = gen;
-                memset(probe_start, 2, sizeof probe_start);
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri[k], NULL, probe_draw));
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
-                fxl_target_clear(&tg, 0xDEAD);
-                if (c)
-                    fxl_target_set_clip(&tg, &clip);
-                memset(&st, 0, sizeof st);
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, tri[k], &st));
-                fast_walks += st.drawn - st.generic;
-                for (x = 0; x < 320 * 240; x++)
-                    if (fast[x] != gen[x]) {
-                        snprintf(msg, sizeof msg, "side %d tri %d clip %d pixel (%d,%d): fast %04x generic %04x", side,
-                                 k, c, x % 320, x / 320, fast[x], gen[x]);
-                        TEST_FAIL_MESSAGE(msg);
-                    }
+                snprintf(msg, sizeof msg, "side %d tri %d clip %d", side, k, c);
+                fast_walks += draw_generic_and_fast(&d, tri[k], c ? &clip : NULL, gen, fast, msg);
                 if (c)
                     continue;
                 for (y = 0; y < 240; y++) {
