@@ -553,24 +553,18 @@ static int cube_scene(tri_t *out)
     return n;
 }
 
-/* Max |(u,v) - exact| in level-0 texels over every drawn pixel. */
-static double scene_max_error_ref(const tri_t *tris, int n, int persp, int tw, int affine_ref)
+/* Max |(u,v) - exact| in level-0 texels over every pixel that d, with its
+ * tw x tw texture, draws of the triangles, seen through probe (probe_seg
+ * or a probe that records more and calls it). */
+static double draw_max_error(const tri_t *tris, int n, const fxl_draw_t *d, int tw, int affine_ref, fxl__seg_fn probe)
 {
     static uint16_t buf[320 * 240];
     fxl_target_t t;
-    fxl_draw_t d;
-    fxl_texture_t tex;
-    static uint16_t texels[1024 * 1024];
     double maxe = 0;
     int k, x, y;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, (uint32_t)tw, (uint32_t)tw, FXL_TEXFMT_RGB565, 1));
-    fxl_draw_defaults(&d);
-    d.texture = &tex;
-    d.depth = 0;
-    d.persp = (int16_t)persp;
     for (k = 0; k < n; k++) {
         probe_target(&t, buf, 320, 240);
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, d, tris[k].v, NULL, probe));
         for (y = 0; y < 240; y++)
             for (x = 0; x < 320; x++)
                 if (probe_count[y * 320 + x]) {
@@ -582,6 +576,20 @@ static double scene_max_error_ref(const tri_t *tris, int n, int persp, int tw, i
                 }
     }
     return maxe;
+}
+
+/* The same for the persp mode on a one-level tw x tw texture. */
+static double scene_max_error_ref(const tri_t *tris, int n, int persp, int tw, int affine_ref)
+{
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    static uint16_t texels[1024 * 1024];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, (uint32_t)tw, (uint32_t)tw, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.persp = (int16_t)persp;
+    return draw_max_error(tris, n, &d, tw, affine_ref, probe_seg);
 }
 
 /* Against the perspective-correct reference. */
@@ -874,7 +882,7 @@ void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
 {
     static const int32_t budgets[3] = {65536 / 16, 65536 / 4, 65536};
     tri_t tris[12];
-    int b, sc, k, n, mips;
+    int b, sc, n, mips;
     char msg[160];
     TEST_NEEDS(FXL_HAVE_AUTO);
     for (mips = 0; mips < 2; mips++) {
@@ -883,13 +891,10 @@ void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
         for (sc = 0; sc < 3; sc++) {
             n = sc == 0 ? floor_scene(tris) : (sc == 1 ? rolled_floor_scene(tris, 40) : cube_scene(tris));
             for (b = 0; b < 3; b++) {
-                static uint16_t buf[320 * 240];
                 static uint16_t texels[64 * 64 * 4 / 3 + 1];
-                fxl_target_t t;
                 fxl_draw_t d;
                 fxl_texture_t tex;
-                double maxe = 0;
-                int x, y;
+                double maxe;
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, mips ? 7 : 1));
                 fxl_draw_defaults(&d);
                 d.texture = &tex;
@@ -905,20 +910,7 @@ void test_auto_mode_within_budget_and_affine_where_depth_is_constant(void)
                     d.lod_bias_q8 = INT16_MIN;
                 }
                 probe_seg_len_max = -1;
-                for (k = 0; k < n; k++) {
-                    probe_target(&t, buf, 320, 240);
-                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k].v, NULL, probe_seg_len));
-                    for (y = 0; y < 240; y++)
-                        for (x = 0; x < 320; x++)
-                            if (probe_count[y * 320 + x]) {
-                                double eu, ev, e;
-                                exact_uv(tris[k].v, 64, 64, 0, x, y, &eu, &ev);
-                                e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64),
-                                          wrap_err(probe_v[y * 320 + x], ev, 64));
-                                if (e > maxe)
-                                    maxe = e;
-                            }
-                }
+                maxe = draw_max_error(tris, n, &d, 64, 0, probe_seg_len);
                 snprintf(msg, sizeof msg, "levels %d scene %d budget %.4f: max error %.4f texels, longest segment 2^%d",
                          mips ? 7 : 1, sc, budgets[b] / 65536.0, maxe, probe_seg_len_max);
                 TEST_MESSAGE(msg);
