@@ -109,10 +109,14 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 
 #if FXL_T_DEPTH
     /* The rejected count is kept on the rare path so the drawn one stays
-     * short. */
+     * short. zz is a uint16_t (the stored depth's type; z >> 16 < 2^16):
+     * x86-64 then compares it with the buffer in one instruction, where a
+     * uint32_t took a zero-extending load and a compare (-1 instruction a
+     * pixel, floor subdiv16 point with depth 27.36 -> 26.28; the Cortex-M4
+     * code is the same). */
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
-        uint32_t zz = z >> 16;                                                                              \
+        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
         z += dz;                                                                                            \
         if (zz > zb[i]) {                                                                                   \
             uint32_t c = FXL_T_TEXEL();                                                                     \
