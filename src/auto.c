@@ -78,6 +78,33 @@ static int quad_pays(int k, int kq)
 #define log2_q8(x) fxl__log2_q8_inline(x)
 #endif
 
+/* N = S_x q - S q_x of one coordinate where the planes q and S take the
+ * values qv and sv (plane units; sv texel-scaled by 2^es), or, with their
+ * y gradients, its change per unit of Y: the terms of the bound (auto.h). */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+__attribute__((always_inline))   /* a call was ~80 M4 instructions a bound */
+#endif
+static inline fxl__sf_t n_of(fxl__sf_t sx, fxl__sf_t qx, int64_t qv, int64_t sv, int es)
+{
+    return fxl__sf_dot2(sx, fxl__sf_make(qv, 0), fxl__sf_make(sv, es), qx, -1);
+}
+
+/* log2 (a^2 + b^2) in q8 (INT32_MIN / 4 for zero): the smaller-exponent
+ * mantissa floored to the other's exponent (2^-30 of the larger value at
+ * most), the squares summed exactly in 64 bits (each <= 2^62), one
+ * logarithm; as fxl__sf_log2_q8 of the soft-float sum of squares, within
+ * the logarithm's (-1.94, +0.5) q8 steps, in ~30 fewer Cortex-M4
+ * instructions a row (AUTO set-up, |N|^2). */
+static int32_t log2_norm2_q8(fxl__sf_t a, fxl__sf_t b)
+{
+    const uint32_t ma = a.m < 0 ? 0u - (uint32_t)a.m : (uint32_t)a.m, mb = b.m < 0 ? 0u - (uint32_t)b.m : (uint32_t)b.m;
+    /* a zero takes the other's exponent: it has none of its own */
+    const int ea = ma ? a.e : b.e, eb = mb ? b.e : ea, e = ea > eb ? ea : eb;
+    const uint32_t sa = e - ea > 31 ? 0u : ma >> (e - ea), sb = e - eb > 31 ? 0u : mb >> (e - eb);
+    const uint64_t s2 = (uint64_t)sa * sa + (uint64_t)sb * sb;
+    return s2 ? log2_q8(s2) + 2 * e * 256 : INT32_MIN / 4;
+}
+
 /* Quadratic segments for tri: one length (auto_seg 2, seg_log2) or per
  * segment (auto_seg 1); q_x as fxl__quad_g takes it. */
 static void use_quad(fxl__tri_t *tri, fxl__sf_t qx, uint8_t auto_seg)
@@ -96,7 +123,13 @@ static int32_t floor_div256(int32_t x)
 }
 
 /* round(a * 2^-E) as int64; INT64_MAX (or MIN) when it would not fit
- * 2^62, which auto_setup treats as "no per-segment bound". */
+ * 2^62, which auto_setup treats as "no per-segment bound". Out of line:
+ * GCC -Os copied it into both its calls (230 bytes of M4 code), and at -O2
+ * the per-segment set-up spilled more around it (M4 tunnel trilinear AUTO
+ * 5,868 instructions a frame more inline). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 static int64_t sf_fixed(fxl__sf_t a, int E)
 {
     const int sh = a.e - E;
@@ -178,7 +211,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     const int es[2] = {tri->a_shift[FXL__AU] + (int)tri->tex->log2_w - 16,
                        tri->a_shift[FXL__AV] + (int)tri->tex->log2_h - 16};
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
-    fxl__sf_t qx, q0, qy, A[2], B[2], n[2][2];
+    fxl__sf_t qx, sx[2], n[2][2];
     int32_t ys[2];   /* least and greatest vertex Y */
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4;
     int i, j, k, E, quad;
@@ -223,15 +256,8 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
             }
         }
     }
-    q0 = fxl__sf_make(tri->q.c, 0);
-    qy = fxl__sf_make(tri->q.gy, 0);
-    /* N(Y) = A + B (Y - Y0) for u and v, texel-scaled */
-    for (j = 0; j < 2; j++) {
-        const fxl__plane_t *p = &tri->a[j];
-        fxl__sf_t sx = fxl__sf_make((int64_t)((uint64_t)p->gx * FXL__ONE), es[j]);
-        A[j] = fxl__sf_addsub(fxl__sf_mul(sx, q0), fxl__sf_mul(fxl__sf_make(p->c, es[j]), qx), -1);
-        B[j] = fxl__sf_addsub(fxl__sf_mul(sx, qy), fxl__sf_mul(fxl__sf_make(p->gy, es[j]), qx), -1);
-    }
+    for (j = 0; j < 2; j++)
+        sx[j] = fxl__sf_make((int64_t)((uint64_t)tri->a[j].gx * FXL__ONE), es[j]);
     /* N is linear in Y alone, so over the triangle |N_u|, |N_v| and |N|
      * are largest on its top or bottom row: the vertices of least and
      * greatest Y (a third evaluation was ~0.8 Cortex-M4 instructions a
@@ -244,13 +270,19 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         ys[1] = Y[i] > ys[1] ? Y[i] : ys[1];
     }
     for (i = 0; i < 2; i++) {
-        fxl__sf_t dy = fxl__sf_make((int64_t)ys[i] - tri->Y0, 0), n2;
+        /* N on that row, S_x q - S q_x with the planes' values where the
+         * row meets X0 (exact in int64; N does not change along x): two
+         * products a coordinate, where A + B (Y - Y0) took three and two
+         * sums (M4 tunnel AUTO: 79 instructions a bound less) */
+        const uint64_t dy = (uint64_t)((int64_t)ys[i] - tri->Y0);
+        const int64_t qr = (int64_t)((uint64_t)tri->q.c + (uint64_t)tri->q.gy * dy);
         int32_t l;
-        for (j = 0; j < 2; j++)
-            n[i][j] = fxl__sf_addsub(A[j], fxl__sf_mul(B[j], dy), 1);
+        for (j = 0; j < 2; j++) {
+            const fxl__plane_t *p = &tri->a[j];
+            n[i][j] = n_of(sx[j], qx, qr, (int64_t)((uint64_t)p->c + (uint64_t)p->gy * dy), es[j]);
+        }
         /* |(nu, nv)|^2, compared as squares */
-        n2 = fxl__sf_addsub(fxl__sf_mul(n[i][0], n[i][0]), fxl__sf_mul(n[i][1], n[i][1]), 1);
-        l = fxl__sf_log2_q8(n2);
+        l = log2_norm2_q8(n[i][0], n[i][1]);
         lnmax = l > lnmax ? l : lnmax;
     }
     if (lnmax == INT32_MIN / 4)
@@ -258,7 +290,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     /* Cheap bound first: max |N| with min q, each over the vertices. */
     lb = fxl__log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
-    lqmin = fxl__sf_log2_q8(fxl__sf_make(tri->q_min, 0));
+    lqmin = log2_q8((uint64_t)tri->q_min);
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
     tri->seg_log2 = k;
     if (k >= cap)
@@ -273,7 +305,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * walk's segments (fxl__auto_span_fits_cap). The near quad's
          * trilinear: ~1.19x fixed subdiv16's instructions with 8-pixel
          * segments for the whole triangle, ~1.01x per segment. */
-        const int32_t lqmax = fxl__sf_log2_q8(fxl__sf_make(tri->q_max, 0));
+        const int32_t lqmax = log2_q8((uint64_t)tri->q_max);
         int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, tri->nlevels > 1 ? 8 : cap);
         /* Quadratic segments (auto.h) on repeat and mirror axes (modular
          * coordinates: a parabola may overshoot its ends a little, which
@@ -313,8 +345,12 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         }
     E = floor_div256(lmax + 2 + 255) - 29;
     for (j = 0; j < 2; j++) {
-        tri->auto_n[j] = sf_fixed(A[j], E);
-        tri->auto_ns[j] = sf_fixed(B[j], E - 16);
+        /* N(Y) = A + B (Y - Y0), texel-scaled */
+        const fxl__plane_t *p = &tri->a[j];
+        const fxl__sf_t A = n_of(sx[j], qx, tri->q.c, p->c, es[j]);
+        const fxl__sf_t B = n_of(sx[j], qx, tri->q.gy, p->gy, es[j]);
+        tri->auto_n[j] = sf_fixed(A, E);
+        tri->auto_ns[j] = sf_fixed(B, E - 16);
         if (tri->auto_n[j] > ((int64_t)1 << 40) || tri->auto_n[j] < -((int64_t)1 << 40) ||
             tri->auto_ns[j] > ((int64_t)1 << 47) || tri->auto_ns[j] < -((int64_t)1 << 47))
             return;   /* not representable (cannot happen for a drawable triangle): the cheap length */

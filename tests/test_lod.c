@@ -541,6 +541,54 @@ void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
  * 32-bit, soft-float mantissa): all must give fxl__log2_q8's value, which
  * the bounds' margins are worked out for, and stay within its stated
  * accuracy of the true log2. */
+/* fxl__sf_dot2 (the AUTO set-up's |N|, auto.c) within its stated error of
+ * the exact a b + sign c d: < 2^max(e_ab, e_cd) + 2^-30 |result|,
+ * long double reference (exact for these 62-bit products on x86-64),
+ * with mantissas at the extremes (INT32_MIN, 1, 0), exponents far apart
+ * and near cancellation. */
+void test_sf_dot2_within_its_error(void)
+{
+    static const int32_t edge[6] = {INT32_MIN, INT32_MAX, 1, -1, 0, 1 << 30};
+    uint32_t st = 99u;
+    int i, k, worst_i = -1;
+    double worst = 0;
+    char msg[160];
+    for (i = 0; i < 400000; i++) {
+        fxl__sf_t x[4], r;
+        long double want, got, tol;
+        const int sign = (i & 1) ? 1 : -1;
+        for (k = 0; k < 4; k++) {
+            st = st * 1664525u + 1013904223u;
+            x[k].m = (i % 7 == 0) ? edge[(st >> 8) % 6] : (int32_t)(st ^ (st << 13));
+            st = st * 1664525u + 1013904223u;
+            x[k].e = (int)((st >> 16) % 160) - 80;
+        }
+        if (i % 5 == 0) {
+            /* near cancellation: c d = a b, perturbed in the last bits */
+            x[2] = x[0];
+            x[3] = x[1];
+            x[3].m += (int32_t)((st >> 20) & 3) - 1;
+            if (sign > 0)
+                x[2].m = x[2].m == INT32_MIN ? INT32_MAX : -x[2].m;
+        }
+        r = fxl__sf_dot2(x[0], x[1], x[2], x[3], sign);
+        want = ldexpl((long double)x[0].m * x[1].m, x[0].e + x[1].e) +
+               sign * ldexpl((long double)x[2].m * x[3].m, x[2].e + x[3].e);
+        got = ldexpl((long double)r.m, r.e);
+        tol = ldexpl(1.0L, x[0].e + x[1].e > x[2].e + x[3].e ? x[0].e + x[1].e : x[2].e + x[3].e) +
+              ldexpl(fabsl(want), -30);
+        snprintf(msg, sizeof msg, "case %d: %ld*2^%d * %ld*2^%d %c %ld*2^%d * %ld*2^%d", i, (long)x[0].m, x[0].e,
+                 (long)x[1].m, x[1].e, sign > 0 ? '+' : '-', (long)x[2].m, x[2].e, (long)x[3].m, x[3].e);
+        TEST_ASSERT_TRUE_MESSAGE(fabsl(got - want) <= tol, msg);
+        if (tol > 0 && (double)(fabsl(got - want) / tol) > worst) {
+            worst = (double)(fabsl(got - want) / tol);
+            worst_i = i;
+        }
+    }
+    snprintf(msg, sizeof msg, "worst error / stated bound %.3f (case %d)", worst, worst_i);
+    TEST_MESSAGE(msg);
+}
+
 void test_log2_q8_forms_agree(void)
 {
 #if !(FXL_HAVE_MIPMAP || FXL_HAVE_AUTO)
@@ -597,5 +645,6 @@ int main(void)
     RUN_TEST(test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip);
     RUN_TEST(test_auto_spans_that_fit_the_cap_take_fixed_segments);
     RUN_TEST(test_log2_q8_forms_agree);
+    RUN_TEST(test_sf_dot2_within_its_error);
     return UNITY_END();
 }
