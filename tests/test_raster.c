@@ -806,8 +806,11 @@ void test_fast_and_generic_walks_agree(void)
     }
     probe_auto_seg_tris = probe_auto_quad_tris = probe_row_const_tris = 0;
     for (m = 0; m < 5; m++)
-        for (c = 0; c < 2; c++) {
-            const fxl_rect_t cr = {11, 0, W - 9, H};
+        for (c = 0; c < 3; c++) {
+            /* a clip near the left edge, and one well inside the spans
+             * (AUTO's segments start where a walk from the span's left
+             * end would cut them: auto.h) */
+            const fxl_rect_t cr = c == 1 ? (fxl_rect_t){11, 0, W - 9, H} : (fxl_rect_t){101, 3, 173, H - 5};
             fxl_draw_defaults(&d);
             d.texture = &tex;
             d.depth = 0;
@@ -846,20 +849,21 @@ void test_fast_and_generic_walks_agree(void)
             }
         }
     /* guard against the comparison passing vacuously: the adaptive draws
-     * that reached the target did run the per-segment walk (43 of the 480
-     * with this seed; the rest are off-target or get one length; 29 without
+     * that reached the target did run the per-segment walk (43 of the 720
+     * with this seed: none more in the inner clip, where fewer triangles
+     * show; the rest are off-target or get one length; fewer without
      * FXL_HAVE_QUAD, where none gets one quadratic length, auto_seg 2) */
     snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment, %d quadratic; %d of %d with q_x == 0",
-             probe_auto_seg_tris, FXL_HAVE_AUTO ? 4 * NT : 0, probe_auto_quad_tris, probe_row_const_tris,
-             (10 - skipped) * NT);
+             probe_auto_seg_tris, FXL_HAVE_AUTO ? 6 * NT : 0, probe_auto_quad_tris, probe_row_const_tris,
+             (15 - skipped) * NT);
     TEST_MESSAGE(msg);
 #if FXL_HAVE_AUTO
     TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= (FXL_HAVE_QUAD ? NT / 4 : NT / 5), msg);
 #else
     {
         char summary[80];
-        snprintf(summary, sizeof summary, "%d of 10 persp x clip cases checked, %d need FXL_HAVE_AUTO",
-                 10 - skipped, skipped);
+        snprintf(summary, sizeof summary, "%d of 15 persp x clip cases checked, %d need FXL_HAVE_AUTO",
+                 15 - skipped, skipped);
         TEST_MESSAGE(summary);
     }
 #endif
