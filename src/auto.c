@@ -79,14 +79,15 @@ static int quad_pays(int k, int kq)
 #endif
 
 /* N = S_x q - S q_x of one coordinate where the planes q and S take the
- * values qv and sv (plane units; sv texel-scaled by 2^es), or, with their
- * y gradients, its change per unit of Y: the terms of the bound (auto.h). */
+ * values q (soft-float, shared by u and v) and sv (plane units,
+ * texel-scaled by 2^es), or, with their y gradients, its change per unit
+ * of Y: the terms of the bound (auto.h). */
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
 __attribute__((always_inline))   /* a call was ~80 M4 instructions a bound */
 #endif
-static inline fxl__sf_t n_of(fxl__sf_t sx, fxl__sf_t qx, int64_t qv, int64_t sv, int es)
+static inline fxl__sf_t n_of(fxl__sf_t sx, fxl__sf_t qx, fxl__sf_t q, int64_t sv, int es)
 {
-    return fxl__sf_dot2(sx, fxl__sf_make(qv, 0), fxl__sf_make(sv, es), qx, -1);
+    return fxl__sf_dot2(sx, q, fxl__sf_make(sv, es), qx, -1);
 }
 
 /* log2 (a^2 + b^2) in q8 (INT32_MIN / 4 for zero): the smaller-exponent
@@ -211,7 +212,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     const int es[2] = {tri->a_shift[FXL__AU] + (int)tri->tex->log2_w - 16,
                        tri->a_shift[FXL__AV] + (int)tri->tex->log2_h - 16};
     const int64_t qx_g = (int64_t)((uint64_t)tri->q.gx * FXL__ONE);
-    fxl__sf_t qx, sx[2], n[2][2];
+    fxl__sf_t qx, q0, qy, sx[2], n[2][2];
     int32_t ys[2];   /* least and greatest vertex Y */
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4;
     int i, j, k, E, quad;
@@ -275,7 +276,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * products a coordinate, where A + B (Y - Y0) took three and two
          * sums (M4 tunnel AUTO: 79 instructions a bound less) */
         const uint64_t dy = (uint64_t)((int64_t)ys[i] - tri->Y0);
-        const int64_t qr = (int64_t)((uint64_t)tri->q.c + (uint64_t)tri->q.gy * dy);
+        const fxl__sf_t qr = fxl__sf_make((int64_t)((uint64_t)tri->q.c + (uint64_t)tri->q.gy * dy), 0);
         int32_t l;
         for (j = 0; j < 2; j++) {
             const fxl__plane_t *p = &tri->a[j];
@@ -344,11 +345,13 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
             lmax = l > lmax ? l : lmax;
         }
     E = floor_div256(lmax + 2 + 255) - 29;
+    q0 = fxl__sf_make(tri->q.c, 0);
+    qy = fxl__sf_make(tri->q.gy, 0);
     for (j = 0; j < 2; j++) {
         /* N(Y) = A + B (Y - Y0), texel-scaled */
         const fxl__plane_t *p = &tri->a[j];
-        const fxl__sf_t A = n_of(sx[j], qx, tri->q.c, p->c, es[j]);
-        const fxl__sf_t B = n_of(sx[j], qx, tri->q.gy, p->gy, es[j]);
+        const fxl__sf_t A = n_of(sx[j], qx, q0, p->c, es[j]);
+        const fxl__sf_t B = n_of(sx[j], qx, qy, p->gy, es[j]);
         tri->auto_n[j] = sf_fixed(A, E);
         tri->auto_ns[j] = sf_fixed(B, E - 16);
         if (tri->auto_n[j] > ((int64_t)1 << 40) || tri->auto_n[j] < -((int64_t)1 << 40) ||
