@@ -68,7 +68,12 @@ static FXL__SF_INLINE fxl__sf_t fxl__sf_dot2(fxl__sf_t a, fxl__sf_t b, fxl__sf_t
         lo = t;
         el = te;
     }
-    lo = fxl__asr64(lo, e - el > 63 ? 63 : e - el);
+    {
+        /* e >= el unless lo is 0 (then a negative difference wraps to a
+         * large unsigned one, and the shift of 0 by 63 is 0) */
+        const unsigned sh = (unsigned)(e - el);
+        lo = fxl__asr64(lo, sh > 63u ? 63 : (int)sh);
+    }
     sum = (int64_t)((uint64_t)hi + (uint64_t)lo);
     if (hi > 0 && lo > 0 && sum < 0)   /* 2^62 + 2^62: both even */
         return fxl__sf_make((hi >> 1) + (lo >> 1), e + 1);

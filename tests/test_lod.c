@@ -567,7 +567,10 @@ void test_sf_dot2_within_its_error(void)
             /* near cancellation: c d = a b, perturbed in the last bits */
             x[2] = x[0];
             x[3] = x[1];
-            x[3].m += (int32_t)((st >> 20) & 3) - 1;
+            {
+                const int64_t t = (int64_t)x[3].m + (int64_t)((st >> 20) & 3) - 1;
+                x[3].m = t > INT32_MAX ? INT32_MAX : (t < INT32_MIN ? INT32_MIN : (int32_t)t);
+            }
             if (sign > 0)
                 x[2].m = x[2].m == INT32_MIN ? INT32_MAX : -x[2].m;
         }
