@@ -216,7 +216,9 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     int32_t ys[2];   /* least and greatest vertex Y */
     int32_t lb, lqx, lnmax = INT32_MIN / 4, lmax = INT32_MIN / 4;
     int i, j, k, E, quad;
-    int32_t lbq, lba, lqmin;
+    int32_t lbq, lba;
+    /* q_min > 0 (setup.c: every vertex q >= 2^PF) */
+    const int32_t lqmin = log2_q8((uint64_t)tri->q_min);
     const int32_t w = tri->auto_w;
     const int cap = tri->auto_cap;
     qx = fxl__sf_make(qx_g, 0);
@@ -245,9 +247,9 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         const uint64_t g = qx_g < 0 ? (uint64_t)0 - (uint64_t)qx_g : (uint64_t)qx_g;
         if (R == 0)
             return;   /* u, v constant: no error at any length */
-        if (R <= INT32_MAX && tri->q_min > 0) {
+        if (R <= INT32_MAX) {
             const int32_t lr = fxl__log2_q8_32((uint32_t)R) - 16 * 256;
-            const int32_t lrho = log2_q8(g) + 2 - (log2_q8((uint64_t)tri->q_min) - 1);
+            const int32_t lrho = log2_q8(g) + 2 - (lqmin - 1);
             const int32_t lw = fxl__log2_q8_32((uint32_t)w) + 2;
             if (lr + 2 + lw + lrho - 512 <= lba - 1)
                 return;
@@ -291,7 +293,6 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     /* Cheap bound first: max |N| with min q, each over the vertices. */
     lb = fxl__log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
-    lqmin = log2_q8((uint64_t)tri->q_min);
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
     tri->seg_log2 = k;
     if (k >= cap)
