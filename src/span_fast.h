@@ -51,6 +51,8 @@
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
 #include "span_loop.h"
+/* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs */
+#define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL_T_MIPLIN)
 #if !FXL_T_MIPLIN && FXL_HAVE_QUAD
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
@@ -502,6 +504,12 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
     fxl__lean_t s;
     FXL_T_LV L;
 
+#if FXL_T_ROWC_SEGS && FXL__IDX_TOPU && !FXL_T_BILINEAR
+    /* the runs' loop takes U = u << (16 - lw): a 1-texel-wide level (U = 0)
+     * goes to the lean walk */
+    if (tri->level[0].log2_w == 0)
+        return 0;
+#endif
     lean_start(tri, x0, row * FXL__ONE + FXL__HALF - tri->Y0, &s, FXL_T_DEPTH);
     au.g = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
     av.g = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
@@ -559,6 +567,14 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
 #if FXL_T_DEPTH
                     uint16_t *zb = tg->depth + (rowidx + x);
 #endif
+#if FXL_T_ROWC_SEGS
+#if FXL_T_DEPTH
+                    written += FXL__CAT(FXL_T_LOOP, _segs)(dst, zb, sg, m, n4, &L);
+#else
+                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L);
+#endif
+                    (void)end;
+#else
                     do {
 #if FXL_T_DEPTH
                         written += FXL_T_LOOP(dst, zb, n4, sg->z, sg->dz, &L, sg->u, sg->v, sg->du, sg->dv);
@@ -568,6 +584,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
 #endif
                         dst += n4;
                     } while (++sg != end);
+#endif
                     x += m << k;
                     i += m;
                     continue;
@@ -950,6 +967,7 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_EXACT
 #undef FXL_T_WALK
 #undef FXL_T_ROWC
+#undef FXL_T_ROWC_SEGS
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif

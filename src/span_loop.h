@@ -179,6 +179,103 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
         }
 #endif
     }
+#if FXL_T_DEPTH
+    return (uint32_t)n - rejected;
+#else
+    return (uint32_t)n;
+#endif
+}
+
+#if FXL__FAST_SPANS && !FXL_T_QUAD && !FXL_T_MIPLIN
+/* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst (and
+ * zb), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
+ * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but one
+ * call for the run, so the level's constants stay in registers across it;
+ * and for the point loops at n = 16 (subdiv16, the default) a segment is
+ * one straight block of 16 pixels: per segment only its values are loaded
+ * and shifted (Cortex-M4 floor subdiv16 point: ~11 instructions a segment
+ * besides its pixels, where FXL_T_LOOPFN per segment spent ~39 on its
+ * set-up, spills and counter). The point loops at FXL__IDX_TOPU take
+ * U = u << (16 - lw), so lw > 0 (the rowc walk checks it). */
+static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint16_t *zb, const fxl__rseg_t *sg,
+                                                            int32_t m, int32_t n, FXL_T_LV *L)
+{
+    const fxl__rseg_t *const end = sg + m;
+#if FXL_T_BILINEAR
+#define FXL_T_SEG_UV()                                                                                      \
+    uint32_t uu = sg->u - 0x8000u, vv = sg->v - 0x8000u;                                                    \
+    const uint32_t du = sg->du, dv = sg->dv
+#else
+    const uint16_t *tex = L->tex;
+    const uint32_t lw = L->lw, shu = L->shu, mu16 = L->mu16, mv16 = L->mv16;
+    const uint32_t su = FXL__IDX_TOPU ? 16u - lw : 0u;
+    (void)shu;
+    (void)mu16;
+#define FXL_T_SEG_UV()                                                                                      \
+    uint32_t U = sg->u << su, V = sg->v << lw;                                                              \
+    const uint32_t dU = sg->du << su, dV = sg->dv << lw
+#endif
+#if FXL_T_DEPTH
+    uint32_t rejected = 0;
+#define FXL_T_SEG_BEGIN()                                                                                   \
+    FXL_T_SEG_UV();                                                                                         \
+    uint32_t z = sg->z;                                                                                     \
+    const uint32_t dz = sg->dz
+#define FXL_T_SEG_NEXT(k) (dst += (k), zb += (k))
+#else
+    (void)zb;
+#define FXL_T_SEG_BEGIN() FXL_T_SEG_UV()
+#define FXL_T_SEG_NEXT(k) (dst += (k))
+#endif
+#if !FXL_T_BILINEAR
+    if (n == 16) {
+        do {
+            FXL_T_SEG_BEGIN();
+            FXL_T_PIXEL(0);
+            FXL_T_PIXEL(1);
+            FXL_T_PIXEL(2);
+            FXL_T_PIXEL(3);
+            FXL_T_PIXEL(4);
+            FXL_T_PIXEL(5);
+            FXL_T_PIXEL(6);
+            FXL_T_PIXEL(7);
+            FXL_T_PIXEL(8);
+            FXL_T_PIXEL(9);
+            FXL_T_PIXEL(10);
+            FXL_T_PIXEL(11);
+            FXL_T_PIXEL(12);
+            FXL_T_PIXEL(13);
+            FXL_T_PIXEL(14);
+            FXL_T_PIXEL(15);
+            FXL_T_SEG_NEXT(16);
+        } while (++sg != end);
+    } else
+#endif
+    {
+        do {
+            FXL_T_SEG_BEGIN();
+            int32_t quads = n >> 2;
+            do {
+                FXL_T_PIXEL(0);
+                FXL_T_PIXEL(1);
+                FXL_T_PIXEL(2);
+                FXL_T_PIXEL(3);
+                FXL_T_SEG_NEXT(4);
+            } while (--quads != 0);
+        } while (++sg != end);
+    }
+#undef FXL_T_SEG_UV
+#undef FXL_T_SEG_BEGIN
+#undef FXL_T_SEG_NEXT
+#if FXL_T_DEPTH
+    return (uint32_t)(m * n) - rejected;
+#else
+    return (uint32_t)(m * n);
+#endif
+}
+#endif
+
+/* the pixel macros serve both functions above */
 #undef FXL_T_PIXEL
 #undef FXL_T_OUT
 #undef FXL_T_TEXEL
@@ -188,12 +285,6 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #if FXL_T_MIPLIN
 #undef FXL_T_STEP2
 #endif
-#if FXL_T_DEPTH
-    return (uint32_t)n - rejected;
-#else
-    return (uint32_t)n;
-#endif
-}
 
 #undef FXL_T_LOOPFN
 #undef FXL_T_QUAD
