@@ -1186,6 +1186,16 @@ static FXL__NOINLINE void rowc_zaxis(fxl__raxis_t *ax, int segk, int32_t nfull, 
     uint64_t s = ax->s;
     uint32_t z0 = ax->c;
     int32_t i;
+    if (ax->g == 0u) {
+        /* z constant along the row too (a level floor): every point's z
+         * is z0 and every step 0, as below (~1.5 x86-64 instructions a
+         * pixel fewer on the floor) */
+        for (i = nfull + (last ? 1 : 0); i > 0; i--, out += stride) {
+            out[0] = z0;
+            out[1] = 0u;
+        }
+        return;
+    }
     for (i = 0; i < nfull; i++, out += stride) {
         const uint32_t z1 = fast_z((int64_t)(s += ax->gN));
         out[0] = z0;

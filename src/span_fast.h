@@ -569,9 +569,9 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
 #endif
 #if FXL_T_ROWC_SEGS
 #if FXL_T_DEPTH
-                    written += FXL__CAT(FXL_T_LOOP, _segs)(dst, zb, sg, m, n4, &L);
+                    written += FXL__CAT(FXL_T_LOOP, _segs)(dst, zb, sg, m, n4, &L, az.g == 0u);
 #else
-                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L);
+                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L, 0);
 #endif
                     (void)end;
 #else

@@ -189,16 +189,22 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #if FXL__FAST_SPANS && !FXL_T_QUAD && !FXL_T_MIPLIN
 /* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst (and
  * zb), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
- * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but one
- * call for the run, so the level's constants stay in registers across it;
- * and for the point loops at n = 16 (subdiv16, the default) a segment is
- * one straight block of 16 pixels: per segment only its values are loaded
- * and shifted (Cortex-M4 floor subdiv16 point: ~11 instructions a segment
- * besides its pixels, where FXL_T_LOOPFN per segment spent ~39 on its
- * set-up, spills and counter). The point loops at FXL__IDX_TOPU take
- * U = u << (16 - lw), so lw > 0 (the rowc walk checks it). */
+ * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but:
+ * - one call for the run, so the level's constants stay in registers
+ *   across it;
+ * - for the point loops at n = 16 (subdiv16, the default) a segment is one
+ *   straight block of 16 pixels: per segment only its values are loaded
+ *   and shifted (Cortex-M4 floor subdiv16 point: ~11 instructions a
+ *   segment besides its pixels, where FXL_T_LOOPFN per segment spent ~39
+ *   on its set-up, spills and counter);
+ * - zconst (with depth): z is the same at every point and every step is 0
+ *   (a level floor: q and z constant along the row), so the depth value
+ *   tested and written is one constant (3 x86-64 instructions a pixel
+ *   fewer).
+ * The point loops at FXL__IDX_TOPU take U = u << (16 - lw), so lw > 0 (the
+ * rowc walk checks it). */
 static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint16_t *zb, const fxl__rseg_t *sg,
-                                                            int32_t m, int32_t n, FXL_T_LV *L)
+                                                            int32_t m, int32_t n, FXL_T_LV *L, int zconst)
 {
     const fxl__rseg_t *const end = sg + m;
 #if FXL_T_BILINEAR
@@ -215,57 +221,84 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
     uint32_t U = sg->u << su, V = sg->v << lw;                                                              \
     const uint32_t dU = sg->du << su, dV = sg->dv << lw
 #endif
+    /* the run: each segment's values (BEGIN()), its pixels (PIX), the
+     * pointers on; the point loops' n = 16 case is its own loop */
+#define FXL_T_SEG_QUADS(BEGIN, PIX)                                                                         \
+    do {                                                                                                    \
+        BEGIN();                                                                                            \
+        int32_t quads = n >> 2;                                                                             \
+        do {                                                                                                \
+            PIX(0);                                                                                         \
+            PIX(1);                                                                                         \
+            PIX(2);                                                                                         \
+            PIX(3);                                                                                         \
+            FXL_T_SEG_NEXT(4);                                                                              \
+        } while (--quads != 0);                                                                             \
+    } while (++sg != end)
+#if FXL_T_BILINEAR
+#define FXL_T_SEG_RUN(BEGIN, PIX) FXL_T_SEG_QUADS(BEGIN, PIX)
+#else
+#define FXL_T_SEG_RUN(BEGIN, PIX)                                                                           \
+    if (n == 16) {                                                                                          \
+        do {                                                                                                \
+            BEGIN();                                                                                        \
+            PIX(0);                                                                                         \
+            PIX(1);                                                                                         \
+            PIX(2);                                                                                         \
+            PIX(3);                                                                                         \
+            PIX(4);                                                                                         \
+            PIX(5);                                                                                         \
+            PIX(6);                                                                                         \
+            PIX(7);                                                                                         \
+            PIX(8);                                                                                         \
+            PIX(9);                                                                                         \
+            PIX(10);                                                                                        \
+            PIX(11);                                                                                        \
+            PIX(12);                                                                                        \
+            PIX(13);                                                                                        \
+            PIX(14);                                                                                        \
+            PIX(15);                                                                                        \
+            FXL_T_SEG_NEXT(16);                                                                             \
+        } while (++sg != end);                                                                              \
+    } else {                                                                                                \
+        FXL_T_SEG_QUADS(BEGIN, PIX);                                                                        \
+    }
+#endif
 #if FXL_T_DEPTH
     uint32_t rejected = 0;
-#define FXL_T_SEG_BEGIN()                                                                                   \
+#define FXL_T_SEG_NEXT(k) (dst += (k), zb += (k))
+    if (zconst) {
+        const uint16_t zc = (uint16_t)(sg->z >> 16);
+#define FXL_T_PIXEL_ZC(i)                                                                                   \
+    do {                                                                                                    \
+        if (zc > zb[i]) {                                                                                   \
+            uint32_t c = FXL_T_TEXEL();                                                                     \
+            zb[i] = zc;                                                                                     \
+            dst[i] = FXL_T_OUT(c);                                                                          \
+        } else {                                                                                            \
+            rejected++;                                                                                     \
+        }                                                                                                   \
+        FXL_T_ADVANCE();                                                                                    \
+    } while (0)
+        FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL_ZC);
+#undef FXL_T_PIXEL_ZC
+    } else {
+#define FXL_T_SEG_UVZ()                                                                                     \
     FXL_T_SEG_UV();                                                                                         \
     uint32_t z = sg->z;                                                                                     \
     const uint32_t dz = sg->dz
-#define FXL_T_SEG_NEXT(k) (dst += (k), zb += (k))
+        FXL_T_SEG_RUN(FXL_T_SEG_UVZ, FXL_T_PIXEL);
+#undef FXL_T_SEG_UVZ
+    }
 #else
     (void)zb;
-#define FXL_T_SEG_BEGIN() FXL_T_SEG_UV()
+    (void)zconst;
 #define FXL_T_SEG_NEXT(k) (dst += (k))
+    FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL);
 #endif
-#if !FXL_T_BILINEAR
-    if (n == 16) {
-        do {
-            FXL_T_SEG_BEGIN();
-            FXL_T_PIXEL(0);
-            FXL_T_PIXEL(1);
-            FXL_T_PIXEL(2);
-            FXL_T_PIXEL(3);
-            FXL_T_PIXEL(4);
-            FXL_T_PIXEL(5);
-            FXL_T_PIXEL(6);
-            FXL_T_PIXEL(7);
-            FXL_T_PIXEL(8);
-            FXL_T_PIXEL(9);
-            FXL_T_PIXEL(10);
-            FXL_T_PIXEL(11);
-            FXL_T_PIXEL(12);
-            FXL_T_PIXEL(13);
-            FXL_T_PIXEL(14);
-            FXL_T_PIXEL(15);
-            FXL_T_SEG_NEXT(16);
-        } while (++sg != end);
-    } else
-#endif
-    {
-        do {
-            FXL_T_SEG_BEGIN();
-            int32_t quads = n >> 2;
-            do {
-                FXL_T_PIXEL(0);
-                FXL_T_PIXEL(1);
-                FXL_T_PIXEL(2);
-                FXL_T_PIXEL(3);
-                FXL_T_SEG_NEXT(4);
-            } while (--quads != 0);
-        } while (++sg != end);
-    }
 #undef FXL_T_SEG_UV
-#undef FXL_T_SEG_BEGIN
+#undef FXL_T_SEG_RUN
+#undef FXL_T_SEG_QUADS
 #undef FXL_T_SEG_NEXT
 #if FXL_T_DEPTH
     return (uint32_t)(m * n) - rejected;

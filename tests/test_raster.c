@@ -751,7 +751,7 @@ static int rolled_floor_scene(tri_t *out, double roll_deg)
 /* Writes the texel index a point-sampled repeat lookup of a 256 x 256
  * texture takes (as the specialised walks index it) and counts the
  * triangles whose segments were cut by the adaptive bound. */
-static int probe_auto_seg_tris, probe_auto_quad_tris, probe_row_const_tris, probe_last_quad;
+static int probe_auto_seg_tris, probe_auto_quad_tris, probe_row_const_tris, probe_row_const_z_tris, probe_last_quad;
 static const fxl__tri_t *probe_last_tri;
 static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
@@ -760,6 +760,7 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
         probe_auto_seg_tris += tri->auto_seg != 0;
         probe_auto_quad_tris += tri->auto_quad;
         probe_row_const_tris += tri->gpx[FXL__PQ] == 0;
+        probe_row_const_z_tris += tri->gpx[FXL__PQ] == 0 && tri->gpx[FXL__PZ] != 0;
         probe_last_tri = tri;
     }
     for (i = 0; i < s->n; i++) {
@@ -767,6 +768,33 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
         s->dst[i] = (uint16_t)((((v >> 16) & 255u) << 8) | ((u >> 16) & 255u));
     }
     return (uint32_t)s->n;
+}
+
+/* probe_texel_index with the depth test and write of the fast loops
+ * (span_loop.h): z >> 16 drawn where greater than the stored depth. */
+static uint32_t probe_texel_index_z(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    uint32_t written = 0;
+    int32_t i;
+    uint16_t saved[1];
+    if (!s->zb)
+        return probe_texel_index(tri, s);
+    for (i = 0; i < s->n; i++) {
+        const uint16_t zz = (uint16_t)((s->z + (uint32_t)s->dz * (uint32_t)i) >> 16);
+        fxl__seg_t one = *s;
+        if (zz <= s->zb[i])
+            continue;
+        s->zb[i] = zz;
+        /* the texel of pixel i alone: a segment of one pixel starting there */
+        one.dst = saved;
+        one.n = 1;
+        one.u = fxl__seg_coord(s->u, s->du, s->ddu, i);
+        one.v = fxl__seg_coord(s->v, s->dv, s->ddv, i);
+        (void)probe_texel_index(tri, &one);
+        s->dst[i] = saved[0];
+        written++;
+    }
+    return written;
 }
 
 /* The specialised walks (span_fast.h) and the generic walk (span.c) cut
@@ -779,14 +807,14 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 void test_fast_and_generic_walks_agree(void)
 {
     enum { NT = 120 };
-    static uint16_t texels[256 * 256], fast[W * H], gen[W * H];
+    static uint16_t texels[256 * 256], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
     static const int16_t persp[5] = {16, FXL_PERSP_EXACT, FXL_PERSP_AUTO, FXL_PERSP_AUTO, 8};
     static const int32_t budget[5] = {0, 0, 65536 / 4, 65536 / 64, 0};
     static fxl_vertex_t tris[NT][3];
     fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
-    int i, k, m, c, skipped = 0;
+    int i, k, m, c, zd, skipped = 0;
     char msg[120];
     for (i = 0; i < 256 * 256; i++)
         texels[i] = (uint16_t)i;
@@ -802,9 +830,17 @@ void test_fast_and_generic_walks_agree(void)
             /* vertex 1 on vertex 0's row at its depth: q_x == 0 */
             tris[k][1].y = tris[k][0].y;
             tris[k][1].inv_w = tris[k][0].inv_w;
+            if (k & 1) {
+                /* one unit of inv_w apart, with q = inv_w >> 1 (the largest
+                 * inv_w >= 2^31): q_x is still 0, but z_x is not */
+                tris[k][0].inv_w &= ~1u;
+                tris[k][1].inv_w = tris[k][0].inv_w + 1u;
+                tris[k][2].inv_w |= 0x80000000u;
+            }
         }
     }
-    probe_auto_seg_tris = probe_auto_quad_tris = probe_row_const_tris = 0;
+    probe_auto_seg_tris = probe_auto_quad_tris = probe_row_const_tris = probe_row_const_z_tris = 0;
+    for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
     for (m = 0; m < 5; m++)
         for (c = 0; c < 3; c++) {
             /* a clip near the left edge, and one well inside the spans
@@ -813,7 +849,9 @@ void test_fast_and_generic_walks_agree(void)
             const fxl_rect_t cr = c == 1 ? (fxl_rect_t){11, 0, W - 9, H} : (fxl_rect_t){101, 3, 173, H - 5};
             fxl_draw_defaults(&d);
             d.texture = &tex;
-            d.depth = 0;
+            /* the second pass with the depth test and write, on a buffer
+             * cleared to 0 (farthest) */
+            d.depth = zd ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
             d.filter = FXL_FILTER_POINT;
             d.persp = persp[m];
             if (budget[m])
@@ -829,6 +867,10 @@ void test_fast_and_generic_walks_agree(void)
                  * byte-swapped targets has its pixels swapped back */
                 fxl_target_init(&t, fast, W, H, W, drawable_rgb565());
                 fxl_target_clear(&t, 0xDEAD);
+                if (zd) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zfast));
+                    fxl_target_clear_depth(&t);
+                }
                 if (c)
                     fxl_target_set_clip(&t, &cr);
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, tris[k], NULL));
@@ -836,14 +878,21 @@ void test_fast_and_generic_walks_agree(void)
                 fxl_target_init(&t, gen, W, H, W, drawable_rgb565());
                 fxl_target_clear(&t, 0xDEAD);
                 pixels_to_native(gen, W * H, t.format);
+                if (zd) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zgen));
+                    fxl_target_clear_depth(&t);
+                }
                 if (c)
                     fxl_target_set_clip(&t, &cr);
                 probe_last_tri = NULL;
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, tris[k], NULL, probe_texel_index));
+                TEST_ASSERT_EQUAL_INT(FXL_OK,
+                                      fxl__draw_triangle_with(&t, &d, tris[k], NULL, probe_texel_index_z));
                 for (i = 0; i < W * H; i++)
-                    if (fast[i] != gen[i]) {
-                        snprintf(msg, sizeof msg, "persp %d clip %d triangle %d pixel (%d,%d): fast %04x generic %04x",
-                                 persp[m], c, k, i % W, i / W, fast[i], gen[i]);
+                    if (fast[i] != gen[i] || (zd && zfast[i] != zgen[i])) {
+                        snprintf(msg, sizeof msg,
+                                 "persp %d clip %d depth %d triangle %d pixel (%d,%d): fast %04x/%04x generic %04x/%04x",
+                                 persp[m], c, zd, k, i % W, i / W, fast[i], zd ? zfast[i] : 0, gen[i],
+                                 zd ? zgen[i] : 0);
                         TEST_FAIL_MESSAGE(msg);
                     }
             }
@@ -853,17 +902,22 @@ void test_fast_and_generic_walks_agree(void)
      * with this seed: none more in the inner clip, where fewer triangles
      * show; the rest are off-target or get one length; fewer without
      * FXL_HAVE_QUAD, where none gets one quadratic length, auto_seg 2) */
-    snprintf(msg, sizeof msg, "%d of %d adaptive draws cut per segment, %d quadratic; %d of %d with q_x == 0",
-             probe_auto_seg_tris, FXL_HAVE_AUTO ? 6 * NT : 0, probe_auto_quad_tris, probe_row_const_tris,
-             (15 - skipped) * NT);
+    snprintf(msg, sizeof msg,
+             "%d of %d adaptive draws cut per segment, %d quadratic; %d of %d with q_x == 0 (%d of them z_x != 0)",
+             probe_auto_seg_tris, FXL_HAVE_AUTO ? 6 * NT * zd : 0, probe_auto_quad_tris, probe_row_const_tris,
+             (15 * zd - skipped) * NT, probe_row_const_z_tris);
     TEST_MESSAGE(msg);
+#if FXL_HAVE_DEPTH
+    /* the depth pass reached a row-constant walk whose z is not constant */
+    TEST_ASSERT_TRUE_MESSAGE(probe_row_const_z_tris > 0, msg);
+#endif
 #if FXL_HAVE_AUTO
     TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= (FXL_HAVE_QUAD ? NT / 4 : NT / 5), msg);
 #else
     {
         char summary[80];
-        snprintf(summary, sizeof summary, "%d of 15 persp x clip cases checked, %d need FXL_HAVE_AUTO",
-                 15 - skipped, skipped);
+        snprintf(summary, sizeof summary, "%d of %d persp x clip cases checked, %d need FXL_HAVE_AUTO",
+                 15 * zd - skipped, 15 * zd, skipped);
         TEST_MESSAGE(summary);
     }
 #endif
