@@ -1037,7 +1037,9 @@ static inline uint32_t step_pow2_u32(uint32_t d, int k)
 /* Thumb-1 (Cortex-M0+: eight low registers, no shifted operands) keeps
  * rowc_run's plain loop: the branchless step and two points an iteration
  * cost it 5% on the floor (subdiv16 point 32.1 -> 33.8 a pixel), where
- * the Cortex-M4 and x86-64 gain 1-3%. */
+ * the Cortex-M4 and x86-64 gain 1-3%. It also keeps the pixel loop per
+ * segment in the rowc walk: the run loop (FXL_T_LOOP##_segs) spilled
+ * there (floor subdiv16 point 33.1 -> 34.4). */
 #if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB < 2
 #define FXL__ROWC_LEAN 1
 #else

@@ -51,8 +51,9 @@
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
 #include "span_loop.h"
-/* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs */
-#define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL_T_MIPLIN)
+/* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs (not on
+ * Thumb-1, FXL__ROWC_LEAN) */
+#define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_MIPLIN)
 #if !FXL_T_MIPLIN && FXL_HAVE_QUAD
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)

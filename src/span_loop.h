@@ -186,7 +186,7 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #endif
 }
 
-#if FXL__FAST_SPANS && !FXL_T_QUAD && !FXL_T_MIPLIN
+#if FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_QUAD && !FXL_T_MIPLIN
 /* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst (and
  * zb), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
  * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but:
@@ -287,7 +287,8 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
     FXL_T_SEG_UV();                                                                                         \
     uint32_t z = sg->z;                                                                                     \
     const uint32_t dz = sg->dz
-        FXL_T_SEG_RUN(FXL_T_SEG_UVZ, FXL_T_PIXEL);
+        /* rare (q constant along the row, z not): no 16-pixel copy */
+        FXL_T_SEG_QUADS(FXL_T_SEG_UVZ, FXL_T_PIXEL);
 #undef FXL_T_SEG_UVZ
     }
 #else
