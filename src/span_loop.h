@@ -114,18 +114,22 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
      * uint32_t took a zero-extending load and a compare (-1 instruction a
      * pixel, floor subdiv16 point with depth 27.36 -> 26.28; the Cortex-M4
      * code is the same). */
-#define FXL_T_PIXEL(i)                                                                                      \
+#define FXL_T_ZPIXEL(i, zz)                                                                                 \
     do {                                                                                                    \
-        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
-        z += dz;                                                                                            \
-        if (zz > zb[i]) {                                                                                   \
+        if ((zz) > zb[i]) {                                                                                 \
             uint32_t c = FXL_T_TEXEL();                                                                     \
-            zb[i] = (uint16_t)zz;                                                                           \
+            zb[i] = (zz);                                                                                   \
             dst[i] = FXL_T_OUT(c);                                                                          \
         } else {                                                                                            \
             rejected++;                                                                                     \
         }                                                                                                   \
         FXL_T_ADVANCE();                                                                                    \
+    } while (0)
+#define FXL_T_PIXEL(i)                                                                                      \
+    do {                                                                                                    \
+        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
+        z += dz;                                                                                            \
+        FXL_T_ZPIXEL(i, zz);                                                                                \
     } while (0)
 #else
 #define FXL_T_PIXEL(i)                                                                                      \
@@ -283,17 +287,7 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
 #define FXL_T_SEG_NEXT(k) (dst += (k), zb += (k))
     if (zconst) {
         const uint16_t zc = (uint16_t)(sg->z >> 16);
-#define FXL_T_PIXEL_ZC(i)                                                                                   \
-    do {                                                                                                    \
-        if (zc > zb[i]) {                                                                                   \
-            uint32_t c = FXL_T_TEXEL();                                                                     \
-            zb[i] = zc;                                                                                     \
-            dst[i] = FXL_T_OUT(c);                                                                          \
-        } else {                                                                                            \
-            rejected++;                                                                                     \
-        }                                                                                                   \
-        FXL_T_ADVANCE();                                                                                    \
-    } while (0)
+#define FXL_T_PIXEL_ZC(i) FXL_T_ZPIXEL(i, zc)
         FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL_ZC);
 #undef FXL_T_PIXEL_ZC
     } else {
@@ -329,6 +323,9 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
 
 /* the pixel macros serve both functions above */
 #undef FXL_T_PIXEL
+#if FXL_T_DEPTH
+#undef FXL_T_ZPIXEL
+#endif
 #undef FXL_T_OUT
 #undef FXL_T_TEXEL
 #undef FXL_T_STEP
