@@ -51,9 +51,9 @@
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
 #include "span_loop.h"
-/* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs (not on
- * Thumb-1, FXL__ROWC_LEAN) */
-#define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_MIPLIN)
+/* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs (without
+ * depth; not on Thumb-1, FXL__ROWC_LEAN) */
+#define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_MIPLIN && !FXL_T_DEPTH)
 #if !FXL_T_MIPLIN && FXL_HAVE_QUAD
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
@@ -569,11 +569,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
                     uint16_t *zb = tg->depth + (rowidx + x);
 #endif
 #if FXL_T_ROWC_SEGS
-#if FXL_T_DEPTH
-                    written += FXL__CAT(FXL_T_LOOP, _segs)(dst, zb, sg, m, n4, &L, az.g == 0u);
-#else
-                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L, 0);
-#endif
+                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L);
                     (void)end;
 #else
                     do {

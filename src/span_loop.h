@@ -190,9 +190,11 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #endif
 }
 
-#if FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_QUAD && !FXL_T_MIPLIN
-/* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst (and
- * zb), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
+#if FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_QUAD && !FXL_T_MIPLIN && !FXL_T_DEPTH
+/* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst
+ * (no depth: with depth the run loop cost x86-64 instructions, or, at 16
+ * pixels with a constant z, ran 3-4 times longer for fewer instructions,
+ * not understood yet), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
  * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but:
  * - one call for the run, so the level's constants stay in registers
  *   across it;
@@ -200,15 +202,11 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
  *   straight block of 16 pixels: per segment only its values are loaded
  *   and shifted (Cortex-M4 floor subdiv16 point: ~11 instructions a
  *   segment besides its pixels, where FXL_T_LOOPFN per segment spent ~39
- *   on its set-up, spills and counter);
- * - zconst (with depth): z is the same at every point and every step is 0
- *   (a level floor: q and z constant along the row), so the depth value
- *   tested and written is one constant (3 x86-64 instructions a pixel
- *   fewer).
+ *   on its set-up, spills and counter).
  * The point loops at FXL__IDX_TOPU take U = u << (16 - lw), so lw > 0 (the
  * rowc walk checks it). */
 static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint16_t *zb, const fxl__rseg_t *sg,
-                                                            int32_t m, int32_t n, FXL_T_LV *L, int zconst)
+                                                            int32_t m, int32_t n, FXL_T_LV *L)
 {
     const fxl__rseg_t *const end = sg + m;
 #if FXL_T_BILINEAR
@@ -239,21 +237,7 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
             FXL_T_SEG_NEXT(4);                                                                              \
         } while (--quads != 0);                                                                             \
     } while (++sg != end)
-#if FXL_T_BILINEAR && FXL_T_DEPTH
-    /* a pixel an iteration: bl_sample is large, and four copies of it in
-     * each of these loops used up GCC's unit growth, which then left a
-     * per-span test out of line in the trilinear walk (+0.2% on the
-     * tunnel's AUTO, Cortex-M4) */
-#define FXL_T_SEG_RUN(BEGIN, PIX)                                                                           \
-    do {                                                                                                    \
-        BEGIN();                                                                                            \
-        uint16_t *const seg_end = dst + n;                                                                  \
-        do {                                                                                                \
-            PIX(0);                                                                                         \
-            FXL_T_SEG_NEXT(1);                                                                              \
-        } while (dst != seg_end);                                                                           \
-    } while (++sg != end)
-#elif FXL_T_BILINEAR
+#if FXL_T_BILINEAR
 #define FXL_T_SEG_RUN(BEGIN, PIX) FXL_T_SEG_QUADS(BEGIN, PIX)
 #else
 #define FXL_T_SEG_RUN(BEGIN, PIX)                                                                           \
@@ -282,42 +266,14 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
         FXL_T_SEG_QUADS(BEGIN, PIX);                                                                        \
     }
 #endif
-#if FXL_T_DEPTH
-    uint32_t rejected = 0;
-#define FXL_T_SEG_NEXT(k) (dst += (k), zb += (k))
-    if (zconst) {
-        const uint16_t zc = (uint16_t)(sg->z >> 16);
-#define FXL_T_PIXEL_ZC(i) FXL_T_ZPIXEL(i, zc)
-        FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL_ZC);
-#undef FXL_T_PIXEL_ZC
-    } else {
-#define FXL_T_SEG_UVZ()                                                                                     \
-    FXL_T_SEG_UV();                                                                                         \
-    uint32_t z = sg->z;                                                                                     \
-    const uint32_t dz = sg->dz
-        /* rare (q constant along the row, z not): no 16-pixel copy */
-#if FXL_T_BILINEAR
-        FXL_T_SEG_RUN(FXL_T_SEG_UVZ, FXL_T_PIXEL);
-#else
-        FXL_T_SEG_QUADS(FXL_T_SEG_UVZ, FXL_T_PIXEL);
-#endif
-#undef FXL_T_SEG_UVZ
-    }
-#else
     (void)zb;
-    (void)zconst;
 #define FXL_T_SEG_NEXT(k) (dst += (k))
     FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL);
-#endif
 #undef FXL_T_SEG_UV
 #undef FXL_T_SEG_RUN
 #undef FXL_T_SEG_QUADS
 #undef FXL_T_SEG_NEXT
-#if FXL_T_DEPTH
-    return (uint32_t)(m * n) - rejected;
-#else
     return (uint32_t)(m * n);
-#endif
 }
 #endif
 
