@@ -563,15 +563,14 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
                 if (x >= cl && x < lim4) {
                     /* a run of whole segments */
                     const int32_t m0 = ((lim4 - 1 - x) >> k) + 1, m = m0 < cnt - i ? m0 : cnt - i;
-                    const fxl__rseg_t *const end = sg + m;
                     uint16_t *dst = tg->pixels + (rowidx + x);
+#if FXL_T_ROWC_SEGS
+                    FXL__CAT(FXL_T_LOOP, _segs)(dst, sg, m, n4, &L);
+#else
+                    const fxl__rseg_t *const end = sg + m;
 #if FXL_T_DEPTH
                     uint16_t *zb = tg->depth + (rowidx + x);
 #endif
-#if FXL_T_ROWC_SEGS
-                    (void)FXL__CAT(FXL_T_LOOP, _segs)(dst, 0, sg, m, n4, &L);
-                    (void)end;
-#else
                     do {
 #if FXL_T_DEPTH
                         written += FXL_T_LOOP(dst, zb, n4, sg->z, sg->dz, &L, sg->u, sg->v, sg->du, sg->dv);

@@ -114,22 +114,18 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
      * uint32_t took a zero-extending load and a compare (-1 instruction a
      * pixel, floor subdiv16 point with depth 27.36 -> 26.28; the Cortex-M4
      * code is the same). */
-#define FXL_T_ZPIXEL(i, zz)                                                                                 \
+#define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
-        if ((zz) > zb[i]) {                                                                                 \
+        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
+        z += dz;                                                                                            \
+        if (zz > zb[i]) {                                                                                   \
             uint32_t c = FXL_T_TEXEL();                                                                     \
-            zb[i] = (zz);                                                                                   \
+            zb[i] = (uint16_t)zz;                                                                           \
             dst[i] = FXL_T_OUT(c);                                                                          \
         } else {                                                                                            \
             rejected++;                                                                                     \
         }                                                                                                   \
         FXL_T_ADVANCE();                                                                                    \
-    } while (0)
-#define FXL_T_PIXEL(i)                                                                                      \
-    do {                                                                                                    \
-        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
-        z += dz;                                                                                            \
-        FXL_T_ZPIXEL(i, zz);                                                                                \
     } while (0)
 #else
 #define FXL_T_PIXEL(i)                                                                                      \
@@ -191,11 +187,11 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 }
 
 #if FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_QUAD && !FXL_T_MIPLIN && !FXL_T_DEPTH
-/* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst
- * (no depth: with depth the run loop cost x86-64 instructions, or, at 16
- * pixels with a constant z, ran 3-4 times longer for fewer instructions,
- * not understood yet), their starts and steps in sg[0 .. m) (the rowc walk's runs); returns
- * the pixels written. Bit for bit FXL_T_LOOPFN once per segment, but:
+/* m >= 1 whole segments of n = 2^k >= 4 pixels back to back from dst,
+ * their starts and steps in sg[0 .. m) (the rowc walk's runs); no depth:
+ * with depth a run loop cost x86-64 instructions, or, at 16 pixels with a
+ * constant z, ran 3-4 times longer for fewer instructions (not understood
+ * yet). Bit for bit FXL_T_LOOPFN once per segment, but:
  * - one call for the run, so the level's constants stay in registers
  *   across it;
  * - for the point loops at n = 16 (subdiv16, the default) a segment is one
@@ -205,8 +201,8 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
  *   on its set-up, spills and counter).
  * The point loops at FXL__IDX_TOPU take U = u << (16 - lw), so lw > 0 (the
  * rowc walk checks it). */
-static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint16_t *zb, const fxl__rseg_t *sg,
-                                                            int32_t m, int32_t n, FXL_T_LV *L)
+static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl__rseg_t *sg, int32_t m, int32_t n,
+                                                        FXL_T_LV *L)
 {
     const fxl__rseg_t *const end = sg + m;
 #if FXL_T_BILINEAR
@@ -223,65 +219,49 @@ static FXL__NOINLINE uint32_t FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, uint1
     uint32_t U = sg->u << su, V = sg->v << lw;                                                              \
     const uint32_t dU = sg->du << su, dV = sg->dv << lw
 #endif
-    /* the run: each segment's values (BEGIN()), its pixels (PIX), the
-     * pointers on; the point loops' n = 16 case is its own loop */
-#define FXL_T_SEG_QUADS(BEGIN, PIX)                                                                         \
-    do {                                                                                                    \
-        BEGIN();                                                                                            \
-        int32_t quads = n >> 2;                                                                             \
-        do {                                                                                                \
-            PIX(0);                                                                                         \
-            PIX(1);                                                                                         \
-            PIX(2);                                                                                         \
-            PIX(3);                                                                                         \
-            FXL_T_SEG_NEXT(4);                                                                              \
-        } while (--quads != 0);                                                                             \
-    } while (++sg != end)
-#if FXL_T_BILINEAR
-#define FXL_T_SEG_RUN(BEGIN, PIX) FXL_T_SEG_QUADS(BEGIN, PIX)
-#else
-#define FXL_T_SEG_RUN(BEGIN, PIX)                                                                           \
-    if (n == 16) {                                                                                          \
-        do {                                                                                                \
-            BEGIN();                                                                                        \
-            PIX(0);                                                                                         \
-            PIX(1);                                                                                         \
-            PIX(2);                                                                                         \
-            PIX(3);                                                                                         \
-            PIX(4);                                                                                         \
-            PIX(5);                                                                                         \
-            PIX(6);                                                                                         \
-            PIX(7);                                                                                         \
-            PIX(8);                                                                                         \
-            PIX(9);                                                                                         \
-            PIX(10);                                                                                        \
-            PIX(11);                                                                                        \
-            PIX(12);                                                                                        \
-            PIX(13);                                                                                        \
-            PIX(14);                                                                                        \
-            PIX(15);                                                                                        \
-            FXL_T_SEG_NEXT(16);                                                                             \
-        } while (++sg != end);                                                                              \
-    } else {                                                                                                \
-        FXL_T_SEG_QUADS(BEGIN, PIX);                                                                        \
-    }
+#if !FXL_T_BILINEAR
+    if (n == 16) {
+        do {
+            FXL_T_SEG_UV();
+            FXL_T_PIXEL(0);
+            FXL_T_PIXEL(1);
+            FXL_T_PIXEL(2);
+            FXL_T_PIXEL(3);
+            FXL_T_PIXEL(4);
+            FXL_T_PIXEL(5);
+            FXL_T_PIXEL(6);
+            FXL_T_PIXEL(7);
+            FXL_T_PIXEL(8);
+            FXL_T_PIXEL(9);
+            FXL_T_PIXEL(10);
+            FXL_T_PIXEL(11);
+            FXL_T_PIXEL(12);
+            FXL_T_PIXEL(13);
+            FXL_T_PIXEL(14);
+            FXL_T_PIXEL(15);
+            dst += 16;
+        } while (++sg != end);
+    } else
 #endif
-    (void)zb;
-#define FXL_T_SEG_NEXT(k) (dst += (k))
-    FXL_T_SEG_RUN(FXL_T_SEG_UV, FXL_T_PIXEL);
+    {
+        do {
+            FXL_T_SEG_UV();
+            int32_t quads = n >> 2;
+            do {
+                FXL_T_PIXEL(0);
+                FXL_T_PIXEL(1);
+                FXL_T_PIXEL(2);
+                FXL_T_PIXEL(3);
+                dst += 4;
+            } while (--quads != 0);
+        } while (++sg != end);
+    }
 #undef FXL_T_SEG_UV
-#undef FXL_T_SEG_RUN
-#undef FXL_T_SEG_QUADS
-#undef FXL_T_SEG_NEXT
-    return (uint32_t)(m * n);
 }
 #endif
 
 /* the pixel macros serve both functions above */
 #undef FXL_T_PIXEL
-#if FXL_T_DEPTH
-#undef FXL_T_ZPIXEL
-#endif
 #undef FXL_T_OUT
 #undef FXL_T_TEXEL
 #undef FXL_T_STEP
