@@ -138,7 +138,11 @@ typedef struct fxl__tri {
     int64_t lod_s[2][2];
     int32_t lod_mq[2];
     int32_t lod_e512[2];
+    int32_t lod_dirc[2];         /* direction g's 2 log2 length when lod_mq[g] == 0 (then independent of u, v) */
     uint8_t lod_ash;
+    /* the per-segment LOD (span.c, lod_setup chooses the copy: the ones
+     * for lod_mq[g] == 0 read lod_dirc[g]) */
+    int32_t (*lod_at)(const struct fxl__tri *tri, int64_t qv, int64_t u64, int64_t v64);
     uint8_t uv_len[2];           /* bit length of the largest rebased vertex u, v (normalised q16, setup.c) */
 
     /* derived once per triangle for the span walk (fxl__span_setup) */

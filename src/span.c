@@ -479,31 +479,6 @@ static void lod_scale(fxl__tri_t *tri, int g, const fxl__sf_t s[2], fxl__sf_t qg
     tri->lod_e512[g] = 512 * e;
 }
 
-/* lod_at's per-triangle factors (fxl__span_setup). */
-static void lod_setup(fxl__tri_t *tri)
-{
-    const int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
-    const int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
-    /* u, v at a correction point lie between the vertices' values (convex
-     * combinations): the shift that keeps those below 2^30 (one bit of
-     * margin for rounding; the conversion saturates beyond it) */
-    int ash = tri->uv_len[0] + (int)tri->tex->log2_w + 1 - 30;
-    const int ashv = tri->uv_len[1] + (int)tri->tex->log2_h + 1 - 30;
-    fxl__sf_t s[2];
-
-    if (ashv > ash)
-        ash = ashv;
-    if (ash < 0)
-        ash = 0;
-    tri->lod_ash = (uint8_t)ash;
-    s[0] = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
-    s[1] = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
-    lod_scale(tri, 0, s, fxl__sf_make(tri->gpx[PQ], 0), ash);
-    s[0] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
-    s[1] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
-    lod_scale(tri, 1, s, fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0), ash);
-}
-
 /* 2 log2 |(a, b)| in q8 for int64 a, b (INT32_MIN / 4 for (0, 0)): the top
  * 15 bits of the larger magnitude and the same bits of the other squared
  * in 32 bits, i.e. within 2^-13 relative before the table. */
@@ -567,13 +542,14 @@ static FXL__SF_INLINE int32_t lod_log2_q(int64_t q)
 #endif
 }
 
-#if defined(__GNUC__)
-__attribute__((noinline))   /* once per segment, from every walk with mip levels */
-#endif
-static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+/* The LOD at a correction point; xc, yc (constants in each copy): direction
+ * x, y has lod_mq 0, so its length is lod_dirc's. */
+static FXL__SF_INLINE int32_t lod_at_with(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64, const int xc,
+                                          const int yc)
 {
     const int32_t u = lod_coord(u64, tri->lod_ash), v = lod_coord(v64, tri->lod_ash);
-    const int32_t lx = lod_dir(tri, 0, u, v), ly = lod_dir(tri, 1, u, v);
+    const int32_t lx = xc ? tri->lod_dirc[0] : lod_dir(tri, 0, u, v);
+    const int32_t ly = yc ? tri->lod_dirc[1] : lod_dir(tri, 1, u, v);
 
     /* inside the triangle q_min <= q <= q_max; the clamps catch rounding
      * at a sliver's tips */
@@ -583,6 +559,82 @@ static int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v6
         qv = tri->q_max;
     return fxl__asr32(lx > ly ? lx : ly, 1) - lod_log2_q(qv) - 16 * 256;
 }
+
+/* Out of line: once per segment, from every walk with mip levels. */
+#if defined(__GNUC__)
+#define FXL__LOD_NOINLINE __attribute__((noinline))
+#else
+#define FXL__LOD_NOINLINE
+#endif
+static FXL__LOD_NOINLINE int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+{
+    return lod_at_with(tri, qv, u64, v64, 0, 0);
+}
+
+#if !defined(__OPTIMIZE_SIZE__)   /* the copies that skip a constant direction */
+static FXL__LOD_NOINLINE int32_t lod_at_xc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+{
+    return lod_at_with(tri, qv, u64, v64, 1, 0);
+}
+
+static FXL__LOD_NOINLINE int32_t lod_at_yc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+{
+    return lod_at_with(tri, qv, u64, v64, 0, 1);
+}
+
+static FXL__LOD_NOINLINE int32_t lod_at_xyc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+{
+    return lod_at_with(tri, qv, u64, v64, 1, 1);
+}
+#endif
+
+/* lod_at's per-triangle factors (fxl__span_setup). */
+static void lod_setup(fxl__tri_t *tri)
+{
+    const int shu = tri->a_shift[FXL__AU] + (int)tri->tex->log2_w;
+    const int shv = tri->a_shift[FXL__AV] + (int)tri->tex->log2_h;
+    /* u, v at a correction point lie between the vertices' values (convex
+     * combinations): the shift that keeps those below 2^30 (one bit of
+     * margin for rounding; the conversion saturates beyond it) */
+    int ash = tri->uv_len[0] + (int)tri->tex->log2_w + 1 - 30;
+    const int ashv = tri->uv_len[1] + (int)tri->tex->log2_h + 1 - 30;
+    fxl__sf_t s[2];
+
+    if (ashv > ash)
+        ash = ashv;
+    if (ash < 0)
+        ash = 0;
+    tri->lod_ash = (uint8_t)ash;
+    s[0] = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
+    s[1] = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
+    lod_scale(tri, 0, s, fxl__sf_make(tri->gpx[PQ], 0), ash);
+    s[0] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
+    s[1] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
+    lod_scale(tri, 1, s, fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0), ash);
+    /* A direction in which q does not change (lod_mq 0: a level floor's
+     * rows, an upright wall's columns) has a derivative length that does
+     * not depend on u, v: lod_at reads it instead of measuring it per
+     * segment (the same value). */
+#if defined(__OPTIMIZE_SIZE__)
+    tri->lod_at = lod_at;   /* one copy: the same values */
+#else
+    {
+        static int32_t (*const pick[4])(const fxl__tri_t *, int64_t, int64_t, int64_t) = {lod_at, lod_at_xc,
+                                                                                         lod_at_yc, lod_at_xyc};
+        int c = 0;
+        if (tri->lod_mq[0] == 0) {
+            tri->lod_dirc[0] = lod_dir(tri, 0, 0, 0);
+            c = 1;
+        }
+        if (tri->lod_mq[1] == 0) {
+            tri->lod_dirc[1] = lod_dir(tri, 1, 0, 0);
+            c += 2;
+        }
+        tri->lod_at = pick[c];
+    }
+#endif
+}
+
 #endif
 
 /* ---- the fast path ----------------------------------------------------------
@@ -1225,7 +1277,7 @@ static inline uint32_t shift_step_u32(uint32_t d, int level)
 
 static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_t *p0)
 {
-    return lod_at(tri, q0, p0->u64, p0->v64);
+    return tri->lod_at(tri, q0, p0->u64, p0->v64);
 }
 #endif
 
@@ -1665,7 +1717,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
                         lod = lod_held;
                     else
 #endif
-                        lod = lod_held = seg_lod(tri, lod_at(tri, pv0[PQ], p0.u64, p0.v64));
+                        lod = lod_held = seg_lod(tri, tri->lod_at(tri, pv0[PQ], p0.u64, p0.v64));
                 }
                 seg.lod_q8 = lod;
                 if (tri->mip_linear) {
