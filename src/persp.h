@@ -44,7 +44,16 @@
  * expression is folded, and where it is false the portable form is used. */
 #define FXL__SAR_IS_ARITHMETIC ((((int64_t)-5) >> 1) == -3 && (((int32_t)-5) >> 1) == -3)
 
-static inline int fxl__clz64_inline(uint64_t x)
+/* Forced inline where it is a binary search (no CLZ instruction: the
+ * Cortex-M0+) outside -Os: GCC sometimes left it out of line there, a
+ * call a correction point. Elsewhere it is one or two instructions. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__) && !defined(__ARM_FEATURE_CLZ) && !defined(__x86_64__) &&   \
+    !defined(__aarch64__)
+#define FXL__CLZ_INLINE inline __attribute__((always_inline))
+#else
+#define FXL__CLZ_INLINE inline
+#endif
+static FXL__CLZ_INLINE int fxl__clz64_inline(uint64_t x)
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__))
     return x ? __builtin_clzll(x) : 64;

@@ -664,9 +664,17 @@ static void lod_setup(fxl__tri_t *tri)
 #if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB >= 2
 #define FXL__IDX_TOPU 1
 #define FXL__IDX(U, V, shu, mu16, mv16) (((U) >> (shu)) + (((V) & (mv16)) >> 16))
+#define FXL__TEXEL(tex, U, V, shu, mu16, mv16) ((tex)[FXL__IDX(U, V, shu, mu16, mv16)])
 #else
 #define FXL__IDX_TOPU 0
 #define FXL__IDX(U, V, shu, mu16, mv16) ((((V) & (mv16)) | ((U) & (mu16))) >> 16)
+/* The masks leave bit 15 clear, so >> 15 is the texel's byte offset: one
+ * shift where the index takes two on Thumb-1 (a register offset is not
+ * scaled there). Written out, because GCC found it only in some builds
+ * (a change elsewhere in span.c cost the Cortex-M0+ floor point loop one
+ * instruction a pixel). */
+#define FXL__TEXEL(tex, U, V, shu, mu16, mv16)                                                               \
+    (*(const uint16_t *)(const void *)((const uint8_t *)(tex) + ((((V) & (mv16)) | ((U) & (mu16))) >> 15)))
 #endif
 
 typedef struct fl {
@@ -676,7 +684,14 @@ typedef struct fl {
 } fl_t;
 
 #if FXL__V_ANY_PT
-static inline void fl_init(fl_t *f, const fxl__level_t *lv)
+/* Forced inline where speed counts: once a segment in some walks, and GCC
+ * left it out of line in some Cortex-M0+ builds. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__FL_INLINE inline __attribute__((always_inline))
+#else
+#define FXL__FL_INLINE inline
+#endif
+static FXL__FL_INLINE void fl_init(fl_t *f, const fxl__level_t *lv)
 {
     f->tex = (const uint16_t *)lv->texels;
     f->lw = lv->log2_w;

@@ -83,10 +83,10 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
     const uint32_t dU2 = FXL__IDX_TOPU ? (lw2 ? du2 << (16u - lw2) : 0u) : du2, dV2 = dv2 << lw2;
 #define FXL_T_STEP2() (U2 += dU2, V2 += dV2)
 #define FXL_T_TEXEL()                                                                                       \
-    compact565(lerp565x(expand565(tex[FXL__IDX(U, V, shu, mu16, mv16)]),                                    \
-                        expand565(tex2[FXL__IDX(U2, V2, shu2, mu16b, mv16b)]), f))
+    compact565(lerp565x(expand565(FXL__TEXEL(tex, U, V, shu, mu16, mv16)),                                  \
+                        expand565(FXL__TEXEL(tex2, U2, V2, shu2, mu16b, mv16b)), f))
 #else
-#define FXL_T_TEXEL() ((uint32_t)tex[FXL__IDX(U, V, shu, mu16, mv16)])
+#define FXL_T_TEXEL() ((uint32_t)FXL__TEXEL(tex, U, V, shu, mu16, mv16))
 #endif
 #define FXL_T_STEP() (U += dU, V += dV)
 #define FXL_T_CURVE() (dU += ddU, dV += ddV)
