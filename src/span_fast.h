@@ -43,10 +43,10 @@
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
 #define FXL_T_LV bl_t
-#define FXL_T_LV_INIT bl_init
+#define FXL_T_LV_INIT(Lp, lv, u, v) bl_init(Lp, lv, u, v)
 #else
 #define FXL_T_LV fl_t
-#define FXL_T_LV_INIT fl_init
+#define FXL_T_LV_INIT(Lp, lv, u, v) fl_init(Lp, lv)
 #endif
 #define FXL_T_LOOPFN FXL_T_LOOP
 #define FXL_T_QUAD 0
@@ -66,7 +66,7 @@
 static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     FXL_T_LV L;
-    FXL_T_LV_INIT(&L, s->lvl);
+    FXL_T_LV_INIT(&L, s->lvl, s->u, s->v);
     (void)tri;
 #if FXL_HAVE_QUAD
     if (s->ddu | s->ddv)
@@ -284,8 +284,8 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
         x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
 #endif
     const int32_t x0 = x;
-    FXL_T_LV_INIT(&L, &tri->level[0]);
     lean_start(tri, x, dY, &s, FXL_T_DEPTH);
+    FXL_T_LV_INIT(&L, &tri->level[0], s.u, s.v);
 #if FXL_HAVE_AUTO
 #define FXL_T_TROW t_row
 #else
@@ -535,7 +535,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
     az.g = (uint64_t)tri->gpx[FXL__PZ];
     az.c = s.z;
 #endif
-    FXL_T_LV_INIT(&L, &tri->level[0]);
+    FXL_T_LV_INIT(&L, &tri->level[0], s.u, s.v);
     {
         /* segments starting before lim4 are whole, end inside [cl, cr)
          * before the span's last pixel, and have a multiple of 4 pixels */
@@ -642,8 +642,8 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
     fxl__lean_t s;
     FXL_T_LV L;
 
-    FXL_T_LV_INIT(&L, &tri->level[0]);
     lean_start(tri, cl, row * FXL__ONE + FXL__HALF - tri->Y0, &s, FXL_T_DEPTH);
+    FXL_T_LV_INIT(&L, &tri->level[0], s.u, s.v);
     (void)FXL_T_RUN(tri, 0, 0, &s, &L, tg->pixels + clidx, FXL_T_DEPTH ? tg->depth + clidx : 0, cl, xl, xr, cl, cr,
                     &divisions, &written);
     if (tri->stats) {
@@ -709,9 +709,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 #if FXL_T_MIPLIN
     FXL_T_LV L2;
     const fxl__level_t *cur2 = cur;
-    FXL_T_LV_INIT(&L2, cur2);
 #endif
-    FXL_T_LV_INIT(&L, cur);
 #if FXL_HAVE_AUTO
     if (autoseg) {
         /* A span whose every block of 2^k fits the bound (k is auto_cap
@@ -748,6 +746,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     fast_correct(tri, (int64_t)w.sq, (int64_t)w.su, (int64_t)w.sv, &w.pt);
     cu[0] = w.pt.u;
     cv[0] = w.pt.v;
+    FXL_T_LV_INIT(&L, cur, cu[0], cv[0]);
+#if FXL_T_MIPLIN
+    L2 = L;   /* level 0 too: the first blended segment prepares its own */
+#endif
 #if FXL_HAVE_MIPMAP
     clod[0] = 0;   /* written before it is read; this tells the compiler */
     clodb[0] = 0;  /* the walk starts on the LOD grid, where it is computed */
@@ -858,13 +860,13 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
                 int32_t idx = rowidx + a;
                 if (lv != cur) {
                     cur = lv;
-                    FXL_T_LV_INIT(&L, lv);
+                    FXL_T_LV_INIT(&L, lv, u, v);
                 }
 #if FXL_T_MIPLIN
                 if (f != 0u) {
                     if (lv2 != cur2) {
                         cur2 = lv2;
-                        FXL_T_LV_INIT(&L2, lv2);
+                        FXL_T_LV_INIT(&L2, lv2, u2, v2);
                     }
                     written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L, u,
                                           v, du, dv, &L2, u2, v2, du2, dv2, f);
