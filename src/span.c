@@ -39,6 +39,14 @@
 #define FXL__V_ANY_NOZ (FXL__FAST_SPANS && FXL__V_ANY1 && FXL__V_NOZ)
 #define FXL__V_ANY_Z (FXL__FAST_SPANS && FXL__V_ANY1 && FXL__V_Z)
 
+/* Small helpers of the pixel loops and walks that GCC's inlining left out
+ * of line, or compiled worse, in some builds: forced where speed counts. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__HOT_INLINE inline __attribute__((always_inline))
+#else
+#define FXL__HOT_INLINE inline
+#endif
+
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
  * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
  * 11..15, b in 0..4) leaving >= 5 zero bits above each channel, so one
@@ -152,7 +160,27 @@ static inline uint32_t bl_key(uint32_t uu, uint32_t vv)
 #endif
 }
 
-static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv);
+/* The footprint of key `key` at uu, vv: the cache's fetch. */
+static FXL__HOT_INLINE void bl_refill(bl_t *b, uint32_t key, uint32_t uu, uint32_t vv)
+{
+    const uint32_t c0 = (uu >> 16) & b->mu, c1 = (c0 + 1u) & b->mu;
+    const uint32_t rv = (vv >> 16) & b->mv;
+    const uint16_t *t0 = b->tex + (rv << b->lw), *t1 = b->tex + (((rv + 1u) & b->mv) << b->lw);
+#if FXL__BL64
+    const uint64_t e0 = expand565(t0[c0]) | (uint64_t)expand565(t1[c0]) << 32;
+    const uint64_t e1 = expand565(t0[c1]) | (uint64_t)expand565(t1[c1]) << 32;
+    b->key = key;
+    b->a = (e0 << 5) + FXL_RND565_2;
+    b->d = e1 - e0;
+#else
+    const uint32_t e00 = expand565(t0[c0]), e01 = expand565(t1[c0]);
+    b->key = key;
+    b->a0 = (e00 << 5) + FXL_RND565;
+    b->d0 = expand565(t0[c1]) - e00;
+    b->a1 = (e01 << 5) + FXL_RND565;
+    b->d1 = expand565(t1[c1]) - e01;
+#endif
+}
 
 /* Level lv, with u, v (q16 texels) where the first sample will be: with
  * PKHTB keys the footprint there is fetched now (its first sample would
@@ -164,8 +192,7 @@ static inline void bl_init(bl_t *b, const fxl__level_t *lv, uint32_t u, uint32_t
     b->mv = lv->mask_v;
     b->lw = lv->log2_w;
 #if FXL__BL_PKH
-    b->key = ~bl_key(u - 0x8000u, v - 0x8000u);   /* any other key: a miss */
-    (void)bl_sample(b, u - 0x8000u, v - 0x8000u);
+    bl_refill(b, bl_key(u - 0x8000u, v - 0x8000u), u - 0x8000u, v - 0x8000u);
 #else
     (void)u;
     (void)v;
@@ -184,25 +211,8 @@ static inline uint32_t bl_sample(bl_t *b, uint32_t uu, uint32_t vv)
     const uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
     uint32_t top, bot;
 
-    if (key != b->key) {
-        const uint32_t c0 = (uu >> 16) & b->mu, c1 = (c0 + 1u) & b->mu;
-        const uint32_t rv = (vv >> 16) & b->mv;
-        const uint16_t *t0 = b->tex + (rv << b->lw), *t1 = b->tex + (((rv + 1u) & b->mv) << b->lw);
-#if FXL__BL64
-        const uint64_t e0 = expand565(t0[c0]) | (uint64_t)expand565(t1[c0]) << 32;
-        const uint64_t e1 = expand565(t0[c1]) | (uint64_t)expand565(t1[c1]) << 32;
-        b->key = key;
-        b->a = (e0 << 5) + FXL_RND565_2;
-        b->d = e1 - e0;
-#else
-        const uint32_t e00 = expand565(t0[c0]), e01 = expand565(t1[c0]);
-        b->key = key;
-        b->a0 = (e00 << 5) + FXL_RND565;
-        b->d0 = expand565(t0[c1]) - e00;
-        b->a1 = (e01 << 5) + FXL_RND565;
-        b->d1 = expand565(t1[c1]) - e01;
-#endif
-    }
+    if (key != b->key)
+        bl_refill(b, key, uu, vv);
 #if FXL__BL64
     {
         const uint64_t tb = ((b->a + b->d * fu) >> 5) & FXL_MASK565_2;
@@ -721,14 +731,9 @@ typedef struct fl {
 } fl_t;
 
 #if FXL__V_ANY_PT
-/* Forced inline where speed counts: once a segment in some walks, and GCC
- * left it out of line in some Cortex-M0+ builds. */
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define FXL__FL_INLINE inline __attribute__((always_inline))
-#else
-#define FXL__FL_INLINE inline
-#endif
-static FXL__FL_INLINE void fl_init(fl_t *f, const fxl__level_t *lv)
+/* forced inline: once a segment in some walks, and GCC left it out of line
+ * in some Cortex-M0+ builds */
+static FXL__HOT_INLINE void fl_init(fl_t *f, const fxl__level_t *lv)
 {
     f->tex = (const uint16_t *)lv->texels;
     f->lw = lv->log2_w;
