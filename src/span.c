@@ -47,6 +47,12 @@
 #define FXL__HOT_INLINE inline
 #endif
 
+#if defined(__GNUC__)
+#define FXL__NOINLINE __attribute__((noinline))
+#else
+#define FXL__NOINLINE
+#endif
+
 /* ---- RGB565 arithmetic without unpacking ---------------------------------
  * expand() spreads r5 g6 b5 into 0x07E0F81F lanes (g in bits 21..26, r in
  * 11..15, b in 0..4) leaving >= 5 zero bits above each channel, so one
@@ -608,28 +614,23 @@ static FXL__SF_INLINE int32_t lod_at_with(const fxl__tri_t *tri, int64_t qv, int
 }
 
 /* Out of line: once per segment, from every walk with mip levels. */
-#if defined(__GNUC__)
-#define FXL__LOD_NOINLINE __attribute__((noinline))
-#else
-#define FXL__LOD_NOINLINE
-#endif
-static FXL__LOD_NOINLINE int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+static FXL__NOINLINE int32_t lod_at(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     return lod_at_with(tri, qv, u64, v64, 0, 0);
 }
 
 #if !defined(__OPTIMIZE_SIZE__)   /* the copies that skip a constant direction */
-static FXL__LOD_NOINLINE int32_t lod_at_xc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+static FXL__NOINLINE int32_t lod_at_xc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     return lod_at_with(tri, qv, u64, v64, 1, 0);
 }
 
-static FXL__LOD_NOINLINE int32_t lod_at_yc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+static FXL__NOINLINE int32_t lod_at_yc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     return lod_at_with(tri, qv, u64, v64, 0, 1);
 }
 
-static FXL__LOD_NOINLINE int32_t lod_at_xyc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+static FXL__NOINLINE int32_t lod_at_xyc(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
 {
     return lod_at_with(tri, qv, u64, v64, 1, 1);
 }
@@ -766,11 +767,6 @@ typedef struct fxl__walk {
 #define FXL__UNSWITCH inline
 #endif
 
-#if defined(__GNUC__)
-#define FXL__NOINLINE __attribute__((noinline))
-#else
-#define FXL__NOINLINE
-#endif
 
 /* Segments per batch of the specialised walks (span_fast.h): its arrays
  * take 12 bytes a segment on the stack (16 with depth). */
