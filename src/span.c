@@ -107,7 +107,7 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
  *   footprint (a key that differs only by whole texture periods costs a
  *   needless fetch, nothing else). Two layouts:
  *   - with the DSP extension (Cortex-M4/M7/M33), uu's in bits 16..31 and
- *     vv's in 0..15: one PKHTB (inline assembly: GCC does not form it
+ *     vv's in 0..15: one PKHTB (inline assembly: GCC 12 does not form it
  *     from C). The portable form took three instructions and a register
  *     for the mask that the Cortex-M4 loops lack: it was reloaded every
  *     pixel, with spills around it (floor subdiv16 bilinear 46.0 -> 41.8
