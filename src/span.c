@@ -761,12 +761,7 @@ typedef struct fxl__walk {
 
 /* Forced inline where code size allows: a function called twice with a
  * constant argument becomes two copies specialised for it. */
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define FXL__UNSWITCH inline __attribute__((always_inline))
-#else
-#define FXL__UNSWITCH inline
-#endif
-
+#define FXL__UNSWITCH FXL__HOT_INLINE
 
 /* Segments per batch of the specialised walks (span_fast.h): its arrays
  * take 12 bytes a segment on the stack (16 with depth). */
