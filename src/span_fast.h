@@ -4,7 +4,9 @@
  * Macro contract, all defined by the includer and undefined here:
  *   FXL_T_LOOP      name of the generated pixel loop (span_loop.h, static
  *                   inline); with FXL_HAVE_QUAD a second, FXL_T_LOOP##_quad,
- *                   steps quadratic segments (one-level variants only)
+ *                   steps quadratic segments (one-level variants only);
+ *                   with depth a third, FXL_T_LOOP##_z0, holds a constant
+ *                   depth (rows of a level floor)
  *   FXL_T_SPAN      prefix of the generated functions; FXL_T_SPAN##_pick
  *                   chooses the walk for a triangle (fxl__span_fn)
  *   FXL_T_SEG       name of the generated fxl__seg_fn, or leave undefined
@@ -54,6 +56,16 @@
 /* the rowc walk's runs of whole segments go to FXL_T_LOOP##_segs (without
  * depth; not on Thumb-1, FXL__ROWC_LEAN) */
 #define FXL_T_ROWC_SEGS (FXL__FAST_SPANS && !FXL__ROWC_LEAN && !FXL_T_MIPLIN && !FXL_T_DEPTH)
+#if FXL__FAST_SPANS && FXL_T_DEPTH && (FXL__ZROW_WALK || !FXL_T_MIPLIN)
+/* the copy for triangles of constant depth along rows (a level floor: dz
+ * == 0 at every segment), with the depth hoisted out of the pixels: for
+ * the rowc walk and, on 64-bit hosts, the batch walk's copy (span.c) */
+#define FXL_T_ZLOOP FXL__CAT(FXL_T_LOOP, _z0)
+#define FXL_T_LOOPFN FXL_T_ZLOOP
+#define FXL_T_QUAD 0
+#define FXL_T_ZCONST 1
+#include "span_loop.h"
+#endif
 #if !FXL_T_MIPLIN && FXL_HAVE_QUAD
 /* the quadratic segments' copy (AUTO, one level) */
 #define FXL_T_QLOOP FXL__CAT(FXL_T_LOOP, _quad)
@@ -80,11 +92,13 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
 #if FXL__FAST_SPANS
 /* Phase 1 of FXL_T_SPAN: the correction points of one batch, from xe on
  * (segment lengths 2^k, or from the error bound when autoseg); returns their
- * count and leaves xe at the last. Forced inline where speed counts, and
+ * count and leaves xe at the last. With depth and with_z, each point's z
+ * too (cz; the constant-depth walk passes 0 and no cz). Forced inline where speed counts, and
  * called with a constant autoseg: one copy per kind of walk. */
 static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autoseg, int32_t t_row, int32_t *xe_io,
                                          int32_t xl, int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu,
-                                         uint32_t *cv, uint32_t *cz, int32_t *clod, uint8_t *ck)
+                                         uint32_t *cv, uint32_t *cz, const int with_z, int32_t *clod,
+                                         uint8_t *ck)
 {
     const int k = tri->seg_log2;
     const int32_t N = (int32_t)1 << k;
@@ -93,6 +107,7 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
     (void)t_row;
     (void)xl;
     (void)cz;
+    (void)with_z;
     (void)clod;
     (void)ck;
     do {
@@ -128,18 +143,16 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
                 w->sq += (uint64_t)tri->gpx[FXL__PQ] * (uint32_t)len;
                 w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * (uint32_t)len;
                 w->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * (uint32_t)len;
-#if FXL_T_DEPTH
-                w->sz += (uint64_t)tri->gpx[FXL__PZ] * (uint32_t)len;
-#endif
+                if (FXL_T_DEPTH && with_z)
+                    w->sz += (uint64_t)tri->gpx[FXL__PZ] * (uint32_t)len;
             } else
 #endif
             {
                 w->sq += (uint64_t)tri->gpxN[FXL__PQ];
                 w->su += (uint64_t)tri->gpxN[FXL__PA + FXL__AU];
                 w->sv += (uint64_t)tri->gpxN[FXL__PA + FXL__AV];
-#if FXL_T_DEPTH
-                w->sz += (uint64_t)tri->gpxN[FXL__PZ];
-#endif
+                if (FXL_T_DEPTH && with_z)
+                    w->sz += (uint64_t)tri->gpxN[FXL__PZ];
             }
         } else {
             /* the last segment ends on the last pixel of the span */
@@ -148,17 +161,15 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
             w->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
             w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
             w->sv += (uint64_t)tri->gpx[FXL__PA + FXL__AV] * div;
-#if FXL_T_DEPTH
-            w->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
-#endif
+            if (FXL_T_DEPTH && with_z)
+                w->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
         }
         fast_correct_batch(tri, (int64_t)w->sq, (int64_t)w->su, (int64_t)w->sv, &w->pt);
         cnt++;
         cu[cnt] = w->pt.u;
         cv[cnt] = w->pt.v;
-#if FXL_T_DEPTH
-        cz[cnt] = fast_z((int64_t)w->sz);
-#endif
+        if (FXL_T_DEPTH && with_z)
+            cz[cnt] = fast_z((int64_t)w->sz);
     } while (cnt < FXL__BATCH && xe < cr);
     *xe_io = xe;
     return cnt;
@@ -173,7 +184,7 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
                                               int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu, uint32_t *cv,
                                               uint32_t *cz, int32_t *clod, uint8_t *ck)
 {
-    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, clod, ck);
+    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, 1, clod, ck);
 }
 #endif
 
@@ -534,6 +545,10 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
     az.gN = (uint64_t)tri->gpxN[FXL__PZ];
     az.g = (uint64_t)tri->gpx[FXL__PZ];
     az.c = s.z;
+    /* z constant along the row (rowc_zaxis then steps 0): the runs take
+     * the loop with the depth hoisted (x86-64 floor subdiv16 point with
+     * depth: 3 instructions a pixel fewer) */
+    const int zrow = az.g == 0u;
 #endif
     FXL_T_LV_INIT(&L, &tri->level[0], s.u, s.v);
     {
@@ -570,6 +585,13 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
                     const fxl__rseg_t *const end = sg + m;
 #if FXL_T_DEPTH
                     uint16_t *zb = tg->depth + (rowidx + x);
+                    if (zrow) {
+                        do {
+                            written += FXL_T_ZLOOP(dst, zb, n4, sg->z, 0u, &L, sg->u, sg->v, sg->du, sg->dv);
+                            zb += n4;
+                            dst += n4;
+                        } while (++sg != end);
+                    } else
 #endif
                     do {
 #if FXL_T_DEPTH
@@ -654,250 +676,12 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 }
 #endif
 
-/* The whole span [xl, xr) of `row` clipped to [cl, cr): the segment walk of
- * fxl__draw_span (see there for the rules) restricted to the fast case.
- * Every value is computed exactly as the generic walk computes it; only
- * what this variant uses is computed (no z without a depth buffer).
- * The walk runs in batches of up to FXL__BATCH segments, in two phases:
- * first the correction points of the batch (plane steps and divisions: a
- * loop with few live values, so they stay in registers), then the pixel
- * loops between them. Interleaved, the two phases competed for registers
- * and each segment spilled and reloaded most of its state. */
-static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                      int32_t cr)
-{
-    const fxl_target_t *tg = tri->target;
-    const int k = tri->seg_log2;
-    int32_t x = xl + ((cl - xl) >> k << k);
-    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-#if FXL_HAVE_AUTO
-    /* FXL_PERSP_AUTO per segment: lengths from the error bound (auto.h) */
-    int autoseg = tri->auto_seg;
-    const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
+#define FXL_T_WZ 0
+#include "span_walk.h"
+#if FXL_T_DEPTH && FXL__ZROW_WALK
+#define FXL_T_WZ 1
+#include "span_walk.h"
 #endif
-    /* index of frame pixel (0, row) in the buffer; a pointer is only formed
-     * for pixels inside the clip rectangle */
-    const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
-    /* plane values (modular int64) at the latest correction point, and
-     * its u, v */
-    fxl__walk_t w;
-    /* the batch's correction points: cu[i], cv[i] (and cz[i]) start
-     * segment i, cu[i + 1] ends it */
-    uint32_t cu[FXL__BATCH + 1], cv[FXL__BATCH + 1];
-#if FXL_HAVE_AUTO
-    uint8_t ck[FXL__BATCH];   /* each segment's log2 length (AUTO per segment) */
-#endif
-#if FXL_T_DEPTH
-    uint32_t cz[FXL__BATCH + 1];
-#define FXL_T_CZ cz
-#else
-#define FXL_T_CZ 0
-#endif
-#if FXL_HAVE_MIPMAP
-    /* each segment's LOD, q8, clamped; clod[-1] the previous batch's last
-     * (AUTO holds it between grid points, auto.h) */
-    int32_t clodb[FXL__BATCH + 1];
-    int32_t *const clod = clodb + 1;
-#define FXL_T_CLOD clod
-#else
-#define FXL_T_CLOD 0
-#endif
-    uint32_t written = 0, segments = 0;
-    /* the prepared level(s), redone only when a segment's level changes */
-    const fxl__level_t *cur = &tri->level[0];
-    FXL_T_LV L;
-#if FXL_T_MIPLIN
-    FXL_T_LV L2;
-    const fxl__level_t *cur2 = cur;
-#endif
-#if FXL_HAVE_AUTO
-    if (autoseg) {
-        /* A span whose every block of 2^k fits the bound (k is auto_cap
-         * here, auto.c) is cut as the fixed walk cuts it: that walk's
-         * segments after one test, not a bound each (with auto.c taking
-         * such triangles per segment, the near quad's trilinear went from
-         * 1.28x to 1.02x fixed subdiv16's Cortex-M4 instructions). x is on
-         * the LOD grid then: with the grid, k is 4, or less where no span
-         * is longer than 2^k (x is xl). */
-        if (fxl__auto_span_fits_cap(tri, t_row, x, xr,
-                                    fxl__plane_eval(&tri->q, x * FXL__ONE + FXL__HALF - tri->X0, dY)))
-            autoseg = 0;
-        else if (cl > xl)
-            x = fxl__auto_first(tri, t_row, xl, xr, cl, dY);
-    }
-#if FXL_HAVE_MIPMAP
-    if (tri->lod_grid)
-        x = FXL__AUTO_LOD_GRID(x, xl);   /* as the generic walk (draw_span_generic) */
-#endif
-#endif
-
-    {
-        const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
-        w.sq = (uint64_t)fxl__plane_eval(&tri->q, dX, dY);
-        w.su = (uint64_t)fxl__plane_eval(&tri->a[FXL__AU], dX, dY);
-        w.sv = (uint64_t)fxl__plane_eval(&tri->a[FXL__AV], dX, dY);
-#if FXL_T_DEPTH
-        w.sz = (uint64_t)fxl__plane_eval(&tri->z, dX, dY);
-        cz[0] = fast_z((int64_t)w.sz);
-#else
-        w.sz = 0;
-#endif
-    }
-    fast_correct(tri, (int64_t)w.sq, (int64_t)w.su, (int64_t)w.sv, &w.pt);
-    cu[0] = w.pt.u;
-    cv[0] = w.pt.v;
-    FXL_T_LV_INIT(&L, cur, cu[0], cv[0]);
-#if FXL_T_MIPLIN
-    L2 = L;   /* level 0 too: the first blended segment prepares its own */
-#endif
-#if FXL_HAVE_MIPMAP
-    clod[0] = 0;   /* written before it is read; this tells the compiler */
-    clodb[0] = 0;  /* the walk starts on the LOD grid, where it is computed */
-#endif
-
-    while (x < cr) {
-        int32_t cnt, i, xe = x;
-
-        /* phase 1: the batch's correction points */
-#if FXL_HAVE_AUTO
-        if (autoseg) {
-            fxl__walk_t wa = w;
-            int32_t xa = xe;
-            cnt = FXL_T_BATCH_AUTO(tri, t_row, &xa, xl, xr, cr, &wa, cu, cv, FXL_T_CZ, FXL_T_CLOD, ck);
-            w = wa;
-            xe = xa;
-        } else
-#endif
-            cnt = FXL_T_BATCH(tri, 0, 0, &xe, xl, xr, cr, &w, cu, cv, FXL_T_CZ, FXL_T_CLOD, 0);
-        segments += (uint32_t)cnt;
-
-        /* phase 2: the pixels between them */
-        for (i = 0; i < cnt; i++) {
-#if FXL_HAVE_AUTO
-            const int ki = autoseg ? ck[i] : k;
-#else
-            const int ki = k;
-#endif
-            int32_t n, a = x, b;
-            uint32_t du, dv, dz = 0, u = cu[i], v = cv[i], z = 0;
-            const fxl__level_t *lv = &tri->level[0];
-
-            if (xr - x > ((int32_t)1 << ki)) {
-                n = (int32_t)1 << ki;
-                du = step_pow2_u32(cu[i + 1] - u, ki);
-                dv = step_pow2_u32(cv[i + 1] - v, ki);
-#if FXL_T_DEPTH
-                dz = step_z_pow2(cz[i + 1], cz[i], ki);
-#endif
-            } else {
-                const uint32_t div = (uint32_t)(xr - x - 1);
-                n = xr - x;
-                du = step_div_u32(cu[i + 1] - u, div);
-                dv = step_div_u32(cv[i + 1] - v, div);
-#if FXL_T_DEPTH
-                dz = step_z_div(cz[i + 1], cz[i], div);
-#endif
-            }
-#if FXL_T_DEPTH
-            z = cz[i];
-#endif
-            b = x + n < cr ? x + n : cr;
-#if FXL_T_MIPLIN
-            /* the second level and the blend weight, when f != 0 */
-            const fxl__level_t *lv2 = 0;
-            uint32_t u2 = 0, v2 = 0, du2 = 0, dv2 = 0, f = 0;
-#endif
-#if FXL_HAVE_MIPMAP
-            if (tri->nlevels > 1) {
-                const int32_t lod = clod[i];
-                int level;
-#if FXL_T_MIPLIN
-                /* The blend weight is lod_frac >> 3; with weight 0 the blend
-                 * is the identity ((a * 32 + 16) >> 5 = a per channel), so
-                 * such segments run the one-level loop. The top level has
-                 * weight 0 (the LOD is clamped to it). */
-                f = ((uint32_t)lod & 255u) >> 3;
-                level = lod >> 8;
-                if (level + 1 >= tri->nlevels)
-                    f = 0;
-#else
-                level = (lod + 128) >> 8;
-#endif
-                lv = &tri->level[level];
-                du = shift_step_u32(du, level);
-                dv = shift_step_u32(dv, level);
-                u >>= level;
-                v >>= level;
-#if FXL_T_MIPLIN
-                if (f != 0u) {
-                    /* level + 1: the floor shifts compose, so this is the
-                     * level-0 value shifted by level + 1 */
-                    lv2 = lv + 1;
-                    du2 = shift_step_u32(du, 1);
-                    dv2 = shift_step_u32(dv, 1);
-                    u2 = u >> 1;
-                    v2 = v >> 1;
-                }
-#endif
-            }
-#endif
-            if (x < cl) {
-                /* A segment that starts left of the clip: the pixel loop
-                 * starts `off` pixels in (the first segment; under AUTO's
-                 * LOD grid up to 15 pixels of segments lie wholly left of
-                 * it, and a >= b skips them). */
-                const uint32_t off = (uint32_t)(cl - x);
-                a = cl;
-                u += du * off;
-                v += dv * off;
-                z += dz * off;
-#if FXL_T_MIPLIN
-                u2 += du2 * off;
-                v2 += dv2 * off;
-#endif
-            }
-            if (a < b) {
-                int32_t idx = rowidx + a;
-                if (lv != cur) {
-                    cur = lv;
-                    FXL_T_LV_INIT(&L, lv, u, v);
-                }
-#if FXL_T_MIPLIN
-                if (f != 0u) {
-                    if (lv2 != cur2) {
-                        cur2 = lv2;
-                        FXL_T_LV_INIT(&L2, lv2, u2, v2);
-                    }
-                    written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L, u,
-                                          v, du, dv, &L2, u2, v2, du2, dv2, f);
-                } else {
-                    written += FXL_T_LOOP1(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L,
-                                           u, v, du, dv);
-                }
-#else
-                written += FXL_T_LOOP(tg->pixels + idx, FXL_T_DEPTH ? tg->depth + idx : 0, b - a, z, dz, &L, u, v,
-                                      du, dv);
-#endif
-            }
-            x += n;
-        }
-        cu[0] = cu[cnt];
-        cv[0] = cv[cnt];
-#if FXL_T_DEPTH
-        cz[0] = cz[cnt];
-#endif
-#if FXL_HAVE_MIPMAP
-        clodb[0] = clod[cnt - 1];
-#endif
-    }
-#undef FXL_T_CZ
-#undef FXL_T_CLOD
-    if (tri->stats) {
-        tri->stats->divisions += segments + 1u;
-        tri->stats->pixels += written;
-        tri->stats->spans++;
-    }
-}
 
 
 /* The variant's walk for a triangle, chosen once (fxl__pick_span_fn): the
@@ -942,6 +726,10 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
         return walk;
     }
 #endif
+#if FXL_T_DEPTH && FXL__ZROW_WALK
+    if (tri->gpx[FXL__PZ] == 0)
+        return FXL__CAT(FXL_T_WALK, _z0);
+#endif
     return FXL_T_WALK;
 }
 
@@ -952,6 +740,9 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_LOOP
 #ifdef FXL_T_QLOOP
 #undef FXL_T_QLOOP
+#endif
+#ifdef FXL_T_ZLOOP
+#undef FXL_T_ZLOOP
 #endif
 #ifdef FXL_T_LOOP1
 #undef FXL_T_LOOP1

@@ -7,7 +7,10 @@
  *   FXL_T_QUAD    0: affine steps; 1: quadratic segments (auto.h), whose
  *                 steps du, dv change by ddu, ddv a pixel (two more
  *                 parameters; not with FXL_T_MIPLIN)
- * both undefined here. Two functions rather than one with a flag: in the
+ *   FXL_T_ZCONST  (optional, with FXL_T_DEPTH) 1: the caller guarantees
+ *                 dz == 0 (a level floor's rows), so the depth compared
+ *                 and written is z >> 16 throughout, hoisted out of the loop
+ * all undefined here. Two functions rather than one with a flag: in the
  * x86-64 depth loops, which use every register, a flag (even a constant
  * one the compiler propagates) cost the affine loop ~2 instructions a
  * pixel.
@@ -35,8 +38,16 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #endif
 )
 {
+#ifndef FXL_T_ZCONST
+#define FXL_T_ZCONST 0
+#endif
 #if FXL_T_DEPTH
     uint32_t rejected = 0;
+#if FXL_T_ZCONST
+    /* the row's one depth (dz == 0) */
+    const uint16_t zrow = (uint16_t)(z >> 16);
+    (void)dz;
+#endif
 #else
     (void)zb;
     (void)z;
@@ -114,10 +125,16 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
      * uint32_t took a zero-extending load and a compare (-1 instruction a
      * pixel, floor subdiv16 point with depth 27.36 -> 26.28; the Cortex-M4
      * code is the same). */
+#if FXL_T_ZCONST
+#define FXL_T_ZNEXT(zz) const uint16_t zz = zrow
+#else
+#define FXL_T_ZNEXT(zz)                                                                                     \
+    const uint16_t zz = (uint16_t)(z >> 16);                                                                \
+    z += dz
+#endif
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
-        const uint16_t zz = (uint16_t)(z >> 16);                                                            \
-        z += dz;                                                                                            \
+        FXL_T_ZNEXT(zz);                                                                                    \
         if (zz > zb[i]) {                                                                                   \
             uint32_t c = FXL_T_TEXEL();                                                                     \
             zb[i] = (uint16_t)zz;                                                                           \
@@ -262,6 +279,9 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
 
 /* the pixel macros serve both functions above */
 #undef FXL_T_PIXEL
+#ifdef FXL_T_ZNEXT
+#undef FXL_T_ZNEXT
+#endif
 #undef FXL_T_OUT
 #undef FXL_T_TEXEL
 #undef FXL_T_STEP
@@ -273,3 +293,4 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
 
 #undef FXL_T_LOOPFN
 #undef FXL_T_QUAD
+#undef FXL_T_ZCONST

@@ -10,6 +10,7 @@
 #include "test_features.h"
 #include "fixel/fixel.h"
 #include "reference.h"
+#include "left_out.h"
 #include "../src/raster_int.h"
 #include "../src/persp.h"
 #include "../src/sfloat.h"
@@ -537,6 +538,122 @@ void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
                           fast_walks);
 }
 
+/* draw_generic_and_fast with a depth buffer (test and write) of 320 x
+ * 240: both depth buffers start as zinit (a pattern that rejects some
+ * pixels), and pixels and depth values must agree. Returns 1 when a
+ * specialised walk drew fast. */
+static int draw_generic_and_fast_z(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
+                                   fxl_pixfmt_t fmt, const uint16_t *zinit, uint16_t *gen, uint16_t *zgen,
+                                   uint16_t *fast, uint16_t *zfast, const char *what)
+{
+    fxl_target_t tg;
+    fxl_stats_t st;
+    char msg[200];
+    int x;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, fmt));
+    fxl_target_clear(&tg, 0xDEAD);
+    memcpy(zgen, zinit, 320 * 240 * sizeof *zgen);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zgen));
+    if (clip)
+        fxl_target_set_clip(&tg, clip);
+    probe_base = gen;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, d, v, NULL, probe_draw));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, fmt));
+    fxl_target_clear(&tg, 0xDEAD);
+    memcpy(zfast, zinit, 320 * 240 * sizeof *zfast);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zfast));
+    if (clip)
+        fxl_target_set_clip(&tg, clip);
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, d, v, &st));
+    for (x = 0; x < 320 * 240; x++)
+        if (fast[x] != gen[x] || zfast[x] != zgen[x]) {
+            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, x % 320,
+                     x / 320, fast[x], zfast[x], gen[x], zgen[x]);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    return st.drawn > st.generic;
+}
+
+/* The mip walks with a depth buffer: on a level floor (z constant along
+ * every row, where the fast walks hold the depth in a register:
+ * span_walk.h's constant-z copy) and on the same floor tilted 3 degrees
+ * about the view axis (z varies along rows: the walk itself), every pixel
+ * and depth value of the fast walk equals the generic walk's. Per-segment
+ * LOD on a 256 x 256 chain (9 levels), each filter (point and bilinear on
+ * the nearest level, point-mip-linear, trilinear), native and swapped
+ * RGB565, segments of 16 and 8, full frame and clipped at x = 101. A
+ * depth buffer that rejects one pixel in three (nearest there) checks the
+ * rejections too. */
+void test_mip_walks_with_depth_match_generic(void)
+{
+    TEST_NEEDS(FXL_HAVE_MIPMAP && FXL_HAVE_DEPTH);
+    static uint16_t fast[320 * 240], gen[320 * 240], zfast[320 * 240], zgen[320 * 240], zinit[320 * 240];
+    static const fxl_filter_t filt[4] = {FXL_FILTER_POINT, FXL_FILTER_BILINEAR, FXL_FILTER_POINT,
+                                         FXL_FILTER_BILINEAR};
+    static const fxl_mipmode_t mip[4] = {FXL_MIP_NEAREST, FXL_MIP_NEAREST, FXL_MIP_LINEAR, FXL_MIP_LINEAR};
+    const fxl_rect_t clip = {101, 0, 301, 240};
+    fxl_texture_t t;
+    fxl_draw_t d;
+    fxl_vertex_t tri[2][2][3];
+    int tilt, k, m, f, c, ps, x, drawn = 0, fast_walks = 0, refused = 0;
+    char msg[160];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, texels, 256, 256, FXL_TEXFMT_RGB565, 9));
+    for (x = 0; x < 256 * 256 * 4 / 3; x++)
+        texels[x] = (uint16_t)(x * 2654435761u >> 16);
+    for (x = 0; x < 320 * 240; x++)
+        zinit[x] = x % 3 == 0 ? 0xFFFF : 0;
+    for (tilt = 0; tilt < 2; tilt++) {
+        /* floor y = -1 from z = -1.2 to -60, 24 texture repeats deep */
+        const double a = tilt ? 3.0 * 3.14159265358979323846 / 180.0 : 0.0;
+        const double cx[4] = {-6, 6, 6, -6}, cz[4] = {-1.2, -1.2, -60, -60};
+        fxl_vertex_t q[4];
+        for (k = 0; k < 4; k++)
+            q[k] = test_project(cx[k] * cos(a) + sin(a), -cos(a) + cx[k] * sin(a), cz[k], (cx[k] + 6) / 2,
+                                -cz[k] / 2.5);
+        tri[tilt][0][0] = q[0]; tri[tilt][0][1] = q[1]; tri[tilt][0][2] = q[2];
+        tri[tilt][1][0] = q[0]; tri[tilt][1][1] = q[2]; tri[tilt][1][2] = q[3];
+    }
+    /* not vacuous: the level floor's rows are at one depth (two vertices
+     * of each triangle on one row at one 1/w), the tilted one's are not */
+    TEST_ASSERT_EQUAL_INT32(tri[0][0][0].y, tri[0][0][1].y);
+    TEST_ASSERT_EQUAL_UINT32(tri[0][0][0].inv_w, tri[0][0][1].inv_w);
+    TEST_ASSERT_TRUE(tri[1][0][0].y != tri[1][0][1].y);
+    for (m = 0; m < 4; m++)
+        for (f = 0; f < 2; f++) {
+            const fxl_pixfmt_t fmt = f ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+            fxl_draw_defaults(&d);
+            d.texture = &t;
+            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+            d.lod = FXL_LOD_SEGMENT;
+            d.filter = (uint8_t)filt[m];
+            d.mip = (uint8_t)mip[m];
+            if (left_out_feature(&d, &t, fmt, 1) != NULL) {
+                refused++;
+                continue;
+            }
+            for (ps = 0; ps < 2; ps++)
+                for (tilt = 0; tilt < 2; tilt++)
+                    for (k = 0; k < 2; k++)
+                        for (c = 0; c < 2; c++) {
+                            d.persp = ps ? 8 : 16;
+                            snprintf(msg, sizeof msg, "filter %d mip %d swap %d persp %d tilt %d tri %d clip %d",
+                                     (int)d.filter, (int)d.mip, f, (int)d.persp, tilt, k, c);
+                            fast_walks += draw_generic_and_fast_z(&d, tri[tilt][k], c ? &clip : NULL, fmt, zinit,
+                                                                  gen, zgen, fast, zfast, msg);
+                            drawn++;
+                        }
+        }
+    snprintf(msg, sizeof msg, "%d draws compared (%d by a fast walk), %d filter x format pairs left out", drawn,
+             fast_walks, refused);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(drawn > 0, msg);
+    /* every draw a specialised walk could take, it took */
+    if (FXL__FAST_SPANS && FXL_FAST_NATIVE && FXL_FAST_SWAPPED && FXL_FAST_POINT && FXL_FAST_BILINEAR && FXL_FAST_DEPTH &&
+        FXL_FAST_MIP && FXL_HAVE_BILINEAR)
+        TEST_ASSERT_EQUAL_INT_MESSAGE(drawn, fast_walks, msg);
+}
+
 /* The LOD and AUTO's bounds take logarithms in three forms (64-bit,
  * 32-bit, soft-float mantissa): all must give fxl__log2_q8's value, which
  * the bounds' margins are worked out for, and stay within its stated
@@ -647,6 +764,7 @@ int main(void)
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
     RUN_TEST(test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip);
     RUN_TEST(test_auto_spans_that_fit_the_cap_take_fixed_segments);
+    RUN_TEST(test_mip_walks_with_depth_match_generic);
     RUN_TEST(test_log2_q8_forms_agree);
     RUN_TEST(test_sf_dot2_within_its_error);
     return UNITY_END();
