@@ -93,12 +93,15 @@ static uint32_t FXL_T_SEG(const fxl__tri_t *tri, const fxl__seg_t *s)
 /* Phase 1 of FXL_T_SPAN: the correction points of one batch, from xe on
  * (segment lengths 2^k, or from the error bound when autoseg); returns their
  * count and leaves xe at the last. With depth and with_z, each point's z
- * too (cz; the constant-depth walk passes 0 and no cz). Forced inline where speed counts, and
+ * too (cz). rowrc, when not NULL, says q is constant along the row: every
+ * point's 1/q is *rowrc and its LOD's log2 q term rowlq (tri->lod_at_lq).
+ * The constant-depth walk passes with_z 0, no cz, and rowrc on a level
+ * floor; the others 1, cz and NULL. Forced inline where speed counts, and
  * called with a constant autoseg: one copy per kind of walk. */
 static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autoseg, int32_t t_row, int32_t *xe_io,
                                          int32_t xl, int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu,
-                                         uint32_t *cv, uint32_t *cz, const int with_z, int32_t *clod,
-                                         uint8_t *ck)
+                                         uint32_t *cv, uint32_t *cz, const int with_z,
+                                         const fxl__recip_t *rowrc, int32_t rowlq, int32_t *clod, uint8_t *ck)
 {
     const int k = tri->seg_log2;
     const int32_t N = (int32_t)1 << k;
@@ -108,6 +111,7 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
     (void)xl;
     (void)cz;
     (void)with_z;
+    (void)rowlq;
     (void)clod;
     (void)ck;
     do {
@@ -121,7 +125,8 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
                     lod = clod[cnt - 1];   /* the walk keeps clod[-1] */
                 else
 #endif
-                    lod = seg_lod(tri, fast_lod(tri, (int64_t)w->sq, &w->pt));
+                    lod = seg_lod(tri, rowrc && tri->lod_at_lq ? tri->lod_at_lq(tri, rowlq, w->pt.u64, w->pt.v64)
+                                                               : fast_lod(tri, (int64_t)w->sq, &w->pt));
             }
             clod[cnt] = lod;
         }
@@ -164,7 +169,10 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
             if (FXL_T_DEPTH && with_z)
                 w->sz += (uint64_t)tri->gpx[FXL__PZ] * div;
         }
-        fast_correct_batch(tri, (int64_t)w->sq, (int64_t)w->su, (int64_t)w->sv, &w->pt);
+        if (rowrc)
+            fast_correct_rc(tri, rowrc, (int64_t)w->su, (int64_t)w->sv, &w->pt);
+        else
+            fast_correct_batch(tri, (int64_t)w->sq, (int64_t)w->su, (int64_t)w->sv, &w->pt);
         cnt++;
         cu[cnt] = w->pt.u;
         cv[cnt] = w->pt.v;
@@ -184,7 +192,7 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
                                               int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu, uint32_t *cv,
                                               uint32_t *cz, int32_t *clod, uint8_t *ck)
 {
-    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, 1, clod, ck);
+    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, 1, 0, 0, clod, ck);
 }
 #endif
 
