@@ -62,9 +62,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     uint8_t ck[FXL__BATCH];   /* each segment's log2 length (AUTO per segment) */
 #endif
 #if FXL_T_DEPTH && FXL_T_WZ
-    /* the row's one z: the fixed batches compute none; the adaptive one
-     * (shared, out of line) computes them into czs, unread */
-    uint32_t zc, czs[FXL__BATCH + 1];
+    uint32_t zc;   /* the row's one z: the fixed batches compute none */
+#if FXL_HAVE_AUTO
+    uint32_t czs[FXL__BATCH + 1];   /* the adaptive one (shared, out of line) does, unread */
+#endif
 #define FXL_T_CZ 0
 #elif FXL_T_DEPTH
     uint32_t cz[FXL__BATCH + 1];
