@@ -345,20 +345,27 @@ static uint32_t probe_draw(const fxl__tri_t *tri, const fxl__seg_t *s)
     return fxl__pick_seg_fn(tri)(tri, s);
 }
 
-/* Draws triangle v with d twice into 320 x 240 frames, clipped to clip
- * when it is not NULL: gen through the generic walk (probe_draw, which
- * records each pixel's LOD and segment starts, reset here), fast through
- * fxl_draw_triangle; fails on the first pixel where they differ (what
- * names the case). Returns 1 when a specialised walk drew fast. */
-static int draw_generic_and_fast(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
-                                 uint16_t *gen, uint16_t *fast, const char *what)
+/* Draws triangle v with d twice into 320 x 240 frames of format fmt,
+ * clipped to clip when it is not NULL: gen through the generic walk
+ * (probe_draw, which records each pixel's LOD and segment starts, reset
+ * here), fast through fxl_draw_triangle; fails on the first pixel where
+ * they differ (what names the case). With zinit, each draw has a depth
+ * buffer (zgen, zfast) that starts as zinit, and the depth values must
+ * agree too. Returns 1 when a specialised walk drew fast. */
+static int draw_generic_and_fast_z(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
+                                   fxl_pixfmt_t fmt, const uint16_t *zinit, uint16_t *gen, uint16_t *zgen,
+                                   uint16_t *fast, uint16_t *zfast, const char *what)
 {
     fxl_target_t tg;
     fxl_stats_t st;
     char msg[200];
     int x;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, fmt));
     fxl_target_clear(&tg, 0xDEAD);
+    if (zinit) {
+        memcpy(zgen, zinit, 320 * 240 * sizeof *zgen);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zgen));
+    }
     if (clip)
         fxl_target_set_clip(&tg, clip);
     probe_base = gen;
@@ -366,19 +373,30 @@ static int draw_generic_and_fast(const fxl_draw_t *d, const fxl_vertex_t v[3], c
         probe_lod[x] = INT32_MIN;
     memset(probe_start, 2, sizeof probe_start);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, d, v, NULL, probe_draw));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, fmt));
     fxl_target_clear(&tg, 0xDEAD);
+    if (zinit) {
+        memcpy(zfast, zinit, 320 * 240 * sizeof *zfast);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zfast));
+    }
     if (clip)
         fxl_target_set_clip(&tg, clip);
     memset(&st, 0, sizeof st);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, d, v, &st));
     for (x = 0; x < 320 * 240; x++)
-        if (fast[x] != gen[x]) {
-            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x generic %04x", what, x % 320, x / 320, fast[x],
-                     gen[x]);
+        if (fast[x] != gen[x] || (zinit && zfast[x] != zgen[x])) {
+            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, x % 320,
+                     x / 320, fast[x], zinit ? zfast[x] : 0, gen[x], zinit ? zgen[x] : 0);
             TEST_FAIL_MESSAGE(msg);
         }
     return st.drawn > st.generic;
+}
+
+/* The same without a depth buffer, native RGB565. */
+static int draw_generic_and_fast(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
+                                 uint16_t *gen, uint16_t *fast, const char *what)
+{
+    return draw_generic_and_fast_z(d, v, clip, FXL_PIXFMT_RGB565, NULL, gen, NULL, fast, NULL, what);
 }
 
 /* Under AUTO the per-segment LOD is evaluated on a 16-pixel grid from each
@@ -536,43 +554,6 @@ void test_auto_spans_that_fit_the_cap_take_fixed_segments(void)
                               ? 8
                               : 0,
                           fast_walks);
-}
-
-/* draw_generic_and_fast with a depth buffer (test and write) of 320 x
- * 240: both depth buffers start as zinit (a pattern that rejects some
- * pixels), and pixels and depth values must agree. Returns 1 when a
- * specialised walk drew fast. */
-static int draw_generic_and_fast_z(const fxl_draw_t *d, const fxl_vertex_t v[3], const fxl_rect_t *clip,
-                                   fxl_pixfmt_t fmt, const uint16_t *zinit, uint16_t *gen, uint16_t *zgen,
-                                   uint16_t *fast, uint16_t *zfast, const char *what)
-{
-    fxl_target_t tg;
-    fxl_stats_t st;
-    char msg[200];
-    int x;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, gen, 320, 240, 320, fmt));
-    fxl_target_clear(&tg, 0xDEAD);
-    memcpy(zgen, zinit, 320 * 240 * sizeof *zgen);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zgen));
-    if (clip)
-        fxl_target_set_clip(&tg, clip);
-    probe_base = gen;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, d, v, NULL, probe_draw));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, fast, 320, 240, 320, fmt));
-    fxl_target_clear(&tg, 0xDEAD);
-    memcpy(zfast, zinit, 320 * 240 * sizeof *zfast);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&tg, zfast));
-    if (clip)
-        fxl_target_set_clip(&tg, clip);
-    memset(&st, 0, sizeof st);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, d, v, &st));
-    for (x = 0; x < 320 * 240; x++)
-        if (fast[x] != gen[x] || zfast[x] != zgen[x]) {
-            snprintf(msg, sizeof msg, "%.120s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", what, x % 320,
-                     x / 320, fast[x], zfast[x], gen[x], zgen[x]);
-            TEST_FAIL_MESSAGE(msg);
-        }
-    return st.drawn > st.generic;
 }
 
 /* The mip walks with a depth buffer: on a level floor (z constant along
