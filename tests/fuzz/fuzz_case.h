@@ -12,6 +12,7 @@
  * sometimes an invalid descriptor), every draw field (sometimes an invalid
  * enum), and three vertices picked from pools of extreme values on purpose
  * (INT32 limits, +-32767 px, tiny steps, duplicates, collinear points,
+ * level rows: two vertices on one row at one 1/w,
  * inv_w 0 / 1 / UINT32_MAX, huge u, v). fixel-fuzz and the libFuzzer
  * target then fit 7 of 8 cases to the build (fz_prepare): in a reduced
  * configuration a refused feature's fields are changed to ones it keeps.
@@ -242,7 +243,7 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
 {
     fz_reader rd = {data, n, 0};
     fz_reader *r = &rd;
-    uint32_t m, i;
+    uint32_t m, mb, i;
     int32_t prev_x, prev_y;
 
     memset(c, 0, sizeof *c);
@@ -378,7 +379,10 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
         c->draw.texture = &c->tex;   /* else untextured with a texture prepared */
 
     /* ---- vertices ---- */
-    m = fz_u8(r) % 8u;   /* 0..5 free, 6: two vertices equal, 7: collinear */
+    /* 0..5 free (of those, a byte of 40..87: v1 on v0's row at its depth),
+     * 6: two vertices equal, 7: collinear */
+    mb = fz_u8(r);
+    m = mb % 8u;
     prev_x = c->origin_x * 65536;
     prev_y = c->origin_y * 65536;
     for (i = 0; i < 3; i++) {
@@ -392,7 +396,12 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
         prev_x = v->x;
         prev_y = v->y;
     }
-    if (m == 6) {
+    if (m <= 5u && mb >= 40u && mb < 88u) {
+        /* a level row: q and z constant along every row (a level floor),
+         * the specialised walks' constant-depth copies */
+        c->v[1].y = c->v[0].y;
+        c->v[1].inv_w = c->v[0].inv_w;
+    } else if (m == 6) {
         c->v[2].x = c->v[0].x;
         c->v[2].y = c->v[0].y;
     } else if (m == 7) {
