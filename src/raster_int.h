@@ -144,8 +144,8 @@ typedef struct fxl__tri {
      * for lod_mq[g] == 0 read lod_dirc[g]) */
     int32_t (*lod_at)(const struct fxl__tri *tri, int64_t qv, int64_t u64, int64_t v64);
     /* where q is constant along rows (gpx[PQ] == 0, so lod_mq[0] == 0), the
-     * same from lod_lq's log2 q term, which the walks then take once a
-     * span; else NULL */
+     * same from lod_lq's log2 q term, which the constant-depth walk (64-bit
+     * hosts, span_walk.h) then takes once a span; else NULL (always at -Os) */
     int32_t (*lod_at_lq)(const struct fxl__tri *tri, int32_t lq, int64_t u64, int64_t v64);
     uint8_t uv_len[2];           /* bit length of the largest rebased vertex u, v (normalised q16, setup.c) */
 

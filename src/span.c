@@ -829,13 +829,20 @@ static FXL__ALWAYS_INLINE void fast_correct_rc(const fxl__tri_t *tri, const fxl_
 #endif
 }
 
+/* 1/q at a batch loop's correction point, q clamped below; also the
+ * constant-depth walk's one 1/q for a row of constant q (span_walk.h). */
+static FXL__HOT_INLINE void recip_batch(const fxl__tri_t *tri, int64_t q, fxl__recip_t *rc)
+{
+    if (q < tri->q_min)
+        q = tri->q_min;
+    fxl__recip(q, rc);
+}
+
 static FXL__UNSWITCH void fast_correct_batch(const fxl__tri_t *tri, int64_t q, int64_t su, int64_t sv,
                                              fxl__pt_t *pt)
 {
     fxl__recip_t rc;
-    if (q < tri->q_min)
-        q = tri->q_min;
-    fxl__recip(q, &rc);
+    recip_batch(tri, q, &rc);
     fast_correct_rc(tri, &rc, su, sv, pt);
 }
 

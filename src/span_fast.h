@@ -6,7 +6,8 @@
  *                   inline); with FXL_HAVE_QUAD a second, FXL_T_LOOP##_quad,
  *                   steps quadratic segments (one-level variants only);
  *                   with depth a third, FXL_T_LOOP##_z0, holds a constant
- *                   depth (rows of a level floor)
+ *                   depth (rows of a level floor; for the mip-linear
+ *                   variants only where span_walk.h's copy uses it)
  *   FXL_T_SPAN      prefix of the generated functions; FXL_T_SPAN##_pick
  *                   chooses the walk for a triangle (fxl__span_fn)
  *   FXL_T_SEG       name of the generated fxl__seg_fn, or leave undefined
@@ -735,7 +736,7 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
     }
 #endif
 #if FXL_T_DEPTH && FXL__ZROW_WALK
-    if (tri->gpx[FXL__PZ] == 0)
+    if (tri->gpx[FXL__PZ] == 0 && !(FXL_HAVE_AUTO && tri->auto_seg))
         return FXL__CAT(FXL_T_WALK, _z0);
 #endif
     return FXL_T_WALK;

@@ -21,6 +21,9 @@
  * the compiler: inlined into the lean walk they spilled more than the call
  * costs (Cortex-M4 floor subdiv16 bilinear 53.8 -> 61.8 instructions a
  * pixel). */
+#ifndef FXL_T_ZCONST
+#define FXL_T_ZCONST 0
+#endif
 #if FXL_T_BILINEAR || FXL_T_MIPLIN
 static inline
 #else
@@ -38,9 +41,6 @@ uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32
 #endif
 )
 {
-#ifndef FXL_T_ZCONST
-#define FXL_T_ZCONST 0
-#endif
 #if FXL_T_DEPTH
     uint32_t rejected = 0;
 #if FXL_T_ZCONST

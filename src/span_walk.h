@@ -40,8 +40,10 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     int32_t x = xl + ((cl - xl) >> k << k);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
 #if FXL_HAVE_AUTO
-    /* FXL_PERSP_AUTO per segment: lengths from the error bound (auto.h) */
-    int autoseg = tri->auto_seg;
+    /* FXL_PERSP_AUTO per segment: lengths from the error bound (auto.h);
+     * never in the constant-depth copy (its pick leaves those triangles to
+     * the walk: with q constant along x auto.c makes none anyway) */
+    int autoseg = FXL_T_WZ ? 0 : tri->auto_seg;
     const int32_t t_row = autoseg ? fxl__auto_row(tri, dY) : 0;
 #endif
     /* index of frame pixel (0, row) in the buffer; a pointer is only formed
@@ -62,10 +64,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     uint8_t ck[FXL__BATCH];   /* each segment's log2 length (AUTO per segment) */
 #endif
 #if FXL_T_DEPTH && FXL_T_WZ
-    uint32_t zc;   /* the row's one z: the fixed batches compute none */
-#if FXL_HAVE_AUTO
-    uint32_t czs[FXL__BATCH + 1];   /* the adaptive one (shared, out of line) does, unread */
-#endif
+    uint32_t zc;   /* the row's one z: the batches compute none */
 #define FXL_T_CZ 0
 #elif FXL_T_DEPTH
     uint32_t cz[FXL__BATCH + 1];
@@ -130,7 +129,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
     /* q constant along the row too (a level floor): its 1/q and the LOD's
      * log2 q term once, for every correction point (BATCH) */
     if (q_row_const(tri)) {
-        fxl__recip(w.sq < (uint64_t)tri->q_min ? tri->q_min : (int64_t)w.sq, &rc_row);   /* fast_correct_batch's */
+        recip_batch(tri, (int64_t)w.sq, &rc_row);
         rowrc = &rc_row;
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment && tri->nlevels > 1 && tri->lod_at_lq)
@@ -154,15 +153,11 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
         int32_t cnt, i, xe = x;
 
         /* phase 1: the batch's correction points */
-#if FXL_HAVE_AUTO
+#if FXL_HAVE_AUTO && !FXL_T_WZ
         if (autoseg) {
             fxl__walk_t wa = w;
             int32_t xa = xe;
-#if FXL_T_DEPTH && FXL_T_WZ
-            cnt = FXL_T_BATCH_AUTO(tri, t_row, &xa, xl, xr, cr, &wa, cu, cv, czs, FXL_T_CLOD, ck);
-#else
             cnt = FXL_T_BATCH_AUTO(tri, t_row, &xa, xl, xr, cr, &wa, cu, cv, FXL_T_CZ, FXL_T_CLOD, ck);
-#endif
             w = wa;
             xe = xa;
         } else

@@ -8,7 +8,9 @@
  * libFuzzer runs) have found nothing in the core, so the table holds the
  * seed inputs below (edge byte patterns and random cases covering the error
  * paths) plus hand-made extreme cases; add every future finding here with the
- * bytes printed by fixel-fuzz ("FINDING ... bytes <hex>").
+ * bytes printed by fixel-fuzz ("FINDING ... bytes <hex>"). A change to the
+ * decoder must keep every input here decoding as before (the level-row
+ * vertex layout, for one, skips the layout bytes these inputs use).
  */
 #include <stdio.h>
 #include <string.h>
