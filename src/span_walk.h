@@ -9,8 +9,8 @@
  *             loops hold the depth in a register (FXL_T_ZLOOP), and
  *             where q is constant along the row too, its correction points
  *             share one 1/q and one LOD log2 q term: x86-64 floor subdiv16
- *             with depth, trilinear 110.4 -> 98.8 instructions a pixel,
- *             per-segment-LOD bilinear 79.5 -> 71.7
+ *             with depth, trilinear 110.4 -> 99.6 instructions a pixel,
+ *             per-segment-LOD bilinear 79.5 -> 72.2
  * undefined here. Two copies of the source, not one function with a flag
  * (the extra loop cost the other scenes' trilinear 0.7-0.9% in registers)
  * nor one body forced inline into two functions (as much again: GCC then
