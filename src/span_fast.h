@@ -60,7 +60,8 @@
 #if FXL__FAST_SPANS && FXL_T_DEPTH && (FXL__ZROW_WALK || !FXL_T_MIPLIN)
 /* the copy for triangles of constant depth along rows (a level floor: dz
  * == 0 at every segment), with the depth hoisted out of the pixels: for
- * the rowc walk and, on 64-bit hosts, the batch walk's copy (span.c) */
+ * the rowc walk and, on 64-bit hosts, the batch walk's copy (span_walk.h;
+ * FXL__ZROW_WALK in span.c) */
 #define FXL_T_ZLOOP FXL__CAT(FXL_T_LOOP, _z0)
 #define FXL_T_LOOPFN FXL_T_ZLOOP
 #define FXL_T_QUAD 0
