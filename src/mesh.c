@@ -3,6 +3,7 @@
  * the rasterizer (host tools and tests of the front end alone).
  */
 #include "pipeline_int.h"
+#include "raster_int.h"
 
 typedef struct draw_ctx {
     fxl_target_t *target;
@@ -13,7 +14,8 @@ typedef struct draw_ctx {
 static fxl_status_t draw_one(void *user, const fxl_vertex_t tri[3])
 {
     draw_ctx_t *c = (draw_ctx_t *)user;
-    return fxl_draw_triangle(c->target, c->draw, tri, c->stats);
+    /* the settings were checked once by fxl_mesh_draw */
+    return fxl__draw_valid(c->target, c->draw, tri, c->stats, 0);
 }
 
 fxl_status_t fxl_mesh_draw(fxl_pipeline_t *p, fxl_target_t *t, const fxl_draw_t *d,

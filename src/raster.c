@@ -238,6 +238,18 @@ fxl_status_t fxl_draw_triangle(fxl_target_t *target, const fxl_draw_t *draw, con
 fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                      fxl_stats_t *stats, fxl__seg_fn probe)
 {
+    fxl_status_t st;
+    if (!v)
+        return FXL_ERR_ARG;
+    st = fxl_draw_check(target, draw);
+    if (st != FXL_OK)
+        return st;
+    return fxl__draw_valid(target, draw, v, stats, probe);
+}
+
+fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
+                             fxl_stats_t *stats, fxl__seg_fn probe)
+{
     fxl__tri_t tri;
     fxl__edge_t el, es;
     fxl__seg_fn fn;
@@ -248,11 +260,6 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
     int64_t det;
     int mid_left, odd = 0;
 
-    if (!v)
-        return FXL_ERR_ARG;
-    st = fxl_draw_check(target, draw);
-    if (st != FXL_OK)
-        return st;
     for (i = 0; i < 3; i++)
         if (v[i].inv_w == 0)
             return FXL_ERR_RANGE;
@@ -387,11 +394,18 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw, cons
                               uint32_t vert_count, const uint16_t *idx, uint32_t count, fxl_stats_t *stats)
 {
     uint32_t i;
+    fxl_status_t st;
     if (!target || !draw || !verts || (!idx && count))
         return FXL_ERR_ARG;
+    if (count == 0)
+        return FXL_OK;
+    /* the settings once: every triangle of the list would get the same
+     * answer (~120 Cortex-M4 instructions a triangle) */
+    st = fxl_draw_check(target, draw);
+    if (st != FXL_OK)
+        return st;
     for (i = 0; i < count; i++) {
         fxl_vertex_t tv[3];
-        fxl_status_t st;
         int k;
         for (k = 0; k < 3; k++) {
             uint16_t ix = idx[3 * i + (uint32_t)k];
@@ -399,7 +413,7 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw, cons
                 return FXL_ERR_RANGE;
             tv[k] = verts[ix];
         }
-        st = fxl_draw_triangle(target, draw, tv, stats);
+        st = fxl__draw_valid(target, draw, tv, stats, 0);
         if (st != FXL_OK)
             return st;
     }

@@ -239,6 +239,11 @@ int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear
  * u, v every pixel receives). Not part of the public API. */
 fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                      fxl_stats_t *stats, fxl__seg_fn probe);
+/* fxl__draw_triangle_with for settings that passed fxl_draw_check(target,
+ * draw) and have not changed since (v non-NULL): the batch calls
+ * (fxl_draw_indexed, fxl_mesh_draw, band rendering) check them once. */
+fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
+                             fxl_stats_t *stats, fxl__seg_fn probe);
 
 /* Setup (setup.c): planes and per-triangle scaling of a triangle with
  * det != 0 (the caller culls zero area). Returns FXL_OK. */

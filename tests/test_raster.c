@@ -1579,6 +1579,76 @@ void test_draw_api_errors(void)
     }
 }
 
+/* fxl_draw_indexed checks the settings once for the list (fxl_draw_check)
+ * and then draws each triangle as fxl_draw_triangle would: the same pixels
+ * and counts as one call a triangle, and a settings error returned before
+ * any pixel is written. */
+void test_indexed_draw_matches_single_draws(void)
+{
+    static uint16_t a[W * H], b[W * H];
+    enum { GX = 5, GY = 3, NV = (GX + 1) * (GY + 1), NT = 2 * GX * GY };
+    fxl_vertex_t vs[NV], tv[3];
+    uint16_t idx[3 * NT];
+    fxl_target_t ta, tb;
+    fxl_draw_t d;
+    fxl_texture_t tex;
+    fxl_stats_t sa, sb;
+    int i, j, k, n = 0;
+    make_texture(&tex);
+    for (j = 0; j <= GY; j++)
+        for (i = 0; i <= GX; i++)
+            vs[j * (GX + 1) + i] = vtx(-3.3 + i * 17.7, -2.6 + j * 18.1, 0.2 + 0.15 * i + 0.05 * j, i * 9.5, j * 7.25);
+    for (j = 0; j < GY; j++)
+        for (i = 0; i < GX; i++) {
+            const uint16_t c = (uint16_t)(j * (GX + 1) + i);
+            const uint16_t q[6] = {c, (uint16_t)(c + 1), (uint16_t)(c + GX + 1),
+                                   (uint16_t)(c + 1), (uint16_t)(c + GX + 2), (uint16_t)(c + GX + 1)};
+            for (k = 0; k < 6; k++)
+                idx[n++] = q[k];
+        }
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.filter = FXL_HAVE_BILINEAR ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+    memset(a, 0, sizeof a);
+    memset(b, 0, sizeof b);
+    memset(&sa, 0, sizeof sa);
+    memset(&sb, 0, sizeof sb);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&ta, a, W, H, W, drawable_rgb565()));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tb, b, W, H, W, drawable_rgb565()));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_indexed(&ta, &d, vs, NV, idx, NT, &sa));
+    for (i = 0; i < NT; i++) {
+        for (k = 0; k < 3; k++)
+            tv[k] = vs[idx[3 * i + k]];
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tb, &d, tv, &sb));
+    }
+    TEST_ASSERT_EQUAL_MEMORY(b, a, sizeof a);
+    TEST_ASSERT_EQUAL_UINT32(NT, sa.triangles);
+    TEST_ASSERT_EQUAL_UINT32(sb.drawn, sa.drawn);
+    TEST_ASSERT_EQUAL_UINT32(sb.pixels, sa.pixels);
+    TEST_ASSERT_EQUAL_UINT32(sb.culled_outside, sa.culled_outside);
+    TEST_ASSERT_TRUE(sa.pixels > 0u && sa.culled_outside > 0u);   /* its last column lies right of the target */
+
+    /* Settings errors: returned before any triangle is drawn or counted. */
+    memset(a, 0, sizeof a);
+    memset(&sa, 0, sizeof sa);
+    ta.clip.x1 = W + 1;   /* edited past the buffer */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_indexed(&ta, &d, vs, NV, idx, NT, &sa));
+    fxl_target_init(&ta, a, W, H, W, drawable_rgb565());
+    d.persp = 12;   /* not a power of two */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&ta, &d, vs, NV, idx, NT, &sa));
+    for (i = 0; i < W * H; i++)
+        TEST_ASSERT_EQUAL_HEX16(0, a[i]);
+    TEST_ASSERT_EQUAL_UINT32(0, sa.triangles);
+    /* An empty list draws nothing and has no error to report. */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_indexed(&ta, &d, vs, NV, idx, 0, &sa));
+    /* A bad vertex stops the list there, after the triangles before it. */
+    d.persp = FXL_PERSP_SPAN;
+    vs[NV - 1].inv_w = 0;   /* the bottom-right corner: the last triangle only */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&ta, &d, vs, NV, idx, NT, &sa));
+    TEST_ASSERT_EQUAL_UINT32(NT - 1, sa.triangles);
+}
+
 /* A depth buffer that is attached but neither tested nor written changes
  * nothing: the same pixels as without one (set-up then skips the depth
  * plane), the buffer untouched. With only the test on, the buffer is read
@@ -1775,6 +1845,7 @@ int main(void)
     RUN_TEST(test_row_const_walk_declined_spans_match_generic);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
+    RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }
