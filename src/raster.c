@@ -2,7 +2,7 @@
  *
  * Order of work per triangle: validate (every build: the target struct is
  * plain data the caller may have edited, so the clip rectangle is checked
- * against the buffer again), snap, cull, set up planes (setup.c), walk rows
+ * against the buffer again; the batch calls, once a list), snap, cull, set up planes (setup.c), walk rows
  * with exact edges (edge.c), hand each clipped span to span.c.
  */
 #include "raster_int.h"
