@@ -230,7 +230,10 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
         lba = ba > 0 ? fxl__log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
         lbq = bq > 0 ? fxl__log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
-        quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0;
+        /* quadratic steps take a segment's change as int32: not where it
+         * may exceed 2^15 texels (uv_wide) */
+        quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0 &&
+               !tri->uv_wide;
     }
     {
         /* Whole spans from the vertex ranges, before the N bound: within a

@@ -148,6 +148,13 @@ typedef struct fxl__tri {
      * hosts, span_walk.h) then takes once a span; else NULL (always at -Os) */
     int32_t (*lod_at_lq)(const struct fxl__tri *tri, int32_t lq, int64_t u64, int64_t v64);
     uint8_t uv_len[2];           /* bit length of the largest rebased vertex u, v (normalised q16, setup.c) */
+    /* A repeat or mirror axis whose rebased vertex coordinates reach 2^14
+     * texels of level 0 (setup.c): two points of the triangle may then be
+     * 2^15 texels or more apart, beyond what the q16 coordinates' 32 bits
+     * tell apart (they hold u modulo 2^16 texels, and a segment's change
+     * is taken the short way round). Such triangles take the generic walk,
+     * which steps from the 64-bit values, with affine segments only. */
+    uint8_t uv_wide;
 
     /* derived once per triangle for the span walk (fxl__span_setup) */
     int np;                             /* planes in use: 2, 4 or 7 */

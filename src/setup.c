@@ -139,23 +139,27 @@ static inline int fit_shift(const int64_t a[3], int bits)
 }
 
 /* Rebase three normalised q16 coordinates by whole periods (repeat) or
- * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2). */
-static void rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
+ * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2).
+ * Returns the largest rebased value. */
+static int64_t rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
 {
-    int64_t mn = c[0];
+    int64_t mn = c[0], mx = c[0];
     int64_t base = 0;
     int i;
 
-    if (c[1] < mn)
-        mn = c[1];
-    if (c[2] < mn)
-        mn = c[2];
+    for (i = 1; i < 3; i++) {
+        if (c[i] < mn)
+            mn = c[i];
+        if (c[i] > mx)
+            mx = c[i];
+    }
     if (wrap == FXL_WRAP_REPEAT)
         base = fxl__asr64(mn, 16) * 65536;
     else if (wrap == FXL_WRAP_MIRROR)
         base = fxl__asr64(mn, 17) * 131072;
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
+    return mx - base;
 }
 
 /* Build the plane of attribute a_i * q_i, scaled below 2^30. */
@@ -181,6 +185,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     int i;
     area_t area;   /* divides up to 2 x 7 gradients */
 
+    tri->uv_wide = 0;
     area.neg = det < 0;
     fxl__div64_init(&area.abs, area.neg ? (uint64_t)0 - (uint64_t)det : (uint64_t)det);
     tri->X0 = X[0];
@@ -234,9 +239,16 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
 
     if (fxl__has_uv(tri)) {
         int32_t c[3];
+        int wide;
         for (i = 0; i < 3; i++)
             c[i] = v[i].u;
-        rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a);
+        /* uv_wide: an axis whose rebased q16 texels reach 2^30 (any
+         * two points of the triangle lie less than 2^30 apart otherwise,
+         * u over the triangle being between its vertex values: half the
+         * 2^31 of the short way); < 2^47 here, no shift overflows.
+         * Clamp axes step from saturated int32 values: never wide. */
+        wide = (uint64_t)rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a) << tri->tex->log2_w >= (uint64_t)1 << 30 &&
+               !fxl__signed_u(tri);
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
@@ -244,7 +256,9 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         persp_plane(tri, FXL__AU, a, q, X, Y, &area);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
-        rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a);
+        wide |= (uint64_t)rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a) << tri->tex->log2_h >= (uint64_t)1 << 30 &&
+                !fxl__signed_v(tri);
+        tri->uv_wide = (uint8_t)wide;
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[1] = (uint8_t)fit_shift(a, 0);

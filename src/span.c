@@ -455,18 +455,26 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     }
 }
 
-/* b - a of two coordinates as a signed step numerator. */
-static inline int64_t coord_diff(uint32_t b, uint32_t a, int is_signed)
+/* b - a of two coordinates as a signed step numerator: for clamp axes
+ * from the saturated int32 values, for repeat and mirror axes from the
+ * 64-bit ones (not the uint32 ones, which hold them modulo 2^16 texels:
+ * their short-way difference is the same number while the triangle is
+ * not uv_wide, and the wrong one where it is), clamped to +-2^62 (a step
+ * that large saturates anyway; the clamp keeps the negation in
+ * step_pow2 defined). */
+static inline int64_t coord_diff(uint32_t b, uint32_t a, int64_t b64, int64_t a64, int is_signed)
 {
+    const int64_t lim = (int64_t)1 << 62;
+    uint64_t d;
     if (is_signed) {
         int64_t sb = b <= INT32_MAX ? (int64_t)b : (int64_t)b - ((int64_t)1 << 32);
         int64_t sa = a <= INT32_MAX ? (int64_t)a : (int64_t)a - ((int64_t)1 << 32);
         return sb - sa;
     }
-    {
-        uint32_t d = b - a;   /* modular: the short way round */
-        return d <= INT32_MAX ? (int64_t)d : (int64_t)d - ((int64_t)1 << 32);
-    }
+    d = (uint64_t)b64 - (uint64_t)a64;   /* modular: no overflow */
+    if (d <= (uint64_t)INT64_MAX)
+        return d > (uint64_t)lim ? lim : (int64_t)d;
+    return ~d > (uint64_t)lim ? -lim : -(int64_t)(~d) - 1;
 }
 
 static inline int32_t sat_i32(int64_t s)
@@ -726,8 +734,8 @@ static void lod_setup(fxl__tri_t *tri)
  * RGB565, repeat on both axes, no key, REPLACE (fxl__fast_id). The walk is the
  * generic one (fxl__draw_span below) with everything that cannot occur
  * there removed; every value is bit-identical to it:
- * - coordinates are modular uint32 (repeat), so coord_diff is the uint32
- *   difference read as int32 and a step is its magnitude shifted or divided
+ * - coordinates are modular uint32 (repeat), and no uv_wide triangle comes
+ *   here, so coord_diff is the uint32 difference read as int32 and a step is its magnitude shifted or divided
  *   (truncation toward zero), all in 32 bits: the last segment's division
  *   is one UDIV on a Cortex-M4 instead of a 64-bit library division;
  * - the steps of repeat coordinates lie in [-2^31, 2^31), so the int32
@@ -1798,8 +1806,8 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         b = x + n < cr ? x + n : cr;
         off = a - x;
         if (fxl__has_uv(tri)) {
-            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], fxl__signed_u(tri)));
-            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], fxl__signed_v(tri)));
+            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], p1.u64, p0.u64, fxl__signed_u(tri)));
+            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], p1.v64, p0.v64, fxl__signed_v(tri)));
 #if FXL_HAVE_MIPMAP
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
@@ -1896,8 +1904,9 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
 fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn)
 {
     /* only for exactly the seg function fxl__pick_seg_fn chose: a
-     * measuring probe gets the generic walk */
-    if (tri->fast_id && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].pick)
+     * measuring probe gets the generic walk; so do uv_wide triangles (the
+     * specialised walks step from 32-bit coordinates) */
+    if (tri->fast_id && !tri->uv_wide && fn == fast_tab[tri->fast_id].seg && fast_tab[tri->fast_id].pick)
         return fast_tab[tri->fast_id].pick(tri);
     return 0;
 }

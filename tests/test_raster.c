@@ -1136,6 +1136,69 @@ void test_auto_quadratic_segments_stay_within_budget(void)
 #endif
 }
 
+/* Coordinates 2^14 texels or more from the rebased origin (uv_wide,
+ * setup.c): the q16 coordinates hold u modulo 2^16 texels, so a segment's
+ * change taken the short way round is wrong beyond 2^15 texels, and every
+ * pixel between its ends with it. Such triangles step from the 64-bit
+ * values (the generic walk, affine segments only):
+ * - a quad at constant depth with 200 periods of a 1024-texel texture
+ *   across 200 pixels is exact but for the step's rounding in every mode,
+ *   AUTO's whole-span affine included (the error was up to 512 texels, half
+ *   the texture, in segments of 64 pixels and more);
+ * - AUTO keeps its budget on a receding quad whose u, v run over +-16384
+ *   periods of a 64-texel texture (its quadratic segments erred by up to 32
+ *   texels there, its budget 1/4). */
+void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
+{
+    static const int modes[4] = {FXL_PERSP_AFFINE, 64, FXL_PERSP_SPAN, FXL_PERSP_AUTO};
+    static uint16_t texels[1024 * 1024], buf[320 * 240];
+    tri_t tris[2];
+    fxl_vertex_t c[4];
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    fxl_target_t t;
+    fxl_stats_t st;
+    char msg[120];
+    double e;
+    int m, k;
+    c[0] = vtx(28, 28, 1.0, -100, -100);
+    c[1] = vtx(228, 28, 1.0, 100, -100);
+    c[2] = vtx(228, 228, 1.0, 100, 100);
+    c[3] = vtx(28, 228, 1.0, -100, 100);
+    tris[0].v[0] = c[0]; tris[0].v[1] = c[1]; tris[0].v[2] = c[2];
+    tris[1].v[0] = c[0]; tris[1].v[1] = c[2]; tris[1].v[2] = c[3];
+    for (m = 0; m < 4; m++) {
+        if (modes[m] == FXL_PERSP_AUTO && !FXL_HAVE_AUTO)
+            continue;
+        e = scene_max_error(tris, 2, modes[m], 1024);
+        snprintf(msg, sizeof msg, "constant depth, persp %d: max error %.5f texels", modes[m], e);
+        TEST_ASSERT_TRUE_MESSAGE(e <= 1.0 / 64, msg);
+    }
+    /* the specialised walks decline them */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 1024, 1024, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    memset(&st, 0, sizeof st);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, buf, 320, 240, 320, drawable_rgb565()));
+    for (k = 0; k < 2; k++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, tris[k].v, &st));
+    TEST_ASSERT_EQUAL_UINT32(2, st.drawn);
+    TEST_ASSERT_EQUAL_UINT32(2, st.generic);
+
+    if (!FXL_HAVE_AUTO)
+        return;
+    c[0] = vtx(28, 28, 1.0, -16384, -16384);
+    c[1] = vtx(228, 28, 0.5, 16384, -16384);
+    c[2] = vtx(228, 228, 0.25, 16384, 16384);
+    c[3] = vtx(28, 228, 0.5, -16384, 16384);
+    tris[0].v[0] = c[0]; tris[0].v[1] = c[1]; tris[0].v[2] = c[2];
+    tris[1].v[0] = c[0]; tris[1].v[1] = c[2]; tris[1].v[2] = c[3];
+    e = scene_max_error(tris, 2, FXL_PERSP_AUTO, 64);
+    snprintf(msg, sizeof msg, "receding, +-16384 periods, AUTO: max error %.5f texels", e);
+    TEST_ASSERT_TRUE_MESSAGE(e <= 0.25, msg);
+}
+
 /* fxl__quad_steps against the parabola it stands for: u_i (stepping
  * u += du, du += dd) within len^2/8 + 2 len + 1 q16 units of
  *   i d / len + C (i / len) (1 - i / len),  C = d len (g0 + g1) / 2 / 2^28,
@@ -1838,6 +1901,7 @@ int main(void)
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
+    RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_quad_steps_follow_their_parabola);
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
