@@ -3,7 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "unity.h"
-#include "fixel/texture.h"
+#include "fixel/fixel.h"
+#include "test_vertex.h"
 #include "../src/texel.h"
 
 void setUp(void) {}
@@ -427,6 +428,42 @@ void test_fetch_invalid_descriptor_or_level_reads_nothing(void)
     TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(&t, 0, 1, 1, &tr));
 }
 
+/* RGB565 texels and I8 palettes are read as uint16_t: at an odd address
+ * that is undefined behaviour (a HardFault on a Cortex-M0+), so the
+ * descriptor is refused - by init, validate, fetch and every draw - and an
+ * 8-bit format may sit anywhere. */
+void test_misaligned_texels_or_palette_are_refused(void)
+{
+    const uint8_t *odd = (const uint8_t *)g_rgb + 1;
+    static uint16_t pix[8 * 8];
+    fxl_texture_t t = valid_rgb565();
+    fxl_target_t tg;
+    fxl_draw_t d;
+    fxl_vertex_t v[3];
+    int tr;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texture_init(&t, odd, 4, 4, FXL_TEXFMT_RGB565, 1));
+    t = valid_rgb565();
+    t.texels = odd;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texture_validate(&t));
+    TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(&t, 0, 1, 1, &tr));
+    fxl_draw_defaults(&d);
+    d.texture = &t;
+    d.depth = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, pix, 8, 8, 8, FXL_PIXFMT_RGB565));
+    v[0] = test_vertex(0, 0, 1, 0, 0, 0xFFFF);
+    v[1] = test_vertex(8, 0, 1, 1, 0, 0xFFFF);
+    v[2] = test_vertex(0, 8, 1, 0, 1, 0xFFFF);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&tg, &d, v, NULL));
+    /* 8-bit texels need no alignment; an I8 palette does */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, odd, 4, 4, FXL_TEXFMT_L8, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_validate(&t));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, odd, 4, 4, FXL_TEXFMT_I8, 1));
+    t.palette = (const uint16_t *)(const void *)((const uint8_t *)g_palette + 1);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texture_validate(&t));
+    t.palette = g_palette;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_validate(&t));
+}
+
 void test_fetch_every_level_stays_inside_it(void)
 {
     /* 8x4 chain (32 + 8 + 2 + 1 texels): each level filled with its own
@@ -473,5 +510,6 @@ int main(void)
     RUN_TEST(test_fetch_rgb565_key);
     RUN_TEST(test_fetch_invalid_descriptor_or_level_reads_nothing);
     RUN_TEST(test_fetch_every_level_stays_inside_it);
+    RUN_TEST(test_misaligned_texels_or_palette_are_refused);
     return UNITY_END();
 }

@@ -48,8 +48,10 @@ typedef enum fxl_wrap {
 #define FXL_TEX_MAX_LEVELS (FXL_TEX_MAX_LOG2 + 1)
 
 typedef struct fxl_texture {
-    const void *texels;        /* the whole chain, level 0 first */
-    const uint16_t *palette;   /* I8 only: 256 native RGB565 colours */
+    const void *texels;        /* the whole chain, level 0 first; RGB565: 2-byte aligned */
+    const uint16_t *palette;   /* I8 only: 256 native RGB565 colours, 2-byte aligned; the
+                                * caller sets it after fxl_texture_init (which leaves it
+                                * NULL: validate and draws say FXL_ERR_ARG until then) */
     uint8_t log2_w, log2_h;    /* level 0 is (1 << log2_w) x (1 << log2_h) */
     uint8_t levels;            /* 1 .. 1 + max(log2_w, log2_h) */
     uint8_t format;            /* fxl_texfmt_t */
@@ -61,10 +63,15 @@ typedef struct fxl_texture {
 } fxl_texture_t;
 
 /* Describe existing texel data: repeat wrap on both axes, no key.
- * width and height must be powers of two; levels in 1 .. fxl_mip_levels(). */
+ * width and height must be powers of two (else FXL_ERR_UNSUPPORTED, as
+ * sides beyond 1 << FXL_TEX_MAX_LOG2); levels in 1 .. fxl_mip_levels()
+ * (else FXL_ERR_RANGE); NULL, an unknown format or RGB565 texels at an odd
+ * address: FXL_ERR_ARG. */
 fxl_status_t fxl_texture_init(fxl_texture_t *t, const void *texels, uint32_t width,
                               uint32_t height, fxl_texfmt_t format, uint32_t levels);
-/* FXL_OK when the descriptor is usable (draws call this too). */
+/* FXL_OK when the descriptor is usable (draws call this too): the checks
+ * of fxl_texture_init, plus wrap modes, the I8 palette (set, aligned), the
+ * reserved byte and flags, and a key an 8-bit format can hold. */
 fxl_status_t fxl_texture_validate(const fxl_texture_t *t);
 /* Bytes per texel of a format (0 for an unknown format). */
 uint32_t fxl_texfmt_bytes(fxl_texfmt_t format);
