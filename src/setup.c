@@ -140,10 +140,15 @@ static inline int fit_shift(const int64_t a[3], int bits)
 
 /* Rebase three normalised q16 coordinates by whole periods (repeat) or
  * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2).
- * Returns the largest rebased value. */
-static int64_t rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
+ * Returns whether the axis is wide (raster_int.h, uv_wide): repeat or
+ * mirror, and the largest rebased value at 2^30 q16 texels or more of a
+ * level 0 2^lg texels across - normalised, 2^(30 - lg). Any two points of
+ * the triangle lie less than 2^30 apart otherwise (u over it is between
+ * its vertex values): half the 2^31 of the short way. Clamp axes step
+ * from saturated int32 values: never wide. */
+static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[3])
 {
-    int64_t mn = c[0], mx = c[0];
+    int32_t mn = c[0], mx = c[0];
     int64_t base = 0;
     int i;
 
@@ -154,12 +159,12 @@ static int64_t rebase(const int32_t c[3], fxl_wrap_t wrap, int64_t out[3])
             mx = c[i];
     }
     if (wrap == FXL_WRAP_REPEAT)
-        base = fxl__asr64(mn, 16) * 65536;
+        base = (int64_t)fxl__asr32(mn, 16) * 65536;
     else if (wrap == FXL_WRAP_MIRROR)
-        base = fxl__asr64(mn, 17) * 131072;
+        base = (int64_t)fxl__asr32(mn, 17) * 131072;
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
-    return mx - base;
+    return wrap <= FXL_WRAP_MIRROR && (int64_t)mx - base >= (int32_t)((1u << 30) >> lg);
 }
 
 /* Build the plane of attribute a_i * q_i, scaled below 2^30. */
@@ -242,13 +247,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         int wide;
         for (i = 0; i < 3; i++)
             c[i] = v[i].u;
-        /* uv_wide: an axis whose rebased q16 texels reach 2^30 (any
-         * two points of the triangle lie less than 2^30 apart otherwise,
-         * u over the triangle being between its vertex values: half the
-         * 2^31 of the short way); < 2^47 here, no shift overflows.
-         * Clamp axes step from saturated int32 values: never wide. */
-        wide = (uint64_t)rebase(c, (fxl_wrap_t)tri->tex->wrap_u, a) << tri->tex->log2_w >= (uint64_t)1 << 30 &&
-               !fxl__signed_u(tri);
+        wide = rebase(c, (fxl_wrap_t)tri->tex->wrap_u, tri->tex->log2_w, a);
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
@@ -256,9 +255,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         persp_plane(tri, FXL__AU, a, q, X, Y, &area);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
-        wide |= (uint64_t)rebase(c, (fxl_wrap_t)tri->tex->wrap_v, a) << tri->tex->log2_h >= (uint64_t)1 << 30 &&
-                !fxl__signed_v(tri);
-        tri->uv_wide = (uint8_t)wide;
+        tri->uv_wide = (uint8_t)(rebase(c, (fxl_wrap_t)tri->tex->wrap_v, tri->tex->log2_h, a) | wide);
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[1] = (uint8_t)fit_shift(a, 0);

@@ -455,26 +455,26 @@ static inline void correct(const fxl__tri_t *tri, const int64_t pv[NPLANES], poi
     }
 }
 
-/* b - a of two coordinates as a signed step numerator: for clamp axes
- * from the saturated int32 values, for repeat and mirror axes from the
- * 64-bit ones (not the uint32 ones, which hold them modulo 2^16 texels:
- * their short-way difference is the same number while the triangle is
- * not uv_wide, and the wrong one where it is), clamped to +-2^62 (a step
- * that large saturates anyway; the clamp keeps the negation in
- * step_pow2 defined). */
-static inline int64_t coord_diff(uint32_t b, uint32_t a, int64_t b64, int64_t a64, int is_signed)
+/* p1 - p0 of coordinate u (axis 0) or v (1) as a signed step numerator:
+ * for clamp axes from the saturated int32 values, for repeat and mirror
+ * axes from the 64-bit ones (not the uint32 ones, which hold them modulo
+ * 2^16 texels: their short-way difference is the same number while the
+ * triangle is not uv_wide, and the wrong one where it is). Modular, as the
+ * planes (raster_int.h): only a saturated coordinate, garbage anyway,
+ * wraps. Out of line at -Os (inlined twice it was ~180 bytes of the
+ * Cortex-M4 core), with pointers so the call stays small. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+__attribute__((noinline))
+#endif
+static int64_t coord_diff(const point_t *p1, const point_t *p0, int axis, int is_signed)
 {
-    const int64_t lim = (int64_t)1 << 62;
-    uint64_t d;
     if (is_signed) {
+        const uint32_t b = p1->a[axis], a = p0->a[axis];
         int64_t sb = b <= INT32_MAX ? (int64_t)b : (int64_t)b - ((int64_t)1 << 32);
         int64_t sa = a <= INT32_MAX ? (int64_t)a : (int64_t)a - ((int64_t)1 << 32);
         return sb - sa;
     }
-    d = (uint64_t)b64 - (uint64_t)a64;   /* modular: no overflow */
-    if (d <= (uint64_t)INT64_MAX)
-        return d > (uint64_t)lim ? lim : (int64_t)d;
-    return ~d > (uint64_t)lim ? -lim : -(int64_t)(~d) - 1;
+    return axis ? (int64_t)((uint64_t)p1->v64 - (uint64_t)p0->v64) : (int64_t)((uint64_t)p1->u64 - (uint64_t)p0->u64);
 }
 
 static inline int32_t sat_i32(int64_t s)
@@ -487,7 +487,11 @@ static inline int32_t sat_i32(int64_t s)
  * is still exact after the shift to a smaller mip level. */
 static inline int64_t step_pow2(int64_t diff, int k)
 {
-    return diff < 0 ? -(int64_t)((uint64_t)-diff >> k) : (int64_t)((uint64_t)diff >> k);
+    /* the magnitude in uint64 and k >= 1 before negating: defined for
+     * INT64_MIN too */
+    if (k == 0)
+        return diff;
+    return diff < 0 ? -(int64_t)((0u - (uint64_t)diff) >> k) : (int64_t)((uint64_t)diff >> k);
 }
 
 static inline int64_t step_of(int64_t diff, int32_t div)
@@ -1806,8 +1810,8 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         b = x + n < cr ? x + n : cr;
         off = a - x;
         if (fxl__has_uv(tri)) {
-            du0 = STEP(coord_diff(p1.a[FXL__AU], p0.a[FXL__AU], p1.u64, p0.u64, fxl__signed_u(tri)));
-            dv0 = STEP(coord_diff(p1.a[FXL__AV], p0.a[FXL__AV], p1.v64, p0.v64, fxl__signed_v(tri)));
+            du0 = STEP(coord_diff(&p1, &p0, FXL__AU, fxl__signed_u(tri)));
+            dv0 = STEP(coord_diff(&p1, &p0, FXL__AV, fxl__signed_v(tri)));
 #if FXL_HAVE_MIPMAP
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
