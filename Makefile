@@ -55,11 +55,6 @@ build: configure
 	$(RUN) $(CMAKE) --build $(BUILD_DIR) -j $(JOBS)
 
 run: build
-	@if [ ! -x $(BUILD_DIR)/bin/fixel-sim ]; then \
-	  echo "make run: $(BUILD_DIR)/bin/fixel-sim does not exist yet" \
-	       "(host_sim/tools/sim.c has not been written)"; \
-	  exit 1; \
-	fi
 	$(BUILD_DIR)/bin/fixel-sim --gallery $(GALLERY)
 
 test: build
@@ -78,7 +73,7 @@ firmware: deps-firmware
 	    if [ -f $$dir/lib/lib$$lib.a ]; then archives="$$archives $$dir/lib/lib$$lib.a"; fi; \
 	  done; \
 	  if [ -z "$$archives" ]; then \
-	    echo "make firmware: no archive was built (src/ and port/ have no .c files)"; \
+	    echo "make firmware: no archive was built in $$dir/lib"; \
 	    exit 1; \
 	  fi; \
 	  $(ARM_PREFIX)size -t $$archives; \
@@ -86,17 +81,11 @@ firmware: deps-firmware
 	done
 
 bench: build
-	@if [ ! -f host_sim/scripts/bench.sh ]; then \
-	  echo "make bench: host_sim/scripts/bench.sh is not available yet"; exit 1; \
-	fi
 	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/bench.sh
 	@# issue 5: the stability sweeps are part of the benchmark too
 	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/stability.sh
 
 stability: build
-	@if [ ! -f host_sim/scripts/stability.sh ]; then \
-	  echo "make stability: host_sim/scripts/stability.sh is not available yet"; exit 1; \
-	fi
 	FXL_BUILD_DIR=$(BUILD_DIR) FXL_BIN_DIR=$(BUILD_DIR)/bin bash host_sim/scripts/stability.sh
 
 sanitize: deps

@@ -112,8 +112,27 @@ typedef struct options {
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: fixel-bench accuracy|draw|gen-fw|ram|count-trace|frontend|frontend-run [options]\n"
-               "  (see the comment at the top of host_sim/tools/bench.c)\n");
+    fprintf(f,
+            "usage: fixel-bench COMMAND [options]   (make bench runs them all: host_sim/scripts/bench.sh)\n"
+            "  accuracy [--scene S] [--method M] [--filter F] [--runs N] [--host-ir FILE]\n"
+            "           [--m4 FILE] [--m0 FILE] [--csv FILE] [--plot-dir DIR]\n"
+            "      every scene x method x filter against the reference: coverage, texel\n"
+            "      error, PSNR, host Mpixels/s; joins instruction counts; writes the CSV\n"
+            "  draw [--scene S] [--method M] [--filter F] [--mip none|nearest|linear]\n"
+            "      one frame of each configuration, for callgrind:\n"
+            "      valgrind --tool=callgrind --collect-atstart=no \\\n"
+            "               --toggle-collect=fxl_draw_triangle fixel-bench draw --scene floor\n"
+            "  gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1]\n"
+            "      scenes, textures and configurations as C arrays for the firmware in bench/\n"
+            "  ram                     caller-provided memory per scene\n"
+            "  frontend-run            the 3D front end alone, for callgrind\n"
+            "  frontend [--host-ir FILE] [--m4 OUT] [--m0 OUT] [--csv FILE]\n"
+            "      front-end instructions per vertex and per corner\n"
+            "  count-trace NM_FILE < qemu-trace\n"
+            "      count qemu exec-trace instructions inside the functions of NM_FILE\n"
+            "  S: floor floor_rolled cube tunnel small_tris quad_near; M: affine subdiv4\n"
+            "  subdiv8 subdiv16 subdiv32 subdiv64 exact auto; F: point bilinear trilinear\n"
+            "  (details: the comment at the top of host_sim/tools/bench.c)\n");
 }
 
 static int selected(const char *want, const char *name)
@@ -1046,6 +1065,11 @@ int main(int argc, char **argv)
         return 2;
     }
     cmd = argv[1];
+    for (i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return 0;
+        }
     if (strcmp(cmd, "count-trace") == 0) {
         if (argc != 3) {
             usage(stderr);

@@ -967,8 +967,15 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--quick"))
             quick = 1;
         else {
-            fprintf(stderr, "usage: fixel-stability [--out DIR] [--quick]\n");
-            return 2;
+            const int help = !strcmp(argv[a], "--help") || !strcmp(argv[a], "-h");
+            fprintf(help ? stdout : stderr,
+                    "usage: fixel-stability [--out DIR] [--quick]\n"
+                    "  Sweeps every method past its breaking point against the reference\n"
+                    "  renderer (depth ratio, grazing angle, eye plane, screen extent and\n"
+                    "  limits, texture offsets and ranges, slivers, texture sizes, LOD) and\n"
+                    "  writes CSVs and gnuplot data to DIR (default docs/stability; charts:\n"
+                    "  make stability). --quick: fewer points per sweep.\n");
+            return help ? 0 : 2;
         }
     }
     mkdir(outdir, 0777);
