@@ -149,6 +149,9 @@ fxl_status_t fxl_panel_init(fxl_panel_t *panel, const fxl_port_hal_t *hal,
         return FXL_ERR_ARG;
     if (rotation > 3u || !preset_ok(preset)) return FXL_ERR_ARG;
     if (hal->delay_ms == NULL) return FXL_ERR_UNSUPPORTED;
+    /* COLMOD bits 2..0 are the MCU interface's pixel format: the drivers
+     * and the band renderer send RGB565 (16 bits, 0x5) only */
+    if ((preset->colmod & 0x07u) != (FXL_COLMOD_RGB565 & 0x07u)) return FXL_ERR_UNSUPPORTED;
     panel->hal = *hal;
     panel->preset = preset;
     panel->started = 0;

@@ -426,6 +426,20 @@ void test_init_without_delay_refuses_before_sending_anything(void)
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
 }
 
+/* The drivers send RGB565 only: a preset whose COLMOD selects another MCU
+ * interface format (bits 2..0; 0x66 is 18 bits a pixel) is refused before
+ * anything is sent; 0x05 (16 bits, RGB interface bits clear) is accepted. */
+void test_init_refuses_a_pixel_format_other_than_rgb565(void)
+{
+    fxl_panel_preset_t pr = fxl_st7789_240x320;
+    start_emu("st7789");
+    pr.colmod = 0x66u;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_panel_init(&panel, &hal, &pr, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+    pr.colmod = 0x05u;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &pr, 0));
+}
+
 void test_missing_reset_and_wait_hooks_still_work(void)
 {
     /* reset NULL: SWRESET path; wait NULL: the driver spins on the counter,
@@ -518,6 +532,7 @@ int main(void)
     RUN_TEST(test_null_and_missing_required_callbacks_are_arg_errors);
     RUN_TEST(test_optional_wrappers_report_unsupported_when_null);
     RUN_TEST(test_init_without_delay_refuses_before_sending_anything);
+    RUN_TEST(test_init_refuses_a_pixel_format_other_than_rgb565);
     RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
     RUN_TEST(test_hal_failures_become_io_errors);
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);

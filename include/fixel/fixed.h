@@ -56,8 +56,9 @@ fxl_q16_t fxl_q16_sqrt(fxl_q16_t a);
 int fxl_clz32(uint32_t x);
 int fxl_clz64(uint64_t x);
 
-/* Rounded 64-bit quotient num / den with den != 0 (ties away from zero).
- * INT64_MIN / -1 saturates to INT64_MAX. */
+/* Rounded 64-bit quotient num / den (ties away from zero). INT64_MIN / -1
+ * saturates to INT64_MAX; den == 0 saturates too: INT64_MAX for num > 0,
+ * INT64_MIN for num < 0, 0 for num == 0 (no trap, no undefined behaviour). */
 int64_t fxl_div64_round(int64_t num, int64_t den);
 /* floor(num / den) for den > 0. */
 int64_t fxl_div64_floor(int64_t num, int64_t den);

@@ -118,7 +118,9 @@ typedef struct fxl_mesh {
     const fxl_vec3_t *pos;         /* object space, q16 */
     const fxl_texcoord_t *uv;      /* q16 normalised texture coordinates */
     const uint16_t *color;         /* native RGB565 */
-    const fxl_vec3_t *normal;      /* object space unit vectors, q16 */
+    const fxl_vec3_t *normal;      /* object space unit vectors, q16; transformed by view *
+                                    * model's 3x3 and renormalised: right for rotations and
+                                    * uniform scale, not for non-uniform scale or shear */
     uint32_t vert_count;
     const uint16_t *idx;           /* 3 * tri_count indices < vert_count */
     uint32_t tri_count;
@@ -303,6 +305,9 @@ typedef struct fxl_xform {
     int64_t hw_q16, hh_q16;        /* viewport half size */
 } fxl_xform_t;
 
+/* Errors: FXL_ERR_ARG (NULL), FXL_ERR_RANGE (near <= 0, far not beyond near
+ * (far 0: none), a viewport outside 1..FXL_TARGET_MAX_DIM or its origin past
+ * FXL_TARGET_MAX_ORIGIN, or a product of the matrices that overflows). */
 fxl_status_t fxl_pipeline_prepare(const fxl_pipeline_t *p, fxl_xform_t *xf);
 /* Clip coordinates of an object-space position (attributes zeroed).
  * FXL_ERR_RANGE when a coordinate reaches FXL_CLIP_LIMIT_Q32. */

@@ -159,7 +159,9 @@ typedef struct fxl_panel_preset {
     uint8_t madctl[4];               /* MY/MX/MV per rotation (BGR is added from flags) */
     fxl_port_offset_t offset[4];     /* RAM offset per rotation */
     uint8_t flags;                   /* FXL_PANEL_* */
-    uint8_t colmod;                  /* FXL_COLMOD_RGB565 */
+    uint8_t colmod;                  /* FXL_COLMOD_RGB565; bits 2..0 (the MCU interface's
+                                      * format) must be 0x5, 16 bits a pixel: fixel sends
+                                      * RGB565 only (fxl_panel_init: FXL_ERR_UNSUPPORTED) */
     const fxl_dcs_step_t *init;      /* controller-specific steps after SLPOUT */
     uint8_t init_count;
 } fxl_panel_preset_t;
@@ -275,8 +277,12 @@ typedef struct fxl_band {
 } fxl_band_t;
 
 /* Bind the band renderer to an initialised panel (frame = its current
- * visible size). buf0/buf1 hold width * band_rows pixels each; depth is NULL
- * or width * band_rows entries. bins may be NULL with bin_cap 0 (fallback
+ * visible size; after fxl_panel_set_rotation changes it, fxl_band_render
+ * says FXL_ERR_ARG until fxl_band_init runs again). buf0/buf1 hold width *
+ * band_rows pixels each; depth is NULL or width * band_rows entries.
+ * tri_cap and bin_cap count entries of tris and bins (not bytes: see
+ * FXL_BAND_TRI_BYTES, FXL_BAND_BIN_BYTES), and at most 65535 of each are
+ * used (16-bit links). bins may be NULL with bin_cap 0 (fallback
  * only). Errors: FXL_ERR_ARG (NULL/zero), FXL_ERR_RANGE (band_rows > height
  * or more than 65535 bands), FXL_ERR_NOMEM (bin_cap below one header per
  * band while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build

@@ -92,8 +92,10 @@ typedef struct fxl_draw {
     uint8_t shade;                /* fxl_shade_t */
     uint8_t depth;                /* FXL_DEPTH_* bits; ignored without a depth buffer */
     uint16_t color;               /* flat colour, native RGB565 */
-    int16_t lod_bias_q8;          /* added to the LOD, 1/256 level units */
-    fxl_q16_t auto_budget;        /* FXL_PERSP_AUTO: max texel error, q16 (> 0) */
+    int16_t lod_bias_q8;          /* added to the LOD, 1/256 level units (any int16; the
+                                   * level is then clamped to the chain) */
+    fxl_q16_t auto_budget;        /* FXL_PERSP_AUTO: max texel error, q16; > 0, else
+                                   * FXL_ERR_RANGE; budgets above 256 texels act as 256 */
 } fxl_draw_t;
 
 /* Counters a draw adds to (pass NULL when not wanted). */

@@ -75,11 +75,15 @@ fxl_status_t fxl_texture_init(fxl_texture_t *t, const void *texels, uint32_t wid
 fxl_status_t fxl_texture_validate(const fxl_texture_t *t);
 /* Bytes per texel of a format (0 for an unknown format). */
 uint32_t fxl_texfmt_bytes(fxl_texfmt_t format);
-/* Offset of the first texel of `level` from `texels`, in texels. */
+/* Offset of the first texel of `level` from `texels`, in texels. A level
+ * past the chain gives the chain's length (the offset just after it); NULL
+ * or an invalid size gives 0. */
 uint32_t fxl_texture_level_offset(const fxl_texture_t *t, uint32_t level);
 
 /* Wrap-aware texel read at integer texel (x, y) of `level`, as native RGB565.
- * *transparent (may be NULL) is set to 1 for a key texel, else 0. Any x, y. */
+ * *transparent (may be NULL) is set to 1 for a key texel, else 0. Any x, y.
+ * An invalid descriptor (fxl_texture_validate) or a level >= t->levels reads
+ * opaque black (0) and touches no texel. */
 uint16_t fxl_texture_fetch(const fxl_texture_t *t, uint32_t level, int32_t x, int32_t y,
                            int *transparent);
 
