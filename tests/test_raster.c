@@ -385,21 +385,28 @@ void test_no_write_outside_clip_rectangle_canaries(void)
 void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
 {
     static uint16_t full[W * H], zfull[W * H], band[W * 7], zband[W * 7], clipped[W * H], zclip[W * H];
+    static uint16_t strip[11 * H], zstrip[11 * H];
     fxl_vertex_t tris[60][3];
     fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
-    int k, y0, x, y, mode, checked = 0;
+    int k, y0, x0, x, y, mode, checked = 0;
     char summary[80];
     make_texture(&tex);
     lcg_state = 31u;
     for (k = 0; k < 60; k++)
         random_tri(tris[k], 90.0);
-    for (mode = 0; mode < 6; mode++) {
+    for (mode = 0; mode < 7; mode++) {
         fxl_rect_t cr = {13, 0, 41, H};
         fxl_draw_defaults(&d);
         d.texture = &tex;
         d.filter = (uint8_t)(mode & 1);
+        if (mode == 6) {
+            /* Gouraud modulation: the generic walk (its own origin arithmetic) */
+            d.filter = FXL_FILTER_POINT;
+            d.shade = FXL_SHADE_GOURAUD;
+            d.texenv = FXL_TEXENV_MODULATE;
+        }
         /* subdivided, affine, adaptive (segments cut by the error bound:
          * the walk starts at the block containing the clip edge) */
         d.persp = (int16_t)(mode < 2 ? 16 : (mode < 4 ? 0 : FXL_PERSP_AUTO));
@@ -407,7 +414,8 @@ void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
         /* depth is incidental (without FXL_HAVE_DEPTH the set_depth calls
          * below fail and every render is drawn without); a mode this build
          * left out is refused, not compared empty */
-        if ((d.filter == FXL_FILTER_BILINEAR && !FXL_HAVE_BILINEAR) || (d.persp == FXL_PERSP_AUTO && !FXL_HAVE_AUTO)) {
+        if ((d.filter == FXL_FILTER_BILINEAR && !FXL_HAVE_BILINEAR) || (d.persp == FXL_PERSP_AUTO && !FXL_HAVE_AUTO) ||
+            (mode == 6 && !FXL_HAVE_GENERIC)) {
             fxl_target_init(&t, full, W, H, W, drawable_rgb565());
             TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_draw_triangle(&t, &d, tris[0], NULL));
             continue;
@@ -447,9 +455,28 @@ void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
                         TEST_FAIL_MESSAGE(msg);
                     }
         }
+        /* column strips: a target whose origin_x is not 0 */
+        for (x0 = 0; x0 < W; x0 += 11) {
+            int bw = W - x0 < 11 ? W - x0 : 11;
+            fxl_target_init(&t, strip, bw, H, bw, drawable_rgb565());
+            fxl_target_set_origin(&t, x0, 0);
+            fxl_target_set_depth(&t, zstrip);
+            fxl_target_clear(&t, 0x1234);
+            fxl_target_clear_depth(&t);
+            for (k = 0; k < 60; k++)
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, tris[k], NULL));
+            for (y = 0; y < H; y++)
+                for (x = 0; x < bw; x++)
+                    if (strip[y * bw + x] != full[y * W + x0 + x]) {
+                        char msg[100];
+                        snprintf(msg, sizeof msg, "strip pixel (%d,%d) %04x != full %04x (mode %d)", x0 + x, y,
+                                 strip[y * bw + x], full[y * W + x0 + x], mode);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+        }
     }
-    snprintf(summary, sizeof summary, "%d of 6 modes checked, %d need features this build lacks", checked,
-             6 - checked);
+    snprintf(summary, sizeof summary, "%d of 7 modes checked, %d need features this build lacks", checked,
+             7 - checked);
     TEST_MESSAGE(summary);
 }
 
@@ -1616,9 +1643,39 @@ void test_draw_api_errors(void)
     d.texture = &tex;
     TEST_ASSERT_NOT_EQUAL(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
     d.texture = base;
-    /* A clip rectangle edited to exceed the buffer is refused. */
-    t.clip.x1 = W + 5;
+    fxl_draw_defaults(&d);
+    d.texture = base;
+    d.lod = 2;   /* no such LOD mode */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    fxl_draw_defaults(&d);
+    d.texture = base;
+    /* A clip rectangle edited to exceed the buffer is refused, on every
+     * side, before any pixel: the triangle covers the whole target and
+     * beyond, and the row after the buffer is a canary. */
+    {
+        static uint16_t guarded[W * (H + 1)];
+        const fxl_vertex_t big[3] = {vtx(-40, -40, 0.5, 0, 0), vtx(4 * W, -40, 0.5, 1, 0),
+                                     vtx(-40, 4 * H, 0.5, 0, 1)};
+        int side, k;
+        for (side = 0; side < 5; side++) {
+            for (k = 0; k < W * (H + 1); k++)
+                guarded[k] = 0x5A5Au;
+            fxl_target_init(&t, guarded, W, H, W, drawable_rgb565());
+            if (side == 0)
+                t.clip.x0 = -1;
+            else if (side == 1)
+                t.clip.y0 = -1;
+            else if (side == 2)
+                t.clip.x1 = W + 1;
+            else if (side == 3)
+                t.clip.y1 = H + 1;
+            else
+                t.stride = FXL_TARGET_MAX_DIM * 4 + 1;   /* past the documented limit */
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, big, NULL), "edited target");
+            for (k = 0; k < W * (H + 1); k++)
+                TEST_ASSERT_EQUAL_HEX16(0x5A5Au, guarded[k]);
+        }
+    }
     fxl_target_init(&t, pix, W, H, W, drawable_rgb565());
     t.pixels = NULL;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
@@ -1634,13 +1691,161 @@ void test_draw_api_errors(void)
     TEST_ASSERT_EQUAL_UINT32(1, st.culled_outside);
     TEST_ASSERT_EQUAL_UINT32(2, st.triangles);
     TEST_ASSERT_EQUAL_UINT32(0, st.pixels);
-    /* Indexed draws refuse out-of-range indices. */
+    /* Indexed draws refuse out-of-range indices, the first one past the
+     * array included. */
     {
-        static const uint16_t idx[3] = {0, 1, 7};
+        static const uint16_t idx[3] = {0, 1, 7}, idx3[3] = {0, 1, 3};
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&t, &d, v, 3, idx, 1, NULL));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&t, &d, v, 3, idx3, 1, NULL));
         TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_indexed(&t, &d, v, 3, NULL, 1, NULL));
     }
+    /* A triangle whose rightmost vertex is exactly on the clip's left edge
+     * covers no pixel centre inside it: culled as outside, not drawn. */
+    memset(&st, 0, sizeof st);
+    t.clip.x0 = 10;
+    v[0] = vtx(0, 0, 0.5, 0, 0);
+    v[1] = vtx(10, 0, 0.5, 1, 0);
+    v[2] = vtx(0, 10, 0.5, 0, 1);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
+    TEST_ASSERT_EQUAL_UINT32(1, st.culled_outside);
+    TEST_ASSERT_EQUAL_UINT32(0, st.drawn);
 }
+
+/* The core's depth rule (not only the reference renderer's): a pixel is
+ * drawn where the new depth is greater (nearer) than the stored one, so
+ * of two draws at one depth the first stays. A quad at one inv_w drawn
+ * twice with two textures keeps the first everywhere, and its depth; a
+ * nearer third draw replaces both. Point and bilinear on subdivided,
+ * exact and adaptive walks, and a Gouraud draw (the generic walk). */
+void test_depth_ties_keep_the_first_draw_in_every_walk(void)
+{
+    static uint16_t px[W * H], zb[W * H], first[W * H], zfirst[W * H], tex_a[64 * 64], tex_b[64 * 64];
+    static const int16_t persp[3] = {16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
+    fxl_texture_t ta, tb;
+    fxl_target_t t;
+    fxl_draw_t d;
+    fxl_vertex_t q[4], t0[3], t1[3];
+    int i, m, f, pass, drawn = 0;
+    char msg[80];
+    TEST_NEEDS(FXL_HAVE_DEPTH);
+    for (i = 0; i < 64 * 64; i++) {
+        tex_a[i] = (uint16_t)(0x0841u * (uint32_t)(i & 31));
+        tex_b[i] = (uint16_t)~tex_a[i];
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&ta, tex_a, 64, 64, FXL_TEXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tb, tex_b, 64, 64, FXL_TEXFMT_RGB565, 1));
+    for (m = 0; m < 4; m++)
+        for (f = 0; f < 2; f++) {
+            const double w0 = 0.4;
+            fxl_draw_defaults(&d);
+            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+            d.filter = (uint8_t)f;
+            if (m == 3) {
+                if (f || !FXL_HAVE_GENERIC)
+                    continue;
+                d.shade = FXL_SHADE_GOURAUD;   /* untextured: the generic walk */
+            } else {
+                d.persp = persp[m];
+                if ((f && !FXL_HAVE_BILINEAR) || (d.persp == FXL_PERSP_AUTO && !FXL_HAVE_AUTO))
+                    continue;
+            }
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, W, H, W, drawable_rgb565()));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+            fxl_target_clear(&t, 0);
+            fxl_target_clear_depth(&t);
+            for (pass = 0; pass < 3; pass++) {
+                /* a receding quad (depth varies along x and y), the same
+                 * inv_w in passes 0 and 1, nearer in pass 2 */
+                const double s = pass == 2 ? 1.05 : 1.0;   /* inv_w stays below 1 */
+                const uint16_t col = pass == 1 ? 0x07E0u : 0xF800u;
+                q[0] = test_vertex(2, 3, w0 * s, 0, 0, col);
+                q[1] = test_vertex(W - 3, 1, 0.9 * s, 3, 0, col);
+                q[2] = test_vertex(W - 2, H - 2, 0.7 * s, 3, 2, col);
+                q[3] = test_vertex(1, H - 4, w0 * s, 0, 2, col);
+                t0[0] = q[0]; t0[1] = q[1]; t0[2] = q[2];
+                t1[0] = q[0]; t1[1] = q[2]; t1[2] = q[3];
+                d.texture = m == 3 ? NULL : (pass == 1 ? &tb : &ta);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, t0, NULL));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, t1, NULL));
+                if (pass == 0) {
+                    memcpy(first, px, sizeof px);
+                    memcpy(zfirst, zb, sizeof zb);
+                } else if (pass == 1) {
+                    snprintf(msg, sizeof msg, "walk %d filter %d: a tie overwrote the first draw", m, f);
+                    TEST_ASSERT_TRUE_MESSAGE(memcmp(first, px, sizeof px) == 0, msg);
+                    TEST_ASSERT_TRUE_MESSAGE(memcmp(zfirst, zb, sizeof zb) == 0, msg);
+                }
+            }
+            /* the nearer draw replaced every pixel of the quad's interior */
+            for (i = 0; i < W * H; i++)
+                if (zfirst[i]) {
+                    snprintf(msg, sizeof msg, "walk %d filter %d: pixel %d not nearer", m, f, i);
+                    TEST_ASSERT_TRUE_MESSAGE(zb[i] > zfirst[i], msg);
+                }
+            drawn++;
+        }
+    TEST_ASSERT_TRUE(drawn > 0);
+}
+
+/* Byte-swapped targets get the native pixels byte-swapped, in every walk:
+ * point and bilinear, subdivided, exact (whose one-pixel segments have
+ * their own code, span_fast.h FXL_T_PIX1) and adaptive, with and without
+ * depth. */
+void test_swapped_target_is_the_native_image_byte_swapped(void)
+{
+    static uint16_t nat[W * H], swp[W * H], zn[W * H], zs[W * H], texels[64 * 64];
+    static const int16_t persp[4] = {16, FXL_PERSP_EXACT, FXL_PERSP_AUTO, 8};
+    fxl_vertex_t tris[12][3];
+    fxl_texture_t tex;
+    fxl_target_t tn, ts;
+    fxl_draw_t d;
+    int i, k, m, f, zd, compared = 0;
+    char msg[80];
+    for (i = 0; i < 64 * 64; i++)
+        texels[i] = (uint16_t)(i * 2654435761u >> 13);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    lcg_state = 5u;
+    for (k = 0; k < 12; k++)
+        random_tri(tris[k], 70.0);
+    for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
+        for (m = 0; m < 4; m++)
+            for (f = 0; f < 2; f++) {
+                fxl_status_t sn, ss;
+                fxl_draw_defaults(&d);
+                d.texture = &tex;
+                d.depth = zd ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
+                d.filter = (uint8_t)f;
+                d.persp = persp[m];
+                fxl_target_init(&tn, nat, W, H, W, FXL_PIXFMT_RGB565);
+                fxl_target_init(&ts, swp, W, H, W, FXL_PIXFMT_RGB565_SWAP);
+                if (zd) {
+                    fxl_target_set_depth(&tn, zn);
+                    fxl_target_set_depth(&ts, zs);
+                    fxl_target_clear_depth(&tn);
+                    fxl_target_clear_depth(&ts);
+                }
+                fxl_target_clear(&tn, 0x1234);
+                fxl_target_clear(&ts, 0x1234);
+                sn = fxl_draw_check(&tn, &d);
+                ss = fxl_draw_check(&ts, &d);
+                if (sn != FXL_OK || ss != FXL_OK)
+                    continue;   /* a kind of draw this build left out */
+                for (k = 0; k < 12; k++) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tn, &d, tris[k], NULL));
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&ts, &d, tris[k], NULL));
+                }
+                for (i = 0; i < W * H; i++)
+                    if ((uint16_t)((nat[i] >> 8) | (nat[i] << 8)) != swp[i]) {
+                        snprintf(msg, sizeof msg, "persp %d filter %d depth %d: pixel %d %04x vs %04x", persp[m], f,
+                                 zd, i, nat[i], swp[i]);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+                compared++;
+            }
+    snprintf(msg, sizeof msg, "%d of %d kinds of draw compared", compared, (FXL_HAVE_DEPTH ? 2 : 1) * 8);
+    TEST_MESSAGE(msg);
+}
+
 
 /* fxl_draw_indexed checks the settings once for the list (fxl_draw_check)
  * and then draws each triangle as fxl_draw_triangle would: the same pixels
@@ -1910,6 +2115,8 @@ int main(void)
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_indexed_draw_matches_single_draws);
+    RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
+    RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }
