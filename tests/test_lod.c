@@ -276,6 +276,17 @@ void test_lod_bias_and_per_triangle_mode(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
     for (x = 12; x < 60; x += 7)
         TEST_ASSERT_EQUAL_INT(tri_lod, probe_lod[12 * 320 + x]);
+    /* A chain shorter than the full one (2 of 10 levels): the per-triangle
+     * LOD (3) clamps to its last level, for either mip mode, with a bias
+     * or not (unclamped it indexed a level that does not exist). */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&t, texels, 512, 512, FXL_TEXFMT_RGB565, 2));
+    for (x = 0; x < 4; x++) {
+        d.mip = (x & 1) ? FXL_MIP_LINEAR : FXL_MIP_NEAREST;
+        d.lod_bias_q8 = (x & 2) ? 1000 : 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
+        TEST_ASSERT_EQUAL_INT(256, probe_lod[20 * 320 + 20]);
+        TEST_ASSERT_EQUAL_INT(1, probe_level[20 * 320 + 20]);
+    }
 }
 
 /* Trilinear: the blend weight of the second level is the LOD fraction, and

@@ -562,6 +562,37 @@ void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
     fixture_free(f);
 }
 
+/* The edges of binning: a triangle whose only covered row is row 0 is
+ * kept (band 0), and bins exactly large enough for a scene do not
+ * overflow. */
+void test_binning_edges_row_zero_and_bins_exactly_full(void)
+{
+    band_fixture_t *f;
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    need_band_draws();
+    f = fixture();
+    fxl_draw_defaults(&d);
+    flat(&d, 3);
+    /* 10 headers + 3 entries: one 3-band triangle fills them exactly */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
+                                                f->store, 4, f->bins, 13));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(13, f->band.bin_used);
+    TEST_ASSERT_FALSE(fxl_band_overflowed(&f->band));
+    /* y from -10 to 0.6: row 0's centre (0.5) is inside */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_begin(&f->band));
+    flat_tri(v, -10, 0);
+    v[1].y = v[2].y = FXL_Q16_INT(0) + (fxl_q16_t)(0.6 * 65536);
+    v[0].y = FXL_Q16_INT(-10);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(1, f->band.tri_count);
+    TEST_ASSERT_EQUAL_UINT32(0, f->store[0].band0);
+    TEST_ASSERT_EQUAL_UINT32(0, f->store[0].band1);
+    fixture_free(f);
+}
+
 /* ---- error paths ----------------------------------------------------------- */
 
 void test_band_api_errors(void)
@@ -712,6 +743,7 @@ int main(void)
     RUN_TEST(test_no_bin_memory_scans_every_triangle_with_identical_image);
     RUN_TEST(test_triangle_is_listed_once_in_each_band_it_touches);
     RUN_TEST(test_triangle_that_does_not_fit_the_bins_starts_the_fallback);
+    RUN_TEST(test_binning_edges_row_zero_and_bins_exactly_full);
     RUN_TEST(test_band_api_errors);
     RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);

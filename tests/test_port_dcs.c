@@ -429,6 +429,28 @@ void test_init_without_delay_refuses_before_sending_anything(void)
 /* The drivers send RGB565 only: a preset whose COLMOD selects another MCU
  * interface format (bits 2..0; 0x66 is 18 bits a pixel) is refused before
  * anything is sent; 0x05 (16 bits, RGB interface bits clear) is accepted. */
+/* A preset whose window addresses would pass 16 bits in any rotation is
+ * refused: each of the four offset + side sums on its own. */
+void test_preset_addresses_beyond_16_bits_are_refused(void)
+{
+    int clause;
+    start_emu("st7789");
+    for (clause = 0; clause < 4; clause++) {
+        fxl_panel_preset_t pr = fxl_st7789_240x320;
+        /* the longer side is the one that passes 65535: x + width,
+         * y + width, x + height, y + height */
+        pr.width = clause < 2 ? 200 : 50;
+        pr.height = clause < 2 ? 50 : 200;
+        memset(pr.offset, 0, sizeof pr.offset);
+        if (clause & 1)
+            pr.offset[1].y = 65400;
+        else
+            pr.offset[1].x = 65400;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, &pr, 0), "offset clause");
+    }
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+}
+
 void test_init_refuses_a_pixel_format_other_than_rgb565(void)
 {
     fxl_panel_preset_t pr = fxl_st7789_240x320;
@@ -533,6 +555,7 @@ int main(void)
     RUN_TEST(test_optional_wrappers_report_unsupported_when_null);
     RUN_TEST(test_init_without_delay_refuses_before_sending_anything);
     RUN_TEST(test_init_refuses_a_pixel_format_other_than_rgb565);
+    RUN_TEST(test_preset_addresses_beyond_16_bits_are_refused);
     RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
     RUN_TEST(test_hal_failures_become_io_errors);
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
