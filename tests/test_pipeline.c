@@ -485,6 +485,12 @@ static void test_project_rejects_w_at_or_behind_near(void)
     TEST_ASSERT_EQUAL_INT32(120 * 65536, out.y);
     c.x = c.w * 1000; /* far outside the guard band: not clipped */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+    /* the clipper's rounding tolerance is 2^-10 of the guard band G: 1.0001 G
+     * is accepted (and clamped to G), 1.01 G was not clipped: refused */
+    c.x = (int64_t)((double)c.w * xf.guard_q16 / 65536.0 * 1.0001);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    c.x = (int64_t)((double)c.w * xf.guard_q16 / 65536.0 * 1.01);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
 }
 
 static void test_prepare_and_clip_report_overflow(void)
@@ -566,6 +572,21 @@ static void test_emit_culls_by_screen_winding(void)
     col.n = 0;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
     TEST_ASSERT_EQUAL_INT(2, col.n);
+    /* A zero-area triangle has no winding: not a back face under either
+     * cull mode; it goes on (the rasterizer culls it as degenerate). */
+    {
+        static const uint16_t flat_idx[3] = {0, 1, 1};
+        int k;
+        m.idx = flat_idx;
+        m.tri_count = 1;
+        for (k = 0; k < 2; k++) {
+            p.cull = k ? FXL_CULL_CCW : FXL_CULL_CW;
+            memset(&st, 0, sizeof st); col.n = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, &st));
+            TEST_ASSERT_EQUAL_INT(1, col.n);
+            TEST_ASSERT_EQUAL_UINT32(0, st.culled_backface);
+        }
+    }
 }
 
 static void test_emit_triangle_through_eye_plane_stays_in_guard_band(void)
