@@ -17,7 +17,7 @@
  * a full-frame fxl_mesh_draw render).
  *
  * Freestanding C99, no libc, no global mutable state: everything lives in
- * the caller's fw_app_t (about 110 KB; make it static).
+ * the caller's fw_app_t (about 113 KB; make it static).
  */
 #ifndef FW_APP_H
 #define FW_APP_H

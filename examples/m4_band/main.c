@@ -14,7 +14,7 @@
 
 #include "mps2.h"
 
-static fw_app_t app; /* ~110 KB: bands, depth band, triangle store, textures */
+static fw_app_t app; /* ~113 KB: bands, depth band, triangle store, textures */
 
 static void out(const char *s)
 {

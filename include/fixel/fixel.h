@@ -14,7 +14,9 @@
  *
  * Modules: fixed.h (q16 math), target.h (buffers, bands, clipping),
  * texture.h (texels, mips, wrap), raster.h (triangles), pipeline.h (3D front
- * end), port.h (SPI panels, band rendering). Every call returns fxl_status_t.
+ * end), port.h (SPI panels, band rendering). Every call that can fail returns
+ * fxl_status_t; the few that cannot return their value or nothing
+ * (fxl_draw_defaults, fxl_q16_round, fxl_texture_fetch, ...).
  */
 #ifndef FIXEL_FIXEL_H
 #define FIXEL_FIXEL_H

@@ -1,4 +1,4 @@
-/* fixel/status.h - the status codes every public fixel function returns.
+/* fixel/status.h - the status codes every public fixel call that can fail returns.
  *
  * FXL_OK is 0; every error is negative, so `if (st < 0)` catches all of them.
  * Culled triangles (zero area, off target, back-facing) are not errors: they

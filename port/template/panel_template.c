@@ -1,7 +1,9 @@
 /* port/template/panel_template.c - start here for a MIPI DCS panel fixel
  * does not know yet. Copy this file next to your firmware (or into port/
  * as <controller>.c), rename the preset, fill in the data, and pass it to
- * fxl_panel_init(). No library file needs editing: a preset is plain data.
+ * fxl_panel_init(). No library file needs editing to drive the panel: a
+ * preset is plain data (the host emulator check needs its model added:
+ * port/template/README.md).
  *
  * Fill in, from the controller datasheet and the module's schematic:
  *  1. width/height: the visible pixels in the module's own (rotation 0)
