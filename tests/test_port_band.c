@@ -535,19 +535,27 @@ void test_triangle_is_listed_once_in_each_band_it_touches(void)
     fixture_free(f);
 }
 
-void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
+/* A fixture with 24-row bands (10 on the rotated 240x320 panel), a
+ * store of 4 triangles and bin_cap bin entries, and a flat draw in d. */
+static band_fixture_t *binning_fixture(fxl_draw_t *d, uint32_t bin_cap)
 {
     band_fixture_t *f;
+    need_band_draws();   /* fxl_band_add checks the draw in the panel's format */
+    f = fixture();
+    fxl_draw_defaults(d);
+    flat(d, 3);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
+                                                f->store, 4, f->bins, bin_cap));
+    return f;
+}
+
+void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
+{
     fxl_vertex_t v[3];
     fxl_draw_t d;
-    need_band_draws();
-    f = fixture();
-    fxl_draw_defaults(&d);
-    flat(&d, 3);
     /* 10 headers + 4 entries: a 3-band triangle fits, the next 3-band one
      * does not, and a later 1-band one must not be binned either (order). */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
-                                                f->store, 4, f->bins, 14));
+    band_fixture_t *f = binning_fixture(&d, 14);
     flat_tri(v, 10, 50);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
     TEST_ASSERT_FALSE(fxl_band_overflowed(&f->band));
@@ -567,16 +575,10 @@ void test_triangle_that_does_not_fit_the_bins_starts_the_fallback(void)
  * overflow. */
 void test_binning_edges_row_zero_and_bins_exactly_full(void)
 {
-    band_fixture_t *f;
     fxl_vertex_t v[3];
     fxl_draw_t d;
-    need_band_draws();
-    f = fixture();
-    fxl_draw_defaults(&d);
-    flat(&d, 3);
     /* 10 headers + 3 entries: one 3-band triangle fills them exactly */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
-                                                f->store, 4, f->bins, 13));
+    band_fixture_t *f = binning_fixture(&d, 13);
     flat_tri(v, 10, 50);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
     TEST_ASSERT_EQUAL_UINT32(13, f->band.bin_used);

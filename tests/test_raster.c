@@ -382,6 +382,30 @@ void test_no_write_outside_clip_rectangle_canaries(void)
 
 /* Render random textured triangles full-frame and as bands of 7 rows and
  * with an x-clip; every drawn pixel must be bit-identical. */
+/* Render n triangles into a w x h target at (x0, y0) of the frame (its own
+ * buffer and depth) and compare every pixel with the full frame's. */
+static void render_part_matches(const fxl_draw_t *d, fxl_vertex_t (*tris)[3], int n, uint16_t *buf, uint16_t *zbuf,
+                                int x0, int y0, int w, int h, const uint16_t *full, int mode)
+{
+    fxl_target_t t;
+    int k, x, y;
+    fxl_target_init(&t, buf, w, h, w, drawable_rgb565());
+    fxl_target_set_origin(&t, x0, y0);
+    fxl_target_set_depth(&t, zbuf);
+    fxl_target_clear(&t, 0x1234);
+    fxl_target_clear_depth(&t);
+    for (k = 0; k < n; k++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, d, tris[k], NULL));
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++)
+            if (buf[y * w + x] != full[(y0 + y) * W + x0 + x]) {
+                char msg[100];
+                snprintf(msg, sizeof msg, "part at (%d,%d): pixel (%d,%d) %04x != full %04x (mode %d)", x0, y0,
+                         x0 + x, y0 + y, buf[y * w + x], full[(y0 + y) * W + x0 + x], mode);
+                TEST_FAIL_MESSAGE(msg);
+            }
+}
+
 void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
 {
     static uint16_t full[W * H], zfull[W * H], band[W * 7], zband[W * 7], clipped[W * H], zclip[W * H];
@@ -437,43 +461,11 @@ void test_band_and_clip_renders_are_bit_identical_to_full_frame(void)
         for (y = 0; y < H; y++)
             for (x = cr.x0; x < cr.x1; x++)
                 TEST_ASSERT_EQUAL_HEX16(full[y * W + x], clipped[y * W + x]);
-        for (y0 = 0; y0 < H; y0 += 7) {
-            int bh = H - y0 < 7 ? H - y0 : 7;
-            fxl_target_init(&t, band, W, bh, W, drawable_rgb565());
-            fxl_target_set_origin(&t, 0, y0);
-            fxl_target_set_depth(&t, zband);
-            fxl_target_clear(&t, 0x1234);
-            fxl_target_clear_depth(&t);
-            for (k = 0; k < 60; k++)
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, tris[k], NULL));
-            for (y = 0; y < bh; y++)
-                for (x = 0; x < W; x++)
-                    if (band[y * W + x] != full[(y0 + y) * W + x]) {
-                        char msg[100];
-                        snprintf(msg, sizeof msg, "band pixel (%d,%d) %04x != full %04x (mode %d)", x, y0 + y,
-                                 band[y * W + x], full[(y0 + y) * W + x], mode);
-                        TEST_FAIL_MESSAGE(msg);
-                    }
-        }
-        /* column strips: a target whose origin_x is not 0 */
-        for (x0 = 0; x0 < W; x0 += 11) {
-            int bw = W - x0 < 11 ? W - x0 : 11;
-            fxl_target_init(&t, strip, bw, H, bw, drawable_rgb565());
-            fxl_target_set_origin(&t, x0, 0);
-            fxl_target_set_depth(&t, zstrip);
-            fxl_target_clear(&t, 0x1234);
-            fxl_target_clear_depth(&t);
-            for (k = 0; k < 60; k++)
-                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, tris[k], NULL));
-            for (y = 0; y < H; y++)
-                for (x = 0; x < bw; x++)
-                    if (strip[y * bw + x] != full[y * W + x0 + x]) {
-                        char msg[100];
-                        snprintf(msg, sizeof msg, "strip pixel (%d,%d) %04x != full %04x (mode %d)", x0 + x, y,
-                                 strip[y * bw + x], full[y * W + x0 + x], mode);
-                        TEST_FAIL_MESSAGE(msg);
-                    }
-        }
+        /* horizontal bands, then column strips (origin_x != 0) */
+        for (y0 = 0; y0 < H; y0 += 7)
+            render_part_matches(&d, tris, 60, band, zband, 0, y0, W, H - y0 < 7 ? H - y0 : 7, full, mode);
+        for (x0 = 0; x0 < W; x0 += 11)
+            render_part_matches(&d, tris, 60, strip, zstrip, x0, 0, W - x0 < 11 ? W - x0 : 11, H, full, mode);
     }
     snprintf(summary, sizeof summary, "%d of 7 modes checked, %d need features this build lacks", checked,
              7 - checked);
@@ -1203,12 +1195,21 @@ void test_auto_whole_span_test_keeps_receding_strips_within_budget(void)
  * - AUTO keeps its budget on a receding quad whose u, v run over +-16384
  *   periods of a 64-texel texture (its quadratic segments erred by up to 32
  *   texels there, its budget 1/4). */
+/* A 200-pixel square as two triangles, 1/w 1 at its top left, mid at the
+ * top right and bottom left, far at the bottom right; u, v from -b to b. */
+static void wide_quad(tri_t tris[2], double mid, double far, double b)
+{
+    const fxl_vertex_t c0 = vtx(28, 28, 1.0, -b, -b), c1 = vtx(228, 28, mid, b, -b),
+                       c2 = vtx(228, 228, far, b, b), c3 = vtx(28, 228, mid, -b, b);
+    tris[0].v[0] = c0; tris[0].v[1] = c1; tris[0].v[2] = c2;
+    tris[1].v[0] = c0; tris[1].v[1] = c2; tris[1].v[2] = c3;
+}
+
 void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
 {
     static const int modes[4] = {FXL_PERSP_AFFINE, 64, FXL_PERSP_SPAN, FXL_PERSP_AUTO};
     static uint16_t texels[1024 * 1024], buf[320 * 240];
     tri_t tris[2];
-    fxl_vertex_t c[4];
     fxl_texture_t tex;
     fxl_draw_t d;
     fxl_target_t t;
@@ -1219,12 +1220,7 @@ void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
     /* 1024 texels; 256 without the generic walk, whose specialised walks
      * take at most 2^16 texels (200 periods of either are wide) */
     const int tw = FXL_HAVE_GENERIC ? 1024 : 256;
-    c[0] = vtx(28, 28, 1.0, -100, -100);
-    c[1] = vtx(228, 28, 1.0, 100, -100);
-    c[2] = vtx(228, 228, 1.0, 100, 100);
-    c[3] = vtx(28, 228, 1.0, -100, 100);
-    tris[0].v[0] = c[0]; tris[0].v[1] = c[1]; tris[0].v[2] = c[2];
-    tris[1].v[0] = c[0]; tris[1].v[1] = c[2]; tris[1].v[2] = c[3];
+    wide_quad(tris, 1.0, 1.0, 100);
     for (m = 0; m < 4; m++) {
         if (modes[m] == FXL_PERSP_AUTO && !FXL_HAVE_AUTO)
             continue;
@@ -1246,12 +1242,7 @@ void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
 
     if (!FXL_HAVE_AUTO)
         return;
-    c[0] = vtx(28, 28, 1.0, -16384, -16384);
-    c[1] = vtx(228, 28, 0.5, 16384, -16384);
-    c[2] = vtx(228, 228, 0.25, 16384, 16384);
-    c[3] = vtx(28, 228, 0.5, -16384, 16384);
-    tris[0].v[0] = c[0]; tris[0].v[1] = c[1]; tris[0].v[2] = c[2];
-    tris[1].v[0] = c[0]; tris[1].v[1] = c[2]; tris[1].v[2] = c[3];
+    wide_quad(tris, 0.5, 0.25, 16384);
     e = scene_max_error(tris, 2, FXL_PERSP_AUTO, 64);
     snprintf(msg, sizeof msg, "receding, +-16384 periods, AUTO: max error %.5f texels", e);
     TEST_ASSERT_TRUE_MESSAGE(e <= 0.25, msg);
