@@ -2,8 +2,9 @@
  *
  * Order of work per triangle: validate (every build: the target struct is
  * plain data the caller may have edited, so the clip rectangle is checked
- * against the buffer again; the batch calls, once a list), snap, cull, set up planes (setup.c), walk rows
- * with exact edges (edge.c), hand each clipped span to span.c.
+ * against the buffer again; the batch calls, once a list), snap, cull, set
+ * up planes (setup.c), walk rows with exact edges (edge.c), hand each
+ * clipped span to span.c.
  */
 #include "raster_int.h"
 #include "persp.h"

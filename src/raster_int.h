@@ -247,8 +247,9 @@ int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear
 fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                                      fxl_stats_t *stats, fxl__seg_fn probe);
 /* fxl__draw_triangle_with for settings that passed fxl_draw_check(target,
- * draw) and have not changed since (v non-NULL): the batch calls
- * (fxl_draw_indexed, fxl_mesh_draw, band rendering) check them once. */
+ * draw) and have not changed since (v non-NULL): the core's batch calls
+ * (fxl_draw_indexed, fxl_mesh_draw) check them once. The band renderer
+ * (port/) keeps to the public fxl_draw_triangle. */
 fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const fxl_vertex_t v[3],
                              fxl_stats_t *stats, fxl__seg_fn probe);
 

@@ -739,8 +739,9 @@ static void lod_setup(fxl__tri_t *tri)
  * generic one (fxl__draw_span below) with everything that cannot occur
  * there removed; every value is bit-identical to it:
  * - coordinates are modular uint32 (repeat), and no uv_wide triangle comes
- *   here, so coord_diff is the uint32 difference read as int32 and a step is its magnitude shifted or divided
- *   (truncation toward zero), all in 32 bits: the last segment's division
+ *   here, so coord_diff's 64-bit difference is the uint32 difference read
+ *   as int32, and a step is its magnitude shifted or divided (truncation
+ *   toward zero), all in 32 bits: the last segment's division
  *   is one UDIV on a Cortex-M4 instead of a 64-bit library division;
  * - the steps of repeat coordinates lie in [-2^31, 2^31), so the int32
  *   saturation of shift_step never acts and a level shift is a floor shift
@@ -1183,7 +1184,7 @@ static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autos
 #endif /* FXL__V_ANY */
 
 #if FXL__V_ANY
-/* step_pow2(coord_diff(b, a)) for repeat axes, d = b - a as uint32; the
+/* step_pow2 of coord_diff for repeat axes, from d = b - a as uint32; the
  * result is the int32 bit pattern. A negative d has magnitude 0 - d <= 2^31. */
 static inline uint32_t step_pow2_u32(uint32_t d, int k)
 {
@@ -1213,7 +1214,7 @@ static inline uint32_t step_pow2_u32_b(uint32_t d, int k, uint32_t bias)
 }
 #endif
 
-/* step_of(coord_diff(b, a), div) likewise; div = 0 gives 0. */
+/* step_of of coord_diff, div, likewise; div = 0 gives 0. */
 static inline uint32_t step_div_u32(uint32_t d, uint32_t div)
 {
     if (div == 0u)
