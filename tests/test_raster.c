@@ -1391,6 +1391,133 @@ static int draw_fast_and_generic(const fxl_draw_t *d, const fxl_vertex_t v[3], i
     return covered;
 }
 
+/* Counts the draws the generic pass of draw_fast_and_generic makes with
+ * uv_linear triangles, then hands the segment to the variant's loop. */
+static int probe_linear_tris;
+static const fxl__tri_t *probe_linear_last;
+static uint32_t probe_linear_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    if (tri != probe_linear_last) {
+        probe_linear_tris += tri->uv_linear;
+        probe_linear_last = tri;
+    }
+    return fxl__pick_seg_fn(tri)(tri, s);
+}
+
+/* Affine triangles (FXL_PERSP_AFFINE, and AUTO where its vertex bound
+ * holds) take u, v from screen-linear planes (setup.c, span.c
+ * draw_span_linear, span_fast.h FXL_T_LIN). On a 320-pixel-wide target,
+ * so spans cross the linear walk's 256-pixel re-evaluation points:
+ * - the specialised walk equals the generic walk, pixel and depth value,
+ *   for point and bilinear, with and without depth and an x-clip;
+ * - AUTO on a triangle of nearly constant depth draws exactly what
+ *   FXL_PERSP_AFFINE draws;
+ * - every point-sampled texel is the one of the exact linear
+ *   interpolation of the snapped vertices (a texture holding its own
+ *   indices), where that is more than 1/256 texel from a texel edge. */
+void test_linear_walk_is_linear_and_matches_generic(void)
+{
+    enum { LW = 320, LH = 40, NT = 40 };
+    static uint16_t texels[64 * 64], fast[LW * LH], gen[LW * LH], zfast[LW * LH], zgen[LW * LH], aff[LW * LH];
+    const fxl_rect_t inner = {37, 0, 301, LH};
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    char msg[200];
+    int i, k, pass, checked = 0, mismatched = 0;
+    for (i = 0; i < 64 * 64; i++)
+        texels[i] = (uint16_t)i;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    lcg_state = 4242u;
+    probe_linear_tris = 0;
+    for (k = 0; k < NT; k++) {
+        fxl_vertex_t v[3];
+        double X[3], Y[3], U[3], V[3], det;
+        int px, py;
+        for (i = 0; i < 3; i++) {
+            /* wide triangles (up to 1.5 targets across) and small ones */
+            const double span = k & 1 ? 1.5 * LW : 30.0;
+            const double cx = (rnd() % 1001) / 1000.0 * LW, cy = (rnd() % 1001) / 1000.0 * LH;
+            v[i] = vtx(cx + ((int)(rnd() % 2001) - 1000) / 1000.0 * span,
+                       cy + ((int)(rnd() % 2001) - 1000) / 1000.0 * LH, 0.5 + (rnd() % 100) / 1000000.0,
+                       ((int)(rnd() % 2001) - 1000) / 100.0, ((int)(rnd() % 2001) - 1000) / 100.0);
+            X[i] = fxl_snap_subpx(v[i].x) / (double)(1 << FXL_SUBPIXEL_BITS);
+            Y[i] = fxl_snap_subpx(v[i].y) / (double)(1 << FXL_SUBPIXEL_BITS);
+            U[i] = v[i].u / 65536.0 * 64;
+            V[i] = v[i].v / 65536.0 * 64;
+        }
+        det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+        for (pass = 0; pass < 8; pass++) {
+            const int depth = FXL_HAVE_DEPTH && (pass & 1), clip = (pass >> 1) & 1, bil = pass >> 2;
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.depth = depth ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
+            d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+            d.persp = FXL_PERSP_AFFINE;
+            if (bil && !FXL_HAVE_BILINEAR)
+                continue;
+            probe_linear_last = NULL;
+            snprintf(msg, sizeof msg, "affine triangle %d depth %d clip %d bilinear %d", k, depth, clip, bil);
+            {
+                /* draw_fast_and_generic with the counting probe */
+                fxl_target_t t;
+                int p2;
+                for (p2 = 0; p2 < 2; p2++) {
+                    uint16_t *px_ = p2 ? gen : fast, *zb = p2 ? zgen : zfast;
+                    fxl_target_init(&t, px_, LW, LH, LW, drawable_rgb565());
+                    fxl_target_clear(&t, 0xDEAD);
+                    if (depth) {
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+                    }
+                    if (clip)
+                        fxl_target_set_clip(&t, &inner);
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, p2 ? fxl__draw_triangle_with(&t, &d, v, NULL, probe_linear_seg)
+                                                     : fxl_draw_triangle(&t, &d, v, NULL));
+                    pixels_to_native(px_, LW * LH, t.format);
+                }
+                for (i = 0; i < LW * LH; i++)
+                    if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+                        snprintf(msg + strlen(msg), sizeof msg - strlen(msg), " pixel (%d,%d): fast %04x generic %04x",
+                                 i % LW, i / LW, fast[i], gen[i]);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+            }
+            if (FXL_HAVE_AUTO) {
+                /* AUTO's vertex test passes at this depth ratio (1.0002) */
+                memcpy(aff, fast, sizeof aff);
+                d.persp = FXL_PERSP_AUTO;
+                draw_fast_and_generic(&d, v, LW, LH, drawable_rgb565(), depth, clip ? &inner : NULL, fast, zfast, gen,
+                                      zgen, msg);
+                pixels_to_native(fast, LW * LH, drawable_rgb565());
+                TEST_ASSERT_TRUE_MESSAGE(memcmp(aff, fast, sizeof aff) == 0, msg);
+            }
+            if (bil || depth || clip || det == 0.0)
+                continue;
+            /* the texel of the exact linear interpolation at pixel centres */
+            for (py = 0; py < LH; py++)
+                for (px = 0; px < LW; px++) {
+                    const double x = px + 0.5, y = py + 0.5;
+                    const double l1 = ((x - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (y - Y[0])) / det;
+                    const double l2 = ((X[1] - X[0]) * (y - Y[0]) - (x - X[0]) * (Y[1] - Y[0])) / det;
+                    const double u = U[0] + l1 * (U[1] - U[0]) + l2 * (U[2] - U[0]);
+                    const double vv = V[0] + l1 * (V[1] - V[0]) + l2 * (V[2] - V[0]);
+                    const double fu = u - floor(u), fv = vv - floor(vv);
+                    const uint16_t got = aff[py * LW + px];
+                    if (got == 0xDEAD || fu < 1.0 / 256 || fu > 1 - 1.0 / 256 || fv < 1.0 / 256 ||
+                        fv > 1 - 1.0 / 256)
+                        continue;
+                    checked++;
+                    mismatched += got != (uint16_t)((((int)floor(vv) & 63) << 6) | ((int)floor(u) & 63));
+                }
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws took the linear walk; %d texels checked, %d not the linear one",
+             probe_linear_tris, checked, mismatched);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(probe_linear_tris >= NT * 2 && checked > 10000, msg);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, mismatched, msg);
+}
+
 /* Rows of constant q with fixed segment lengths take their own walk
  * (FXL_T_ROWC: the span's 1/q kept, each correction a multiply and a
  * shift): every pixel and depth value equals the generic walk's, for
@@ -2134,6 +2261,7 @@ int main(void)
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_row_const_walk_matches_generic);
+    RUN_TEST(test_linear_walk_is_linear_and_matches_generic);
     RUN_TEST(test_row_const_walk_declined_spans_match_generic);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
