@@ -120,16 +120,6 @@ typedef struct fxl__tri {
     int32_t qx_m;                /* q_x per pixel = qx_m * 2^qx_e, |qx_m| in [2^30, 2^31) */
     int qx_e;
     uint8_t affine;              /* q constant: no perspective */
-    /* An affine triangle whose u, v are drawn from screen-linear planes
-     * (setup.c, span.c draw_span_linear): no reciprocal anywhere, one plane
-     * evaluation a span (and every FXL__LIN_SEG pixels). lin[] are the
-     * planes of u, v in q16 texels of level 0 (times 2^PF, as every plane);
-     * lin_du, lin_dv their q16 steps a pixel. Only where every vertex value
-     * and step is below 2^30 q16 (setup.c): then u, v inside the triangle
-     * never leave int32, and repeat axes need no wide stepping. */
-    uint8_t uv_linear;
-    fxl__plane_t lin[2];
-    int32_t lin_du, lin_dv;
     uint8_t depth_test, depth_write;
     uint8_t swap;                /* target stores byte-swapped RGB565 */
 

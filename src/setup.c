@@ -183,35 +183,6 @@ static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int6
     make_plane(&tri->a[idx], s, X, Y, det);
 }
 
-/* The plane of three rebased normalised coordinates a (level-0 texture
- * side 2^lg) as q16 texels, linear in screen space, and its q16 step a
- * pixel, for draw_span_linear (span.c). 0 where a vertex value or the step
- * reaches 2^30 q16 texels, or a gradient saturated (a sliver): such
- * triangles keep the division-based walks. */
-static int lin_plane(fxl__plane_t *p, int32_t *step, const int64_t a[3], uint32_t lg, const int32_t X[3],
-                     const int32_t Y[3], const area_t *det)
-{
-    const int64_t lim = (int64_t)1 << 30;
-    int64_t t[3], s;
-    int i;
-
-    for (i = 0; i < 3; i++) {
-        t[i] = a[i] * ((int64_t)1 << lg);
-        if (t[i] >= lim || t[i] <= -lim)
-            return 0;
-    }
-    make_plane(p, t, X, Y, det);
-    /* |gx| < 2^50: not saturated, and gx * ONE cannot overflow */
-    if (p->gx >= ((int64_t)1 << 50) || p->gx <= -((int64_t)1 << 50) || p->gy >= INT64_MAX / 2 ||
-        p->gy <= -(INT64_MAX / 2))
-        return 0;
-    s = fxl__asr64(p->gx * FXL__ONE + ((int64_t)1 << (FXL__PF - 1)), FXL__PF);
-    if (s >= lim || s <= -lim)
-        return 0;
-    *step = (int32_t)s;
-    return 1;
-}
-
 fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
                         const int32_t Y[3], int64_t det)
 {
@@ -220,7 +191,6 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     area_t area;   /* divides up to 2 x 7 gradients */
 
     tri->uv_wide = 0;
-    tri->uv_linear = 0;
     area.neg = det < 0;
     fxl__div64_init(&area.abs, area.neg ? (uint64_t)0 - (uint64_t)det : (uint64_t)det);
     tri->X0 = X[0];
@@ -231,10 +201,6 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     if (tri->affine) {
         for (i = 0; i < 3; i++)
             q[i] = (int64_t)1 << 30;
-        /* the plane make_plane builds from three equal values, without
-         * its two gradient divisions */
-        tri->q.c = q[0] * ((int64_t)1 << FXL__PF);
-        tri->q.gx = tri->q.gy = 0;
     } else {
         uint32_t mx = v[0].inv_w;
         int sh;
@@ -249,8 +215,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
                 q[i] = 1;
         }
     }
-    if (!tri->affine)
-        make_plane(&tri->q, q, X, Y, &area);
+    make_plane(&tri->q, q, X, Y, &area);
     tri->q_min = tri->q_max = q[0];
     for (i = 1; i < 3; i++) {
         if (q[i] < tri->q_min)
@@ -279,7 +244,6 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
 
     if (fxl__has_uv(tri)) {
         int32_t c[3];
-        int64_t b[3];   /* v, rebased */
         int wide;
         for (i = 0; i < 3; i++)
             c[i] = v[i].u;
@@ -288,29 +252,15 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
         if (tri->lod_per_segment)   /* span.c, lod_setup */
             tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
 #endif
+        persp_plane(tri, FXL__AU, a, q, X, Y, &area);
         for (i = 0; i < 3; i++)
             c[i] = v[i].v;
-        tri->uv_wide = (uint8_t)(rebase(c, (fxl_wrap_t)tri->tex->wrap_v, tri->tex->log2_h, b) | wide);
+        tri->uv_wide = (uint8_t)(rebase(c, (fxl_wrap_t)tri->tex->wrap_v, tri->tex->log2_h, a) | wide);
 #if FXL_HAVE_MIPMAP
         if (tri->lod_per_segment)   /* span.c, lod_setup */
-            tri->uv_len[1] = (uint8_t)fit_shift(b, 0);
+            tri->uv_len[1] = (uint8_t)fit_shift(a, 0);
 #endif
-        /* An affine triangle on one level (no per-segment LOD to feed, no
-         * Gouraud colours, which stay perspective-correct) takes u, v
-         * from screen-linear planes: the same values up to rounding as
-         * u = (u q) / q with q constant, without the division a span. */
-        tri->uv_linear = (uint8_t)(tri->affine && !fxl__has_color(tri) && tri->nlevels <= 1 && !tri->uv_wide &&
-                                   lin_plane(&tri->lin[0], &tri->lin_du, a, tri->tex->log2_w, X, Y, &area) &&
-                                   lin_plane(&tri->lin[1], &tri->lin_dv, b, tri->tex->log2_h, X, Y, &area));
-        if (!tri->uv_linear) {
-            persp_plane(tri, FXL__AU, a, q, X, Y, &area);
-            persp_plane(tri, FXL__AV, b, q, X, Y, &area);
-        } else {
-            /* never read (the linear walk uses lin[]); defined all the same */
-            tri->a[FXL__AU].c = tri->a[FXL__AU].gx = tri->a[FXL__AU].gy = 0;
-            tri->a[FXL__AV] = tri->a[FXL__AU];
-            tri->a_shift[FXL__AU] = tri->a_shift[FXL__AV] = 0;
-        }
+        persp_plane(tri, FXL__AV, a, q, X, Y, &area);
     }
     if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */

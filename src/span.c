@@ -1246,64 +1246,6 @@ static inline uint32_t step_z_div(uint32_t z1, uint32_t z0, uint32_t div)
 }
 #endif
 
-/* ---- uv_linear triangles (setup.c): u, v linear in screen space -------
- * No division at all. A span is cut into segments of FXL__LIN_SEG pixels
- * from xl (whatever the clip: a band or a strip of the frame draws the same
- * pixels), each from one evaluation of the planes at its first pixel and
- * the triangle's q16 steps, whose truncation drifts < FXL__LIN_SEG 2^-17
- * texel (< 1/512) before the next evaluation. z, where a depth buffer is
- * in use, from the segment's exact ends as in the generic walk, so it stays
- * between them (never wrapping past 0 or 2^32). lin_values is the one
- * source of these numbers for draw_span_linear (any seg function) and the
- * specialised linear walks (span_fast.h): the same pixels from both. */
-#define FXL__LIN_SEG_LOG2 8
-#define FXL__LIN_SEG (1 << FXL__LIN_SEG_LOG2)
-
-typedef struct lin_seg {
-    uint32_t u, v;     /* at the segment's first pixel, q16 texels */
-    uint32_t z;        /* there, u0.32 (0 without depth) */
-    int32_t dz;
-} lin_seg_t;
-
-static inline uint32_t lin_coord(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y, int is_signed)
-{
-    /* the plane's value rounded to q16; inside the triangle below 2^30
-     * (setup.c), so a clamp axis saturates only a rounding overshoot at a
-     * sliver's tip */
-    const int64_t w =
-        fxl__asr64((int64_t)((uint64_t)fxl__plane_eval(p, X - X0, Y - Y0) + ((uint64_t)1 << (FXL__PF - 1))), FXL__PF);
-    return is_signed ? sat_i32_bits(w) : (uint32_t)(uint64_t)w;
-}
-
-static inline uint32_t lin_z(const fxl__tri_t *tri, int32_t x, int32_t Yc)
-{
-    return sat_u32(fxl__plane_eval(&tri->z, x * FXL__ONE + FXL__HALF - tri->X0, Yc - tri->Y0) >> FXL__PF);
-}
-
-/* The segment of n pixels at x on row Yc (full: more of the span follows);
- * *z0 is z at x on entry (with_z), at the segment's end on return. */
-static FXL__HOT_INLINE void lin_values(const fxl__tri_t *tri, int32_t x, int32_t Yc, int32_t n, int full,
-                                       int with_z, int su, int sv, uint32_t *z0, lin_seg_t *out)
-{
-    const int32_t X = x * FXL__ONE + FXL__HALF;
-    out->u = lin_coord(&tri->lin[0], tri->X0, tri->Y0, X, Yc, su);
-    out->v = lin_coord(&tri->lin[1], tri->X0, tri->Y0, X, Yc, sv);
-    out->z = 0;
-    out->dz = 0;
-    if (with_z) {
-        /* to the next segment's first pixel, or the span's last one;
-         * step_pow2 / step_of of z1 - z0 in 32 bits (|z1 - z0| < 2^32,
-         * div <= 256: one UDIV on a Cortex-M4, not a 64-bit call) */
-        const int32_t div = full ? n : n - 1;
-        const uint32_t z1 = lin_z(tri, x + div, Yc), za = *z0;
-        const uint32_t mag = z1 >= za ? z1 - za : za - z1;
-        const uint32_t q = full ? mag >> FXL__LIN_SEG_LOG2 : (div > 0 ? mag / (uint32_t)div : 0u);
-        out->z = za;
-        out->dz = sat_i32(z1 >= za ? (int64_t)q : -(int64_t)q);
-        *z0 = z1;
-    }
-}
-
 #if FXL__V_ANY
 /* The walk along rows of constant q (FXL_T_ROWC, span_fast.h). One
  * segment of a batch: u, v (z) at its start and its steps, as the lean
@@ -1757,7 +1699,7 @@ void fxl__span_setup(fxl__tri_t *tri)
         tri->gpxN[i] = (int64_t)(g << k);
     }
     tri->q_const = tri->q.gx == 0 && tri->q.gy == 0;
-    if (tri->q_const && !tri->uv_linear)   /* the linear walk divides nowhere */
+    if (tri->q_const)
         fxl__recip(tri->q_min, &tri->rc_qmin);
     tri->fast_id = 0;
     tri->lod_grid = 0;
@@ -1953,55 +1895,6 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     }
 }
 
-/* The walk of a uv_linear triangle for any seg function (lin_values). */
-static void draw_span_linear(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
-                             int32_t cl, int32_t cr)
-{
-    const int32_t Yc = row * FXL__ONE + FXL__HALF;
-    const fxl_target_t *tg = tri->target;
-    const int with_z = FXL_HAVE_DEPTH && fxl__uses_depth(tri);
-    const int su = fxl__signed_u(tri), sv = fxl__signed_v(tri);
-    const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
-    int32_t x = xl + ((cl - xl) >> FXL__LIN_SEG_LOG2 << FXL__LIN_SEG_LOG2);
-    uint32_t written = 0, z0 = with_z ? lin_z(tri, x, Yc) : 0u;
-    fxl__seg_t seg;
-
-    seg.lvl = &tri->level[0];
-    seg.lvl2 = 0;
-    seg.u2 = seg.v2 = 0;
-    seg.du2 = seg.dv2 = 0;
-    seg.lod_frac_q8 = 0;
-    seg.lod_q8 = 0;
-    seg.c[0] = seg.c[1] = seg.c[2] = 0;
-    seg.dc[0] = seg.dc[1] = seg.dc[2] = 0;
-    seg.du = tri->lin_du;
-    seg.dv = tri->lin_dv;
-    seg.ddu = seg.ddv = 0;
-    while (x < cr) {
-        const int full = xr - x > FXL__LIN_SEG;
-        const int32_t n = full ? FXL__LIN_SEG : xr - x;
-        const int32_t a = x > cl ? x : cl, b = x + n < cr ? x + n : cr;
-        const uint32_t off = (uint32_t)(a - x);
-        lin_seg_t ls;
-        lin_values(tri, x, Yc, n, full, with_z, su, sv, &z0, &ls);
-        if (a < b) {
-            seg.u = ls.u + (uint32_t)seg.du * off;
-            seg.v = ls.v + (uint32_t)seg.dv * off;
-            seg.z = ls.z + (uint32_t)ls.dz * off;
-            seg.dz = ls.dz;
-            seg.dst = tg->pixels + (rowidx + a);
-            seg.zb = tg->depth ? tg->depth + (rowidx + a) : 0;
-            seg.n = b - a;
-            written += fn(tri, &seg);
-        }
-        x += n;
-    }
-    if (tri->stats) {
-        tri->stats->pixels += written;
-        tri->stats->spans++;
-    }
-}
-
 void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                     int32_t cl, int32_t cr)
 {
@@ -2009,10 +1902,7 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
      * no segment's pixel count is negative. Checked here, once a span. */
     if (!(xl <= cl && cl < cr && cr <= xr))
         return;
-    if (tri->uv_linear)
-        draw_span_linear(tri, fn, row, xl, xr, cl, cr);
-    else
-        draw_span_generic(tri, fn, row, xl, xr, cl, cr);
+    draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
 
 #if FXL__FAST_SPANS

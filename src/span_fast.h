@@ -42,7 +42,6 @@
 #define FXL_T_EXACT FXL__CAT(FXL_T_SPAN, _exact)
 #define FXL_T_WALK FXL__CAT(FXL_T_SPAN, _walk)
 #define FXL_T_ROWC FXL__CAT(FXL_T_SPAN, _rowc)
-#define FXL_T_LIN FXL__CAT(FXL_T_SPAN, _lin)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 #if FXL_T_BILINEAR
@@ -687,48 +686,6 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 }
 #endif
 
-#if !FXL_T_MIPLIN
-/* A uv_linear triangle's spans (lin_values in span.c): one plane
- * evaluation a segment of FXL__LIN_SEG pixels, straight into the pixel
- * loop, which keeps its level constants (and bilinear footprint) across
- * the span's segments. */
-static FXL__NOINLINE void FXL_T_LIN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                    int32_t cr)
-{
-    const fxl_target_t *tg = tri->target;
-    const int32_t Yc = row * FXL__ONE + FXL__HALF;
-    const int32_t rowidx = (row - tg->origin_y) * tg->stride - tg->origin_x;
-    const uint32_t du = (uint32_t)tri->lin_du, dv = (uint32_t)tri->lin_dv;
-    int32_t x = xl + ((cl - xl) >> FXL__LIN_SEG_LOG2 << FXL__LIN_SEG_LOG2);
-    uint32_t written = 0, z0 = FXL_T_DEPTH ? lin_z(tri, x, Yc) : 0u;
-    int first = 1;
-    FXL_T_LV L;
-
-    while (x < cr) {
-        const int full = xr - x > FXL__LIN_SEG;
-        const int32_t n = full ? FXL__LIN_SEG : xr - x;
-        const int32_t a = x > cl ? x : cl, b = x + n < cr ? x + n : cr;
-        const uint32_t off = (uint32_t)(a - x);
-        lin_seg_t ls;
-        lin_values(tri, x, Yc, n, full, FXL_T_DEPTH, 0, 0, &z0, &ls);
-        if (a < b) {
-            const uint32_t u = ls.u + du * off, v = ls.v + dv * off;
-            if (first) {
-                FXL_T_LV_INIT(&L, &tri->level[0], u, v);
-                first = 0;
-            }
-            written += FXL_T_LOOP(tg->pixels + (rowidx + a), FXL_T_DEPTH ? tg->depth + (rowidx + a) : 0, b - a,
-                                  ls.z + (uint32_t)ls.dz * off, (uint32_t)ls.dz, &L, u, v, du, dv);
-        }
-        x += n;
-    }
-    if (tri->stats) {
-        tri->stats->pixels += written;
-        tri->stats->spans++;
-    }
-}
-#endif
-
 #define FXL_T_WZ 0
 #include "span_walk.h"
 #if FXL_T_DEPTH && FXL__ZROW_WALK
@@ -750,8 +707,6 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
         fxl__span_fn walk;
-        if (tri->uv_linear)
-            return FXL_T_LIN;
 #if FXL_HAVE_QUAD
         if (tri->auto_quad)
             return FXL__CAT(FXL_T_LEAN, _quad);   /* its own corrections (lean_next_*_g) */
@@ -811,7 +766,6 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_EXACT
 #undef FXL_T_WALK
 #undef FXL_T_ROWC
-#undef FXL_T_LIN
 #undef FXL_T_ROWC_SEGS
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
