@@ -1464,6 +1464,108 @@ void test_row_const_walk_matches_generic(void)
         TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
 }
 
+/* The bilinear loops of the specialised walks against the generic loop
+ * (seg_generic with fxl__bilerp565; reached here through a colour key no
+ * texel has, which leaves every pixel as it is). Two kinds of triangle:
+ * - level-floor ones (vertices 0 and 1 on one row with one depth and one
+ *   v): v does not change along a row, so whole segments go to the row
+ *   loop (span.c, bl_row_t), whose footprint cache moves one column left or
+ *   right on most misses; u runs either way, magnified 8x to minified 4x;
+ * - random ones, whose segments step v too (bl_sample).
+ * Every pixel and depth value must be the generic loop's, in every walk:
+ * affine, subdivided, exact and AUTO, with depth or without, both byte
+ * orders, with and without a clip rectangle. */
+void test_bilinear_fast_loops_match_generic_loop(void)
+{
+    enum { NT = 48 };
+    static uint16_t texels[32 * 16], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
+    static const int16_t persp[6] = {FXL_PERSP_AFFINE, 4, 16, 32, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
+    static fxl_vertex_t tris[NT][3];
+    fxl_texture_t tex, keyed;
+    fxl_target_t t;
+    fxl_draw_t d, dg;
+    char msg[200];
+    int i, j, k, cfg, compared = 0;
+    TEST_NEEDS(FXL_HAVE_BILINEAR);
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    for (i = 0; i < 32 * 16; i++)   /* never 0x0001, the key below */
+        texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 32, 16, FXL_TEXFMT_RGB565, 1));
+    keyed = tex;
+    keyed.flags |= FXL_TEXF_KEY;
+    keyed.key = 0x0001u;
+    lcg_state = 777u;
+    for (k = 0; k < NT; k++) {
+        const double scale = k % 4 == 0 ? 0.125 : k % 4 == 1 ? 0.5 : k % 4 == 2 ? 2.0 : 4.0; /* texels a pixel */
+        const double dir = (k >> 2) % 2 ? -1.0 : 1.0;
+        const double y0 = rnd_range(-4, H / 2), y2 = y0 + rnd_range(8, H), x0 = rnd_range(-8, 8) + 0.3;
+        const double w = rnd_range(W / 2, W + 16), q0 = 0.2 + (rnd() % 800) / 1000.0;
+        const double q2 = k % 3 == 0 ? q0 : 0.05 + (rnd() % 950) / 1000.0;
+        /* u, v in texels here, in texture periods (32 x 16) in the vertices */
+        const double u0 = (rnd() % 64) / 2.0 - 16.0, v0 = (rnd() % 64) / 8.0 - 4.0;
+        for (i = 0; i < 3; i++) {
+            /* even k: level floor; odd k past NT / 2: random */
+            if (k < NT / 2 || (k & 1) == 0) {
+                tris[k][0] = vtx(x0, y0, q0, u0 / 32, v0 / 16);
+                tris[k][1] = vtx(x0 + w, y0, q0, (u0 + dir * scale * w) / 32, v0 / 16);
+                tris[k][2] = vtx(x0 + rnd_range(0, W), y2, q2, (u0 + rnd_range(-20, 20)) / 32,
+                                 (v0 + rnd_range(-12, 12)) / 16);
+            } else {
+                tris[k][i] = vtx(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
+                                 0.05 + (rnd() % 950) / 1000.0, rnd_range(-40, 40) / 96.0, rnd_range(-40, 40) / 48.0);
+            }
+        }
+        if (k & 8) {   /* the floor's far edge on top instead */
+            for (j = 0; j < 3; j++)
+                tris[k][j].y = (fxl_q16_t)(H * 65536 - tris[k][j].y);
+        }
+    }
+    for (cfg = 0; cfg < 6 * 2 * 2 * 2; cfg++) {
+        const int pm = cfg % 6, depth = (cfg / 6) & 1, swap = (cfg / 12) & 1, clip = cfg / 24;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        const fxl_rect_t cr = {5, 3, W - 7, H - 2};
+        fxl_draw_defaults(&d);
+        d.filter = FXL_FILTER_BILINEAR;
+        d.persp = persp[pm];
+        d.texture = &tex;
+        if (!depth)
+            d.depth = 0;
+        dg = d;
+        dg.texture = &keyed;
+        if (left_out_feature(&d, &tex, fmt, depth) != NULL || left_out_feature(&dg, &keyed, fmt, depth) != NULL)
+            continue;   /* refusals: test_left_out_features_are_refused */
+        for (k = 0; k < NT; k++) {
+            int pass;
+            uint16_t *px, *zb;
+            for (pass = 0; pass < 2; pass++) {
+                px = pass ? gen : fast;
+                zb = pass ? zgen : zfast;
+                fxl_target_init(&t, px, W, H, W, fmt);
+                fxl_target_clear(&t, 0xDEAD);
+                if (depth) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+                }
+                if (clip)
+                    fxl_target_set_clip(&t, &cr);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, pass ? &dg : &d, tris[k], NULL));
+            }
+            for (i = 0; i < W * H; i++) {
+                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+                    snprintf(msg, sizeof msg,
+                             "persp %d depth %d swap %d clip %d triangle %d pixel (%d,%d): fast %04x/%04x generic %04x/%04x",
+                             persp[pm], depth, swap, clip, k, i % W, i / W, fast[i], zfast[i], gen[i], zgen[i]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws compared", compared);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+}
+
 /* The walk along rows of constant q declines a span whose correction points
  * fall outside the range its one shift serves (span_fast.h: FXL_T_ROWC
  * returns 0, having drawn nothing) and the lean walk draws it. These
@@ -2140,6 +2242,7 @@ int main(void)
     RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
+    RUN_TEST(test_bilinear_fast_loops_match_generic_loop);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }
