@@ -1438,6 +1438,29 @@ static FXL__UNSWITCH uint32_t *rowc_run(fxl__raxis_t *ax, int segk, int32_t nful
 
 static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, int last, uint32_t div, uint32_t *out)
 {
+    if (ax->g == 0u) {
+        /* The coordinate's plane is constant along the row (v on a level
+         * floor): every correction point has one value, c1 below, which
+         * the loop would compute at each (s += 0), and after the first
+         * step every step is 0: the same values for one product
+         * (Cortex-M4 floor subdiv16 point -1.3 instructions a pixel). */
+        const uint32_t stride = (uint32_t)(sizeof(fxl__rseg_t) / sizeof(uint32_t));
+        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)ax->s), ax->r), ax->k, ax->half);
+        uint32_t c0 = ax->c;
+        int32_t i;
+        for (i = 0; i < nfull; i++, out += stride) {
+            out[0] = c0;
+            out[1] = step_pow2_u32(c1 - c0, segk);
+            c0 = c1;
+        }
+        if (last) {
+            out[0] = c0;
+            out[1] = step_div_u32(c1 - c0, div);
+            c0 = c1;
+        }
+        ax->c = c0;
+        return;
+    }
     /* shifts of 33 and more: one ASR of prod's high word (fxl__persp_lo32_hi) */
     out = FXL__WORD32 && ax->k >= 33 ? rowc_run(ax, segk, nfull, out, 1) : rowc_run(ax, segk, nfull, out, 0);
     if (last) {

@@ -76,18 +76,19 @@
 #define FXL_T_ZCONST 1
 #define FXL_T_ROWLOOP 1
 #include "span_loop.h"
-#if FXL__BL64
+#endif
+#if FXL__BL64 && !FXL_T_MIPLIN
 /* The rowc walk's runs on a level floor with depth, where every segment is
- * one (x86-64: no runs function with depth, FXL_T_ROWC_SEGS): inline, the
- * row's state stays in registers across the run (floor subdiv16 bilinear
- * with depth 50.1 -> 46.7 instructions a pixel). */
+ * on one texel row (x86-64: no runs function with depth, FXL_T_ROWC_SEGS):
+ * a forced-inline row loop. Bilinear, the row's state stays in registers
+ * across the run (floor subdiv16 bilinear with depth 50.1 -> 47.0
+ * instructions a pixel); point, a pixel loses v's step and mask. */
 #define FXL_T_ZROWLOOP FXL__CAT(FXL_T_ZLOOP, _rowi)
 #define FXL_T_LOOPFN FXL_T_ZROWLOOP
 #define FXL_T_QUAD 0
 #define FXL_T_ZCONST 1
 #define FXL_T_ROWLOOP 2
 #include "span_loop.h"
-#endif
 #endif
 #define FXL_T_LOOPFN FXL_T_ZLOOP
 #define FXL_T_QUAD 0
@@ -624,7 +625,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
                     if (zrow) {
                         do {
 #ifdef FXL_T_ZROWLOOP
-                            if (bl_row_fits(sg->dv, n4))
+                            if (sg->dv == 0u)   /* n4 >= 4: bl_row_fits */
                                 written += FXL_T_ZROWLOOP(dst, zb, n4, sg->z, 0u, &L, sg->u, sg->v, sg->du, 0u);
                             else
 #endif

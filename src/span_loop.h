@@ -27,6 +27,13 @@
 #ifndef FXL_T_ROWLOOP
 #define FXL_T_ROWLOOP 0
 #endif
+/* the column of a point sample on one texel row (v constant): FXL__IDX
+ * without its v part */
+#if FXL__IDX_TOPU
+#define FXL_T_RCOL(U) ((U) >> shu)
+#else
+#define FXL_T_RCOL(U) (((U) & mu16) >> 16)
+#endif
 /* A one-level bilinear loop hands segments on one texel row to its
  * FXL_T_LOOPFN##_row copy (FXL_T_ROWLOOP 1, included first; span.c's
  * bl_row_fits): one lerp a pixel where a footprint is shared. That copy is
@@ -72,7 +79,7 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
     (void)z;
     (void)dz;
 #endif
-#if FXL_T_ROWLOOP
+#if FXL_T_ROWLOOP && FXL_T_BILINEAR
     /* one texel row: v is constant to the weight (bl_row_fits) */
     uint32_t uu = u - 0x8000u;
     bl_row_t R;
@@ -123,10 +130,19 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
 #define FXL_T_TEXEL()                                                                                       \
     compact565(lerp565x(expand565(FXL__TEXEL(tex, U, V, shu, mu16, mv16)),                                  \
                         expand565(FXL__TEXEL(tex2, U2, V2, shu2, mu16b, mv16b)), f))
+#elif FXL_T_ROWLOOP
+    /* v constant: one texel row, as in the run loop below */
+    const uint16_t *const row = tex + ((V & mv16) >> 16);
+    (void)dV;
+#define FXL_T_TEXEL() ((uint32_t)row[FXL_T_RCOL(U)])
 #else
 #define FXL_T_TEXEL() ((uint32_t)FXL__TEXEL(tex, U, V, shu, mu16, mv16))
 #endif
+#if FXL_T_ROWLOOP
+#define FXL_T_STEP() (U += dU)
+#else
 #define FXL_T_STEP() (U += dU, V += dV)
+#endif
 #define FXL_T_CURVE() (dU += ddU, dV += ddV)
 #endif
 
@@ -223,7 +239,7 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
         }
 #endif
     }
-#if FXL_T_ROWLOOP
+#if FXL_T_ROWLOOP && FXL_T_BILINEAR
     bl_row_end(L, &R);
 #endif
 #if FXL_T_DEPTH
@@ -284,6 +300,38 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
     if (n == 16) {
         do {
             FXL_T_SEG_UV();
+            if (dV == 0u) {
+                /* v constant (a level floor's rows): one texel row, whose
+                 * index is found once; a pixel is the column's shift, the
+                 * load, the store and one step (Cortex-M4 4 instructions
+                 * where the general pixel takes 7) */
+                const uint16_t *const row = tex + ((V & mv16) >> 16);
+#define FXL_T_RPIXEL(i)                                                                                     \
+    do {                                                                                                    \
+        uint32_t c = row[FXL_T_RCOL(U)];                                                                    \
+        dst[i] = FXL_T_OUT(c);                                                                              \
+        U += dU;                                                                                            \
+    } while (0)
+                FXL_T_RPIXEL(0);
+                FXL_T_RPIXEL(1);
+                FXL_T_RPIXEL(2);
+                FXL_T_RPIXEL(3);
+                FXL_T_RPIXEL(4);
+                FXL_T_RPIXEL(5);
+                FXL_T_RPIXEL(6);
+                FXL_T_RPIXEL(7);
+                FXL_T_RPIXEL(8);
+                FXL_T_RPIXEL(9);
+                FXL_T_RPIXEL(10);
+                FXL_T_RPIXEL(11);
+                FXL_T_RPIXEL(12);
+                FXL_T_RPIXEL(13);
+                FXL_T_RPIXEL(14);
+                FXL_T_RPIXEL(15);
+#undef FXL_T_RPIXEL
+                dst += 16;
+                continue;
+            }
             FXL_T_PIXEL(0);
             FXL_T_PIXEL(1);
             FXL_T_PIXEL(2);
@@ -330,6 +378,26 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
                 bl_row_end(L, &R);
                 continue;
             }
+#else
+            if (dV == 0u) {
+                /* one texel row, as at n == 16 above */
+                const uint16_t *const row = tex + ((V & mv16) >> 16);
+#define FXL_T_RPIXEL(i)                                                                                     \
+    do {                                                                                                    \
+        uint32_t c = row[FXL_T_RCOL(U)];                                                                    \
+        dst[i] = FXL_T_OUT(c);                                                                              \
+        U += dU;                                                                                            \
+    } while (0)
+                do {
+                    FXL_T_RPIXEL(0);
+                    FXL_T_RPIXEL(1);
+                    FXL_T_RPIXEL(2);
+                    FXL_T_RPIXEL(3);
+                    dst += 4;
+                } while (--quads != 0);
+#undef FXL_T_RPIXEL
+                continue;
+            }
 #endif
             do {
                 FXL_T_PIXEL(0);
@@ -363,3 +431,4 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
 #undef FXL_T_ZCONST
 #undef FXL_T_ROWLOOP
 #undef FXL_T_ROWS
+#undef FXL_T_RCOL

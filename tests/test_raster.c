@@ -1464,18 +1464,20 @@ void test_row_const_walk_matches_generic(void)
         TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
 }
 
-/* The bilinear loops of the specialised walks against the generic loop
+/* The pixel loops of the specialised walks against the generic loop
  * (seg_generic with fxl__bilerp565; reached here through a colour key no
  * texel has, which leaves every pixel as it is). Two kinds of triangle:
  * - level-floor ones (vertices 0 and 1 on one row with one depth and one
  *   v): v does not change along a row, so whole segments go to the row
- *   loop (span.c, bl_row_t), whose footprint cache moves one column left or
- *   right on most misses; u runs either way, magnified 8x to minified 4x;
+ *   loops (span.c's bl_row_t for bilinear, whose footprint cache moves one
+ *   column left or right on most misses; the point run loop's one texel
+ *   row), and the rowc walk computes v once a row; u runs either way,
+ *   magnified 8x to minified 4x;
  * - random ones, whose segments step v too (bl_sample).
  * Every pixel and depth value must be the generic loop's, in every walk:
- * affine, subdivided, exact and AUTO, with depth or without, both byte
- * orders, with and without a clip rectangle. */
-void test_bilinear_fast_loops_match_generic_loop(void)
+ * affine, subdivided, exact and AUTO, point and bilinear, with depth or
+ * without, both byte orders, with and without a clip rectangle. */
+void test_fast_loops_match_generic_loop(void)
 {
     enum { NT = 48 };
     static uint16_t texels[32 * 16], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
@@ -1486,7 +1488,6 @@ void test_bilinear_fast_loops_match_generic_loop(void)
     fxl_draw_t d, dg;
     char msg[200];
     int i, j, k, cfg, compared = 0;
-    TEST_NEEDS(FXL_HAVE_BILINEAR);
     TEST_NEEDS(FXL_HAVE_GENERIC);
     for (i = 0; i < 32 * 16; i++)   /* never 0x0001, the key below */
         texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
@@ -1520,12 +1521,13 @@ void test_bilinear_fast_loops_match_generic_loop(void)
                 tris[k][j].y = (fxl_q16_t)(H * 65536 - tris[k][j].y);
         }
     }
-    for (cfg = 0; cfg < 6 * 2 * 2 * 2; cfg++) {
-        const int pm = cfg % 6, depth = (cfg / 6) & 1, swap = (cfg / 12) & 1, clip = cfg / 24;
+    for (cfg = 0; cfg < 6 * 2 * 2 * 2 * 2; cfg++) {
+        const int pm = cfg % 6, depth = (cfg / 6) & 1, swap = (cfg / 12) & 1, clip = (cfg / 24) & 1;
+        const int bil = cfg / 48;
         const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
         const fxl_rect_t cr = {5, 3, W - 7, H - 2};
         fxl_draw_defaults(&d);
-        d.filter = FXL_FILTER_BILINEAR;
+        d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
         d.persp = persp[pm];
         d.texture = &tex;
         if (!depth)
@@ -1553,8 +1555,9 @@ void test_bilinear_fast_loops_match_generic_loop(void)
             for (i = 0; i < W * H; i++) {
                 if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
                     snprintf(msg, sizeof msg,
-                             "persp %d depth %d swap %d clip %d triangle %d pixel (%d,%d): fast %04x/%04x generic %04x/%04x",
-                             persp[pm], depth, swap, clip, k, i % W, i / W, fast[i], zfast[i], gen[i], zgen[i]);
+                             "bilinear %d persp %d depth %d swap %d clip %d triangle %d pixel (%d,%d): fast %04x/%04x "
+                             "generic %04x/%04x",
+                             bil, persp[pm], depth, swap, clip, k, i % W, i / W, fast[i], zfast[i], gen[i], zgen[i]);
                     TEST_FAIL_MESSAGE(msg);
                 }
             }
@@ -2242,7 +2245,7 @@ int main(void)
     RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
-    RUN_TEST(test_bilinear_fast_loops_match_generic_loop);
+    RUN_TEST(test_fast_loops_match_generic_loop);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }
