@@ -51,7 +51,7 @@
 #define FXL_T_LV fl_t
 #define FXL_T_LV_INIT(Lp, lv, u, v) fl_init(Lp, lv)
 #endif
-#if FXL__FAST_SPANS && FXL_T_BILINEAR && !FXL_T_MIPLIN
+#if FXL__FAST_SPANS && !FXL_T_MIPLIN
 /* its copy for segments on one texel row (span_loop.h, FXL_T_ROWLOOP) */
 #define FXL_T_LOOPFN FXL__CAT(FXL_T_LOOP, _row)
 #define FXL_T_QUAD 0
@@ -70,7 +70,7 @@
  * the rowc walk and, on 64-bit hosts, the batch walk's copy (span_walk.h;
  * FXL__ZROW_WALK in span.c) */
 #define FXL_T_ZLOOP FXL__CAT(FXL_T_LOOP, _z0)
-#if FXL_T_BILINEAR && !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN
 #define FXL_T_LOOPFN FXL__CAT(FXL_T_ZLOOP, _row)
 #define FXL_T_QUAD 0
 #define FXL_T_ZCONST 1

@@ -34,13 +34,16 @@
 #else
 #define FXL_T_RCOL(U) (((U) & mu16) >> 16)
 #endif
-/* A one-level bilinear loop hands segments on one texel row to its
- * FXL_T_LOOPFN##_row copy (FXL_T_ROWLOOP 1, included first; span.c's
- * bl_row_fits): one lerp a pixel where a footprint is shared. That copy is
- * out of line: inline in every walk it cost the others' registers (x86-64
+/* A one-level loop hands segments on one texel row (v constant, 4 pixels
+ * or more: span.c's bl_row_fits) to its FXL_T_LOOPFN##_row copy
+ * (FXL_T_ROWLOOP 1, included first): bilinear, one lerp a pixel where a
+ * footprint is shared; point, no v in the address. That copy is out of
+ * line: inline in every walk it cost the others' registers (x86-64
  * small_tris bilinear +0.8%). FXL_T_ROWLOOP 2 is a forced-inline copy for
- * the one walk that runs whole rows of them (span_fast.h). */
-#define FXL_T_ROWS (FXL__FAST_SPANS && FXL_T_BILINEAR && !FXL_T_MIPLIN && !FXL_T_QUAD && !FXL_T_ROWLOOP)
+ * the one walk that runs whole rows of them (span_fast.h). The test at
+ * each call costs scenes without such rows 0.3-1.2% (Cortex-M4 point),
+ * and saves level floors drawn in long segments ~30% (affine, AUTO). */
+#define FXL_T_ROWS (FXL__FAST_SPANS && !FXL_T_MIPLIN && !FXL_T_QUAD && !FXL_T_ROWLOOP)
 #if FXL_T_ROWLOOP == 1
 static FXL__NOINLINE
 #elif FXL_T_ROWLOOP == 2
