@@ -108,6 +108,21 @@ static inline uint32_t fxl__bilerp565(uint32_t c00, uint32_t c10, uint32_t c01, 
 }
 #endif
 
+#if FXL__V_ANY
+/* 1 when a segment goes to the row loops (FXL_T_ROWLOOP in span_loop.h):
+ * v does not change along it (dv == 0: every pixel has one texel row and,
+ * bilinear, one v weight), and it has at least 4 pixels (bilinear: the row
+ * cache is separate from bl_sample's, so a shorter segment would refill it
+ * for too few pixels; point: the call would cost what it saves). A wider
+ * test, vv's bits 11..31 equal at both ends for |dv| < 2^16, found no more
+ * such segments on the benchmark scenes and cost the others ~1 Cortex-M4
+ * instruction a segment. */
+static FXL__HOT_INLINE int row_fits(uint32_t dv, int32_t n)
+{
+    return dv == 0u && n >= 4;
+}
+#endif
+
 #if FXL__V_ANY_BL
 /* ---- bilinear footprint of the fast loops -----------------------------------
  * bl_sample returns the filtered colour in expanded form, equal bit for bit
@@ -276,17 +291,6 @@ typedef struct bl_row {
     uint32_t key, a, d;           /* uu >> 16 of the footprint (FXL__ROW_NONE: none);
                                    * 32 left + R, right - left */
 } bl_row_t;
-
-/* 1 when the row loop takes the segment: v does not change along it (dv ==
- * 0: every pixel has vv's row and weight), and it has at least 4 pixels
- * (the row cache is separate from bl_sample's, so a shorter segment would
- * refill it for too few pixels). A wider test, vv's bits 11..31 equal at
- * both ends for |dv| < 2^16, found no more such segments on the benchmark
- * scenes and cost the others ~1 Cortex-M4 instruction a segment. */
-static FXL__HOT_INLINE int bl_row_fits(uint32_t dv, int32_t n)
-{
-    return dv == 0u && n >= 4;
-}
 
 /* A span's segments on one row share its bucket: the rows are found once. */
 static FXL__HOT_INLINE void bl_row_begin(bl_t *b, bl_row_t *r, uint32_t vv)

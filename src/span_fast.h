@@ -625,7 +625,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
                     if (zrow) {
                         do {
 #ifdef FXL_T_ZROWLOOP
-                            if (sg->dv == 0u)   /* n4 >= 4: bl_row_fits */
+                            if (sg->dv == 0u)   /* n4 >= 4: row_fits */
                                 written += FXL_T_ZROWLOOP(dst, zb, n4, sg->z, 0u, &L, sg->u, sg->v, sg->du, 0u);
                             else
 #endif

@@ -35,7 +35,7 @@
 #define FXL_T_RCOL(U) (((U) & mu16) >> 16)
 #endif
 /* A one-level loop hands segments on one texel row (v constant, 4 pixels
- * or more: span.c's bl_row_fits) to its FXL_T_LOOPFN##_row copy
+ * or more: span.c's row_fits) to its FXL_T_LOOPFN##_row copy
  * (FXL_T_ROWLOOP 1, included first): bilinear, one lerp a pixel where a
  * footprint is shared; point, no v in the address. That copy is out of
  * line: inline in every walk it cost the others' registers (x86-64
@@ -83,7 +83,7 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
     (void)dz;
 #endif
 #if FXL_T_ROWLOOP && FXL_T_BILINEAR
-    /* one texel row: v is constant to the weight (bl_row_fits) */
+    /* one texel row: v is constant to the weight (row_fits) */
     uint32_t uu = u - 0x8000u;
     bl_row_t R;
     bl_row_begin(L, &R, v - 0x8000u);
@@ -259,7 +259,7 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
 static FXL__HOT_INLINE uint32_t FXL_T_LOOPFN(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_t dz,
                                              FXL_T_LV *L, uint32_t u, uint32_t v, uint32_t du, uint32_t dv)
 {
-    if (bl_row_fits(dv, n))
+    if (row_fits(dv, n))
         return FXL__CAT(FXL_T_LOOPFN, _row)(dst, zb, n, z, dz, L, u, v, du, dv);
     return FXL_T_FNAME(dst, zb, n, z, dz, L, u, v, du, dv);
 }
@@ -299,6 +299,23 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
     uint32_t U = sg->u << su, V = sg->v << lw;                                                              \
     const uint32_t dU = sg->du << su, dV = sg->dv << lw
 #endif
+/* a pixel of a segment on one texel row: bilinear from the row cache R,
+ * point from the texel row `row` */
+#if FXL_T_BILINEAR
+#define FXL_T_RPIXEL(i)                                                                                     \
+    do {                                                                                                    \
+        uint32_t c = compact565(bl_row_sample(&R, uu));                                                     \
+        dst[i] = FXL_T_OUT(c);                                                                              \
+        uu += du;                                                                                           \
+    } while (0)
+#else
+#define FXL_T_RPIXEL(i)                                                                                     \
+    do {                                                                                                    \
+        uint32_t c = row[FXL_T_RCOL(U)];                                                                    \
+        dst[i] = FXL_T_OUT(c);                                                                              \
+        U += dU;                                                                                            \
+    } while (0)
+#endif
 #if !FXL_T_BILINEAR
     if (n == 16) {
         do {
@@ -309,12 +326,6 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
                  * load, the store and one step (Cortex-M4 4 instructions
                  * where the general pixel takes 7) */
                 const uint16_t *const row = tex + ((V & mv16) >> 16);
-#define FXL_T_RPIXEL(i)                                                                                     \
-    do {                                                                                                    \
-        uint32_t c = row[FXL_T_RCOL(U)];                                                                    \
-        dst[i] = FXL_T_OUT(c);                                                                              \
-        U += dU;                                                                                            \
-    } while (0)
                 FXL_T_RPIXEL(0);
                 FXL_T_RPIXEL(1);
                 FXL_T_RPIXEL(2);
@@ -331,7 +342,6 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
                 FXL_T_RPIXEL(13);
                 FXL_T_RPIXEL(14);
                 FXL_T_RPIXEL(15);
-#undef FXL_T_RPIXEL
                 dst += 16;
                 continue;
             }
@@ -359,38 +369,15 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
         do {
             FXL_T_SEG_UV();
             int32_t quads = n >> 2;
+            /* one texel row (FXL_T_ROWLOOP above; point as at n == 16) */
 #if FXL_T_BILINEAR
-            if (bl_row_fits(dv, n)) {
-                /* one texel row (FXL_T_ROWLOOP above) */
+            if (row_fits(dv, n)) {
                 bl_row_t R;
                 bl_row_begin(L, &R, vv);
-#define FXL_T_RPIXEL(i)                                                                                     \
-    do {                                                                                                    \
-        uint32_t c = compact565(bl_row_sample(&R, uu));                                                     \
-        dst[i] = FXL_T_OUT(c);                                                                              \
-        uu += du;                                                                                           \
-    } while (0)
-                do {
-                    FXL_T_RPIXEL(0);
-                    FXL_T_RPIXEL(1);
-                    FXL_T_RPIXEL(2);
-                    FXL_T_RPIXEL(3);
-                    dst += 4;
-                } while (--quads != 0);
-#undef FXL_T_RPIXEL
-                bl_row_end(L, &R);
-                continue;
-            }
 #else
             if (dV == 0u) {
-                /* one texel row, as at n == 16 above */
                 const uint16_t *const row = tex + ((V & mv16) >> 16);
-#define FXL_T_RPIXEL(i)                                                                                     \
-    do {                                                                                                    \
-        uint32_t c = row[FXL_T_RCOL(U)];                                                                    \
-        dst[i] = FXL_T_OUT(c);                                                                              \
-        U += dU;                                                                                            \
-    } while (0)
+#endif
                 do {
                     FXL_T_RPIXEL(0);
                     FXL_T_RPIXEL(1);
@@ -398,10 +385,11 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
                     FXL_T_RPIXEL(3);
                     dst += 4;
                 } while (--quads != 0);
-#undef FXL_T_RPIXEL
+#if FXL_T_BILINEAR
+                bl_row_end(L, &R);
+#endif
                 continue;
             }
-#endif
             do {
                 FXL_T_PIXEL(0);
                 FXL_T_PIXEL(1);
@@ -412,6 +400,7 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
         } while (++sg != end);
     }
 #undef FXL_T_SEG_UV
+#undef FXL_T_RPIXEL
 }
 #endif
 
