@@ -1,5 +1,5 @@
 /* span_loop.h - the pixel loop of one segment (included by span_fast.h,
- * twice for each one-level variant).
+ * several times for each one-level variant).
  *
  * Contract: the macros of span_fast.h (FXL_T_BILINEAR, FXL_T_MIPLIN,
  * FXL_T_DEPTH, FXL_T_SWAP, FXL_T_LV) and
@@ -10,6 +10,12 @@
  *   FXL_T_ZCONST  (optional, with FXL_T_DEPTH) 1: the caller guarantees
  *                 dz == 0 (a level floor's rows), so the depth compared
  *                 and written is z >> 16 throughout, hoisted out of the loop
+ *   FXL_T_ROWLOOP (optional, one level, not FXL_T_QUAD) 1 or 2: the copy
+ *                 for segments on one texel row, where the caller
+ *                 guarantees dv == 0 (row_fits in span.c); 1 out of line,
+ *                 2 forced inline. Without it a one-level loop is named
+ *                 FXL_T_LOOPFN##_all, and FXL_T_LOOPFN is a dispatch to
+ *                 it or to FXL_T_LOOPFN##_row, which must exist.
  * all undefined here. Two functions rather than one with a flag: in the
  * x86-64 depth loops, which use every register, a flag (even a constant
  * one the compiler propagates) cost the affine loop ~2 instructions a
