@@ -522,7 +522,247 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, in
 }
 #endif
 
+#if !FXL_T_MIPLIN && !FXL_T_BILINEAR
+#define FXL_T_LROW FXL__CAT(FXL_T_SPAN, _lrow)
+#define FXL_T_LRUN FXL__CAT(FXL_T_SPAN, _lrun)
+#define FXL_T_LHOT (!FXL_T_DEPTH || !FXL__WORD32)
+/* The pixels of FXL_T_LROW below: one on the texel row `row` (FXL_T_RCOL
+ * of span_loop.h), at d[i] (and z[i]), stepping U by dU. */
+#if FXL_T_SWAP
+#define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
+#else
+#define FXL_T_OUT(c) ((uint16_t)(c))
+#endif
+#if FXL__IDX_TOPU
+#define FXL_T_LCOL(U) ((U) >> shu)
+#else
+#define FXL_T_LCOL(U) (((U) & mu16) >> 16)
+#endif
+#if FXL_T_DEPTH
+#define FXL_T_LPIX(i)                                                                                       \
+    do {                                                                                                    \
+        if (zrow > z[i]) {                                                                                  \
+            const uint32_t c = row[FXL_T_LCOL(U)];                                                          \
+            z[i] = zrow;                                                                                    \
+            d[i] = FXL_T_OUT(c);                                                                            \
+        } else {                                                                                            \
+            rejected++;                                                                                     \
+        }                                                                                                   \
+        U += dU;                                                                                            \
+    } while (0)
+#define FXL_T_LZ(n) (z += (n))
+#else
+#define FXL_T_LPIX(i)                                                                                       \
+    do {                                                                                                    \
+        const uint32_t c = row[FXL_T_LCOL(U)];                                                              \
+        d[i] = FXL_T_OUT(c);                                                                                \
+        U += dU;                                                                                            \
+    } while (0)
+#define FXL_T_LZ(n) ((void)0)
+#endif
+/* u at the correction point s (rowc_run's FXL__ROWC_POINT; hi: the form for
+ * shifts of 33 and more) */
+#define FXL_T_LPOINT(s, hi)                                                                                 \
+    ((hi) ? fxl__persp_lo32_hi(fxl__mul_s32(fxl__persp_mant((int64_t)(s)), r), ku)                        \
+          : fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s)), r), ku, half))
+#if FXL__ROWC_LEAN
+#define FXL_T_LSTEP(d, k) step_pow2_u32(d, k)
+#else
+#define FXL_T_LSTEP(d, k) step_pow2_u32_b(d, k, ((uint32_t)1 << (k)) - 1u)
+#endif
+
+/* m >= 1 whole, unclipped segments of 2^k >= 4 pixels from d (and z),
+ * each ending on a correction point: the loop that draws most of a level
+ * floor, with k and hi constants in its hot copies. Leaves *ps, *pc at the
+ * last end; returns the pixels rejected by the depth test. */
+static FXL__HOT_INLINE uint32_t FXL_T_LRUN(uint64_t *ps, uint32_t *pc, int32_t m, uint16_t *d, uint16_t *z,
+                                           const uint32_t zz, const uint16_t *row, const uint32_t su,
+                                           const uint32_t shu, const uint32_t mu16, const fxl__raxis_t *au,
+                                           const int k, const int hi)
+{
+    const uint64_t gN = au->gN;
+    const int32_t r = au->r;
+    const int ku = au->k;
+    const uint64_t half = au->half;
+    uint64_t s = *ps;
+    uint32_t c0 = *pc, rejected = 0;
+#if FXL_T_DEPTH
+    const uint16_t zrow = (uint16_t)zz;
+#else
+    (void)z;
+    (void)zz;
+#endif
+    (void)shu;
+    (void)mu16;
+    (void)half;
+    do {
+        const uint32_t c1 = FXL_T_LPOINT(s += gN, hi);
+        uint32_t U = c0 << su;
+        const uint32_t dU = FXL_T_LSTEP(c1 - c0, k) << su;
+        if (k >= 4) {
+            /* blocks of 16 (one at subdiv16, k == 4 constant) */
+            int32_t q = (int32_t)1 << (k - 4);
+            do {
+                FXL_T_LPIX(0);
+                FXL_T_LPIX(1);
+                FXL_T_LPIX(2);
+                FXL_T_LPIX(3);
+                FXL_T_LPIX(4);
+                FXL_T_LPIX(5);
+                FXL_T_LPIX(6);
+                FXL_T_LPIX(7);
+                FXL_T_LPIX(8);
+                FXL_T_LPIX(9);
+                FXL_T_LPIX(10);
+                FXL_T_LPIX(11);
+                FXL_T_LPIX(12);
+                FXL_T_LPIX(13);
+                FXL_T_LPIX(14);
+                FXL_T_LPIX(15);
+                d += 16;
+                FXL_T_LZ(16);
+            } while (--q != 0);
+        } else {
+            FXL_T_LPIX(0);
+            FXL_T_LPIX(1);
+            FXL_T_LPIX(2);
+            FXL_T_LPIX(3);
+            if (k == 3) {
+                FXL_T_LPIX(4);
+                FXL_T_LPIX(5);
+                FXL_T_LPIX(6);
+                FXL_T_LPIX(7);
+            }
+            d += (ptrdiff_t)1 << k;
+            FXL_T_LZ((ptrdiff_t)1 << k);
+        }
+        c0 = c1;
+    } while (--m != 0);
+    *ps = s;
+    *pc = c0;
+    return rejected;
+}
+
+/* A span of the rowc walk where v's plane, like q's, has no x gradient (a
+ * level floor seen without roll): every segment is on one texel row, row,
+ * with v's step 0 (what rowc_axis gives v there: the body checks that v at
+ * the correction points is lean_start's). u's correction points are
+ * rowc_run's and the last one rowc_axis's, each used as soon as it is
+ * made instead of stored in a batch and read back, and a pixel is the
+ * point loop's on one row: bit for bit the batches' values, without the v
+ * axis, the batch's stores and loads and its set-up.
+ * The span starts at pixel x of the row (pix and, with depth, zb point
+ * there; zz is the row's one depth); k is the segment length's log2.
+ * Returns the pixels written. */
+static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, const uint16_t *row, uint16_t *pix,
+                                         uint16_t *zb, uint32_t zz, int k, int32_t x, int32_t cl, int32_t cr,
+                                         int32_t xr)
+{
+    const int32_t N = (int32_t)1 << k, x0 = x;
+    const uint32_t su = FXL__IDX_TOPU ? 16u - L->lw : 0u;
+    const uint32_t shu = L->shu, mu16 = L->mu16;
+    const int32_t r = au->r;
+    const int ku = au->k;
+    const uint64_t half = au->half;
+    uint64_t s = au->s;
+    uint32_t c0 = au->c;
+    uint32_t rejected = 0;
+#if FXL_T_DEPTH
+    const uint16_t zrow = (uint16_t)zz;
+#else
+    (void)zb;
+#endif
+    (void)shu;
+    (void)mu16;
+    while (x < cr) {
+        int32_t n = xr - x, a = x, m;
+        uint32_t c1, du;
+        /* whole segments inside [cl, cr) before the span's last pixel */
+        m = k >= 2 && x >= cl ? ((cr < xr - 1 ? cr : xr - 1) - x) >> k : 0;
+        if (m > 0) {
+            uint16_t *const d = pix + (x - x0);
+            uint16_t *const z = FXL_T_DEPTH ? zb + (x - x0) : 0;
+            /* copies for subdiv16, k == 4 (the depth variants on 32-bit
+             * cores, where the benchmark draws without depth, keep only
+             * the general one: ~2 KB of Cortex-M4 code each) */
+            if (FXL_T_LHOT && k == 4 && FXL__WORD32 && ku >= 33)
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 1);
+            else if (FXL_T_LHOT && k == 4)
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 0);
+            else
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, k, 0);
+            x += m << k;
+            continue;
+        }
+        if (n > N) {
+            /* a whole segment: its end is a correction point (rowc_run) */
+            c1 = FXL_T_LPOINT(s += au->gN, 0);
+            du = FXL_T_LSTEP(c1 - c0, k);
+            n = N;
+        } else {
+            /* the span's last segment, ending on its last pixel (rowc_axis) */
+            const uint32_t div = (uint32_t)n - 1u;
+            c1 = FXL_T_LPOINT(s + au->g * div, 0);
+            du = step_div_u32(c1 - c0, div);
+        }
+        {
+            uint32_t U = c0 << su;
+            const uint32_t dU = du << su;
+            uint16_t *d;
+#if FXL_T_DEPTH
+            uint16_t *z;
+#endif
+            if (a < cl) {
+                /* only the first segment starts left of the clip */
+                U += dU * (uint32_t)(cl - a);
+                a = cl;
+            }
+            m = (x + n < cr ? x + n : cr) - a;
+            d = pix + (a - x0);
+#if FXL_T_DEPTH
+            z = zb + (a - x0);
+#endif
+            for (; m >= 4; m -= 4) {
+                FXL_T_LPIX(0);
+                FXL_T_LPIX(1);
+                FXL_T_LPIX(2);
+                FXL_T_LPIX(3);
+                d += 4;
+                FXL_T_LZ(4);
+            }
+            for (; m > 0; m--) {
+                FXL_T_LPIX(0);
+                d++;
+                FXL_T_LZ(1);
+            }
+        }
+        c0 = c1;
+        x += n;
+    }
+    return (uint32_t)(cr - cl) - rejected;
+}
+#undef FXL_T_LPIX
+#undef FXL_T_LZ
+#undef FXL_T_LCOL
+#undef FXL_T_OUT
+#undef FXL_T_LPOINT
+#undef FXL_T_LSTEP
+#undef FXL_T_LHOT
+#endif
+
 #if !FXL_T_MIPLIN
+/* Will the triangle's spans take FXL_T_LROW (as far as the triangle
+ * tells: the body checks each span)? */
+static inline int FXL__CAT(FXL_T_SPAN, _lrow_tri)(const fxl__tri_t *tri)
+{
+#ifdef FXL_T_LROW
+    return tri->gpx[FXL__PA + FXL__AV] == 0 && (!FXL_T_DEPTH || tri->gpx[FXL__PZ] == 0);
+#else
+    (void)tri;
+    return 0;
+#endif
+}
+
 /* Fixed-length segments on a row of constant q (q_row_const): every
  * correction point shares lean_start's 1/q, so a correction is a plane
  * step, a multiply and a shift per coordinate. The same values as the lean
@@ -588,6 +828,20 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
     const int zrow = az.g == 0u;
 #endif
     FXL_T_LV_INIT(&L, &tri->level[0], s.u, s.v);
+#ifdef FXL_T_LROW
+#if FXL_T_DEPTH
+    const int lrow_z = zrow;
+#else
+    const int lrow_z = 1;
+#endif
+    if (av.g == 0u && (!FXL__IDX_TOPU || L.lw != 0u) && lrow_z &&
+        fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)av.s), av.r), av.k, av.half) == s.v) {
+        /* one texel row for the whole span (FXL_T_LROW) */
+        const uint16_t *const trow = L.tex + (((s.v << L.lw) & L.mv16) >> 16);
+        written = FXL_T_LROW(&au, &L, trow, tg->pixels + (rowidx + x0), FXL_T_DEPTH ? tg->depth + (rowidx + x0) : 0,
+                             FXL_T_DEPTH ? s.z >> 16 : 0u, k, x0, cl, cr, xr);
+    } else
+#endif
     {
         /* segments starting before lim4 are whole, end inside [cl, cr)
          * before the span's last pixel, and have a multiple of 4 pixels */
@@ -750,12 +1004,16 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #endif
         if (tri->seg_log2 == 0)
             return FXL_T_EXACT;   /* no tri->lean_next: its runs test q_row_const */
-        else if (q_row_const(tri) && tri->seg_log2 <= 5)
+        else if (q_row_const(tri) && (tri->seg_log2 <= 5 || ((FXL_T_DEPTH || tri->seg_log2 == 6) && FXL__CAT(FXL_T_SPAN, _lrow_tri)(tri))))
             /* its own corrections (or the lean walk, with the pointer
-             * below). Longer segments stay on the lean walk: the few
-             * corrections of a span do not pay for this walk's set-up
-             * (Cortex-M4 floor subdiv64 +2.3%; subdiv32 -4.9%, subdiv16
-             * -10%, subdiv4 -25%), nor do affine triangles (256). */
+             * below). Longer segments stay on the lean walk where the
+             * batches would run: the few corrections of a span do not pay
+             * for their set-up (Cortex-M4 floor subdiv64 +2.3%; subdiv32
+             * -4.9%, subdiv16 -10%, subdiv4 -25%). On one texel row
+             * (FXL_T_LROW) subdiv64 gains too (floor 8.55 -> 7.63), and
+             * with depth affine triangles (256) and AUTO's whole spans do
+             * (x86-64 floor affine 15.3 -> 12.2: the row's one depth);
+             * without depth those lose 3-4% (the lean walk's row loop). */
             walk = FXL_T_ROWC;
         else
             walk = FXL__CAT(FXL_T_LEAN, _fixed);
@@ -802,6 +1060,10 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_WALK
 #undef FXL_T_ROWC
 #undef FXL_T_ROWC_SEGS
+#ifdef FXL_T_LROW
+#undef FXL_T_LROW
+#undef FXL_T_LRUN
+#endif
 #ifdef FXL_T_SEG
 #undef FXL_T_SEG
 #endif
