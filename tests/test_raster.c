@@ -1552,6 +1552,139 @@ void test_fast_loops_match_generic_loop(void)
     TEST_ASSERT_TRUE(compared > 0);
 }
 
+/* Spans on one texel row (q and v constant along every row: span_fast.h's
+ * FXL_T_LROW) against the generic walk, pixel, depth value and the pixels
+ * the stats count: wide spans (up to 300 pixels) for many segments of
+ * every length the walk takes (4 to 64; affine and AUTO with depth), u
+ * magnified 8x to minified 8x in both directions, textures 256 wide and
+ * 1 wide (a column of constant index), a clip rectangle cutting both ends
+ * at odd pixels, and with depth an occluder drawn first, so the depth
+ * test rejects part of each span (all of it where the occluder is the
+ * triangle itself, at equal depths). */
+void test_level_row_walk_matches_generic(void)
+{
+    enum { LW = 300, LH = 24, NT = 40 };
+    static uint16_t tex_wide[256 * 8], tex_col[1 * 64];
+    static uint16_t fast[LW * LH], gen[LW * LH], zfast[LW * LH], zgen[LW * LH];
+    static uint16_t scratch[LW * LH], zscratch[LW * LH];
+    static const int16_t persp[7] = {4, 8, 16, 32, 64, FXL_PERSP_AFFINE, FXL_PERSP_AUTO};
+    static fxl_vertex_t tris[NT][3], occ[3];
+    fxl_texture_t tex[2], keyed[2];
+    fxl_draw_t d, dg, dflat;
+    char msg[200];
+    int i, k, cfg, compared = 0;
+    uint32_t hidden = 0, drawn_z = 0;
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    for (i = 0; i < 256 * 8; i++)   /* never 0x0001, the key below */
+        tex_wide[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    for (i = 0; i < 64; i++)
+        tex_col[i] = (uint16_t)((i * 40503u) | 0x0802u);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[0], tex_wide, 256, 8, FXL_TEXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[1], tex_col, 1, 64, FXL_TEXFMT_RGB565, 1));
+    for (i = 0; i < 2; i++) {
+        keyed[i] = tex[i];
+        keyed[i].flags |= FXL_TEXF_KEY;
+        keyed[i].key = 0x0001u;
+    }
+    lcg_state = 4242u;
+    for (k = 0; k < NT; k++) {
+        /* texels a pixel along u, either direction */
+        static const double scales[5] = {0.125, 0.7, 1.0, 3.3, 8.0};
+        const double scale = scales[k % 5] * ((k / 5) % 2 ? -1.0 : 1.0);
+        const double x0 = rnd_range(-40, 20) + 0.37, w = rnd_range(LW / 2, LW + 60);
+        const double y0 = rnd_range(-4, 4) + 0.21, q0 = 0.1 + (rnd() % 900) / 1000.0;
+        const double q2 = 0.05 + (rnd() % 950) / 1000.0, u0 = rnd_range(-500, 500) / 3.0;
+        const double v0 = rnd_range(-64, 64) / 7.0;
+        /* u, v in texels here, in periods of the 256 x 8 texture in the vertices */
+        tris[k][0] = vtx(x0, y0, q0, u0 / 256, v0 / 8);
+        tris[k][1] = vtx(x0 + w, y0, q0, (u0 + scale * w) / 256, v0 / 8);
+        tris[k][2] = vtx(x0 + rnd_range(0, LW), y0 + rnd_range(LH / 2, 2 * LH), q2, rnd_range(-99, 99) / 256.0,
+                         (v0 + rnd_range(-30, 30)) / 8);
+        if (k & 2) {   /* the far edge on top instead */
+            for (i = 0; i < 3; i++)
+                tris[k][i].y = (fxl_q16_t)(LH * 65536 - tris[k][i].y);
+        }
+    }
+    /* the occluder: nearer than some of each span, farther than the rest */
+    occ[0] = vtx(LW * 0.2, -5, 0.4, 0, 0);
+    occ[1] = vtx(LW * 0.7, LH + 5, 0.9, 0, 0);
+    occ[2] = vtx(LW * 0.1, LH + 5, 0.1, 0, 0);
+    flat_draw(&dflat);
+    dflat.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+    for (cfg = 0; cfg < 7 * 2 * 2 * 2; cfg++) {
+        const int pm = cfg % 7, depth = (cfg / 7) & 1, swap = (cfg / 14) & 1, clip = (cfg / 28) & 1;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        const fxl_rect_t cr = {13, 1, LW - 29, LH - 1};
+        fxl_draw_defaults(&d);
+        d.filter = FXL_FILTER_POINT;
+        d.persp = persp[pm];
+        if (!depth)
+            d.depth = 0;
+        for (k = 0; k < NT; k++) {
+            fxl_stats_t st[2];
+            int pass;
+            d.texture = &tex[k % 7 == 3];
+            dg = d;
+            dg.texture = &keyed[k % 7 == 3];
+            if (left_out_feature(&d, d.texture, fmt, depth) != NULL ||
+                left_out_feature(&dg, dg.texture, fmt, depth) != NULL)
+                break;   /* refusals: test_left_out_features_are_refused */
+            /* pass 2 (with depth): without the occluder, to count what it hides */
+            for (pass = 0; pass < (depth ? 3 : 2); pass++) {
+                fxl_target_t tg;
+                fxl_target_init(&tg, pass == 0 ? fast : pass == 1 ? gen : scratch, LW, LH, LW, fmt);
+                fxl_target_clear(&tg, 0xDEAD);
+                if (depth) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK,
+                                          fxl_target_set_depth(&tg, pass == 0 ? zfast : pass == 1 ? zgen : zscratch));
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&tg));
+                    /* every fourth triangle is its own occluder: equal depths, all rejected */
+                    if (pass < 2)
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &dflat, k % 4 == 1 ? tris[k] : occ, NULL));
+                }
+                if (pass == 2) {
+                    fxl_stats_t all;
+                    memset(&all, 0, sizeof all);
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, tris[k], &all));
+                    hidden += all.pixels - st[0].pixels;
+                    break;
+                }
+                if (clip)
+                    fxl_target_set_clip(&tg, &cr);
+                memset(&st[pass], 0, sizeof st[pass]);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, pass ? &dg : &d, tris[k], &st[pass]));
+            }
+            snprintf(msg, sizeof msg, "persp %d depth %d swap %d clip %d triangle %d", persp[pm], depth, swap, clip,
+                     k);
+            for (i = 0; i < LW * LH; i++) {
+                if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
+                    char m2[260];
+                    snprintf(m2, sizeof m2, "%s pixel (%d,%d): fast %04x/%04x generic %04x/%04x", msg, i % LW,
+                             i / LW, fast[i], zfast[i], gen[i], zgen[i]);
+                    TEST_FAIL_MESSAGE(m2);
+                }
+            }
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[1].pixels, st[0].pixels, msg);
+            /* the walk under test where this build has it (none at -Os) */
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(FXL__FAST_SPANS && (swap ? FXL_FAST_SWAPPED : FXL_FAST_NATIVE) &&
+                                                     FXL_FAST_POINT && (depth ? FXL_FAST_DEPTH : FXL_FAST_NO_DEPTH)
+                                                 ? 0u
+                                                 : 1u,
+                                             st[0].generic, msg);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(1u, st[1].generic, msg);
+            if (depth)
+                drawn_z += st[0].pixels;
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws compared; with depth %lu pixels drawn, %lu hidden by the occluder", compared,
+             (unsigned long)drawn_z, (unsigned long)hidden);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+    if (FXL_HAVE_DEPTH)
+        TEST_ASSERT_TRUE_MESSAGE(hidden > drawn_z / 8 && drawn_z > hidden / 8, msg);
+}
+
 /* The walk along rows of constant q declines a span whose correction points
  * fall outside the range its one shift serves (span_fast.h: FXL_T_ROWC
  * returns 0, having drawn nothing) and the lean walk draws it. These
@@ -2229,6 +2362,7 @@ int main(void)
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
     RUN_TEST(test_fast_loops_match_generic_loop);
+    RUN_TEST(test_level_row_walk_matches_generic);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
 }
