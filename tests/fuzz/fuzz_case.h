@@ -12,7 +12,7 @@
  * sometimes an invalid descriptor), every draw field (sometimes an invalid
  * enum), and three vertices picked from pools of extreme values on purpose
  * (INT32 limits, +-32767 px, tiny steps, duplicates, collinear points,
- * level rows: two vertices on one row at one 1/w,
+ * level rows: two vertices on one row at one 1/w, sometimes one v too,
  * inv_w 0 / 1 / UINT32_MAX, huge u, v). fixel-fuzz and the libFuzzer
  * target then fit 7 of 8 cases to the build (fz_prepare): in a reduced
  * configuration a refused feature's fields are changed to ones it keeps.
@@ -400,9 +400,12 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
     }
     if (m <= 5u && mb >= 41u && mb < 88u) {
         /* a level row: q and z constant along every row (a level floor),
-         * the specialised walks' constant-depth copies */
+         * the specialised walks' constant-depth copies; from 64, v too
+         * (v runs with depth: every span on one texel row, FXL_T_LROW) */
         c->v[1].y = c->v[0].y;
         c->v[1].inv_w = c->v[0].inv_w;
+        if (mb >= 64u)
+            c->v[1].v = c->v[0].v;
     } else if (m == 6) {
         c->v[2].x = c->v[0].x;
         c->v[2].y = c->v[0].y;
