@@ -892,6 +892,14 @@ static void lod_setup(fxl__tri_t *tri)
     (*(const uint16_t *)(const void *)((const uint8_t *)(tex) + ((((V) & (mv16)) | ((U) & (mu16))) >> 15)))
 #endif
 
+/* The column of a point sample on one texel row (v constant): FXL__IDX
+ * without its v part. */
+#if FXL__IDX_TOPU
+#define FXL__RCOL(U, shu, mu16) ((U) >> (shu))
+#else
+#define FXL__RCOL(U, shu, mu16) (((U) & (mu16)) >> 16)
+#endif
+
 typedef struct fl {
     const uint16_t *tex;
     uint32_t lw, shu;
@@ -1331,6 +1339,17 @@ static inline uint32_t step_pow2_u32_b(uint32_t d, int k, uint32_t bias)
 }
 #endif
 
+/* A coordinate's value at a correction point of a row of constant q (the
+ * rowc walk): its plane value s times the span's 1/q r, shifted by k with
+ * half = 2^(k-1): fxl__persp_e's low 32 bits. hi (a constant): the form
+ * for k >= 33 on 32-bit cores, one ASR of the product's high word (the
+ * same value). */
+static FXL__HOT_INLINE uint32_t rowc_value(uint64_t s, int32_t r, int k, uint64_t half, const int hi)
+{
+    const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)s), r);
+    return hi ? fxl__persp_lo32_hi(prod, k) : fxl__persp_lo32(prod, k, half);
+}
+
 /* step_of of coord_diff, div, likewise; div = 0 gives 0. */
 static inline uint32_t step_div_u32(uint32_t d, uint32_t div)
 {
@@ -1398,11 +1417,7 @@ static FXL__UNSWITCH uint32_t *rowc_run(fxl__raxis_t *ax, int segk, int32_t nful
     uint32_t c0 = ax->c;
     int32_t i;
     /* the next correction point's value into c */
-#define FXL__ROWC_POINT(c)                                                                                  \
-    do {                                                                                                    \
-        const int64_t prod = fxl__mul_s32(fxl__persp_mant((int64_t)(s += gN)), r);                         \
-        (c) = hi ? fxl__persp_lo32_hi(prod, ax->k) : fxl__persp_lo32(prod, ax->k, ax->half);                \
-    } while (0)
+#define FXL__ROWC_POINT(c) ((c) = rowc_value(s += gN, r, ax->k, ax->half, hi))
 #if FXL__ROWC_LEAN
     for (i = 0; i < nfull; i++, out += stride) {
         uint32_t c1;
@@ -1450,7 +1465,7 @@ static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, i
          * (Cortex-M4 floor subdiv16 point 13.43 -> 13.04 instructions a
          * pixel). */
         const uint32_t stride = (uint32_t)(sizeof(fxl__rseg_t) / sizeof(uint32_t));
-        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)ax->s), ax->r), ax->k, ax->half);
+        const uint32_t c1 = rowc_value(ax->s, ax->r, ax->k, ax->half, 0);
         uint32_t c0 = ax->c;
         int32_t i;
         for (i = 0; i < nfull; i++, out += stride) {
@@ -1470,8 +1485,7 @@ static FXL__NOINLINE void rowc_axis(fxl__raxis_t *ax, int segk, int32_t nfull, i
     out = FXL__WORD32 && ax->k >= 33 ? rowc_run(ax, segk, nfull, out, 1) : rowc_run(ax, segk, nfull, out, 0);
     if (last) {
         const uint32_t c0 = ax->c;
-        const uint32_t c1 = fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(ax->s += ax->g * div)), ax->r),
-                                            ax->k, ax->half);
+        const uint32_t c1 = rowc_value(ax->s += ax->g * div, ax->r, ax->k, ax->half, 0);
         out[0] = c0;
         out[1] = step_div_u32(c1 - c0, div);
         ax->c = c1;

@@ -44,6 +44,12 @@
 #define FXL_T_ROWC FXL__CAT(FXL_T_SPAN, _rowc)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
+/* a texel as the target stores it */
+#if FXL_T_SWAP
+#define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
+#else
+#define FXL_T_OUT(c) ((uint16_t)(c))
+#endif
 #if FXL_T_BILINEAR
 #define FXL_T_LV bl_t
 #define FXL_T_LV_INIT(Lp, lv, u, v) bl_init(Lp, lv, u, v)
@@ -526,18 +532,9 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, in
 #define FXL_T_LROW FXL__CAT(FXL_T_SPAN, _lrow)
 #define FXL_T_LRUN FXL__CAT(FXL_T_SPAN, _lrun)
 #define FXL_T_LHOT (!FXL_T_DEPTH || !FXL__WORD32)
-/* The pixels of FXL_T_LROW below: one on the texel row `row` (FXL_T_RCOL
- * of span_loop.h), at d[i] (and z[i]), stepping U by dU. */
-#if FXL_T_SWAP
-#define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
-#else
-#define FXL_T_OUT(c) ((uint16_t)(c))
-#endif
-#if FXL__IDX_TOPU
-#define FXL_T_LCOL(U) ((U) >> shu)
-#else
-#define FXL_T_LCOL(U) (((U) & mu16) >> 16)
-#endif
+/* The pixels of FXL_T_LROW below: one on the texel row `row`, at d[i]
+ * (and z[i]), stepping U by dU. */
+#define FXL_T_LCOL(U) FXL__RCOL(U, shu, mu16)
 #if FXL_T_DEPTH
 #define FXL_T_LPIX(i)                                                                                       \
     do {                                                                                                    \
@@ -560,11 +557,8 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, in
     } while (0)
 #define FXL_T_LZ(n) ((void)0)
 #endif
-/* u at the correction point s (rowc_run's FXL__ROWC_POINT; hi: the form for
- * shifts of 33 and more) */
-#define FXL_T_LPOINT(s, hi)                                                                                 \
-    ((hi) ? fxl__persp_lo32_hi(fxl__mul_s32(fxl__persp_mant((int64_t)(s)), r), ku)                        \
-          : fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)(s)), r), ku, half))
+/* u at the correction point s (hi: rowc_value's form for shifts of 33 and more) */
+#define FXL_T_LPOINT(s, hi) rowc_value(s, r, ku, half, hi)
 #if FXL__ROWC_LEAN
 #define FXL_T_LSTEP(d, k) step_pow2_u32(d, k)
 #else
@@ -744,7 +738,6 @@ static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, 
 #undef FXL_T_LPIX
 #undef FXL_T_LZ
 #undef FXL_T_LCOL
-#undef FXL_T_OUT
 #undef FXL_T_LPOINT
 #undef FXL_T_LSTEP
 #undef FXL_T_LHOT
@@ -835,7 +828,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
     const int lrow_z = 1;
 #endif
     if (av.g == 0u && (!FXL__IDX_TOPU || L.lw != 0u) && lrow_z &&
-        fxl__persp_lo32(fxl__mul_s32(fxl__persp_mant((int64_t)av.s), av.r), av.k, av.half) == s.v) {
+        rowc_value(av.s, av.r, av.k, av.half, 0) == s.v) {
         /* one texel row for the whole span (FXL_T_LROW) */
         const uint16_t *const trow = L.tex + (((s.v << L.lw) & L.mv16) >> 16);
         written = FXL_T_LROW(&au, &L, trow, tg->pixels + (rowidx + x0), FXL_T_DEPTH ? tg->depth + (rowidx + x0) : 0,
@@ -1037,6 +1030,7 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 
 #undef FXL_T_LV
 #undef FXL_T_LV_INIT
+#undef FXL_T_OUT
 #undef FXL_T_LOOP
 #ifdef FXL_T_QLOOP
 #undef FXL_T_QLOOP

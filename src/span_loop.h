@@ -2,7 +2,7 @@
  * several times for each one-level variant).
  *
  * Contract: the macros of span_fast.h (FXL_T_BILINEAR, FXL_T_MIPLIN,
- * FXL_T_DEPTH, FXL_T_SWAP, FXL_T_LV) and
+ * FXL_T_DEPTH, FXL_T_SWAP, FXL_T_LV, FXL_T_OUT) and
  *   FXL_T_LOOPFN  name of the generated function
  *   FXL_T_QUAD    0: affine steps; 1: quadratic segments (auto.h), whose
  *                 steps du, dv change by ddu, ddv a pixel (two more
@@ -33,13 +33,8 @@
 #ifndef FXL_T_ROWLOOP
 #define FXL_T_ROWLOOP 0
 #endif
-/* the column of a point sample on one texel row (v constant): FXL__IDX
- * without its v part */
-#if FXL__IDX_TOPU
-#define FXL_T_RCOL(U) ((U) >> shu)
-#else
-#define FXL_T_RCOL(U) (((U) & mu16) >> 16)
-#endif
+/* the column of a point sample on one texel row (span.c) */
+#define FXL_T_RCOL(U) FXL__RCOL(U, shu, mu16)
 /* A one-level loop hands segments on one texel row (v constant, 4 pixels
  * or more: span.c's row_fits) to its FXL_T_LOOPFN##_row copy
  * (FXL_T_ROWLOOP 1, included first): bilinear, one lerp a pixel where a
@@ -155,11 +150,6 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
 #define FXL_T_CURVE() (dU += ddU, dV += ddV)
 #endif
 
-#if FXL_T_SWAP
-#define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
-#else
-#define FXL_T_OUT(c) ((uint16_t)(c))
-#endif
 #if FXL_T_MIPLIN
 #define FXL_T_ADVANCE() (FXL_T_STEP(), FXL_T_STEP2())
 #else
@@ -415,7 +405,6 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
 #ifdef FXL_T_ZNEXT
 #undef FXL_T_ZNEXT
 #endif
-#undef FXL_T_OUT
 #undef FXL_T_TEXEL
 #undef FXL_T_STEP
 #undef FXL_T_CURVE
