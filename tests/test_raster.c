@@ -237,7 +237,12 @@ static void check_mesh(int nx, int ny, double jitter, uint32_t seed)
     for (j = 0; j <= ny; j++)
         for (i = 0; i <= nx; i++) {
             double gx = 2.0 + (W - 4.0) * i / nx, gy = 2.0 + (H - 4.0) * j / ny;
-            /* jitter is a fraction of the cell (0.3 keeps every quad convex, so the mesh never folds) */
+            /* jitter is a fraction of the cell. A triangle of a cell folds
+             * over when a corner crosses the diagonal opposite it, 0.71 of
+             * a cell away; the corner and the diagonal's two ends each move
+             * at most 1.41 j along the diagonal's normal, so j < 0.25
+             * never folds (0.3 did, at seed 1812), and j = 0.2 leaves 0.14
+             * of a cell (> 0.38 px) for the 1/16-px snap of 3 vertices. */
             if (i > 0 && i < nx)
                 gx += jitter * (W - 4.0) / nx * ((rnd() % 2001) / 1000.0 - 1.0);
             if (j > 0 && j < ny)
@@ -253,8 +258,19 @@ static void check_mesh(int nx, int ny, double jitter, uint32_t seed)
             fxl_vertex_t b[3] = {grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]};
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, a, NULL, probe_seg));
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, b, NULL, probe_seg));
-            for (y = 0; y < H; y++)
-                for (x = 0; x < W; x++)
+            /* the reference over the cell's bounding box (every pixel
+             * centre either triangle can cover) */
+            int bx0 = W, bx1 = 0, by0 = H, by1 = 0, c;
+            const fxl_vertex_t *corner[4] = {&grid[j][i], &grid[j][i + 1], &grid[j + 1][i], &grid[j + 1][i + 1]};
+            for (c = 0; c < 4; c++) {
+                const int cx = (int)(corner[c]->x >> 16), cy = (int)(corner[c]->y >> 16);
+                bx0 = cx - 1 < bx0 ? cx - 1 : bx0;
+                bx1 = cx + 2 > bx1 ? cx + 2 : bx1;
+                by0 = cy - 1 < by0 ? cy - 1 : by0;
+                by1 = cy + 2 > by1 ? cy + 2 : by1;
+            }
+            for (y = by0 < 0 ? 0 : by0; y < (by1 > H ? H : by1); y++)
+                for (x = bx0 < 0 ? 0 : bx0; x < (bx1 > W ? W : bx1); x++)
                     ref[y * W + x] = (uint8_t)(ref[y * W + x] + ref_covered(a, x, y) + ref_covered(b, x, y));
         }
     for (y = 0; y < H; y++)
@@ -278,9 +294,11 @@ void test_watertight_grid_mesh_each_pixel_once(void)
 
 void test_watertight_random_jittered_meshes_each_pixel_once(void)
 {
+    /* thousands of random meshes (the core issue's count), each checked
+     * pixel by pixel */
     uint32_t s;
-    for (s = 0; s < 300; s++)
-        check_mesh(3 + (int)(s % 20), 2 + (int)((s * 7) % 15), 0.3, 1000u + s);
+    for (s = 0; s < 3000; s++)
+        check_mesh(3 + (int)(s % 20), 2 + (int)((s * 7) % 15), 0.2, 1000u + s);
 }
 
 void test_watertight_fan_each_pixel_once(void)
@@ -289,7 +307,7 @@ void test_watertight_fan_each_pixel_once(void)
     fxl_target_t t;
     fxl_draw_t d;
     const int n = 37;
-    int i, x, y, total = 0;
+    int i, x, y;
     double cx = 31.3, cy = 23.7, r = 60.0;
     probe_target(&t, buf, W, H);
     flat_draw(&d);
@@ -309,7 +327,6 @@ void test_watertight_fan_each_pixel_once(void)
                 snprintf(msg, sizeof msg, "pixel (%d,%d) drawn %d times", x, y, probe_count[y * W + x]);
                 TEST_FAIL_MESSAGE(msg);
             }
-    TEST_ASSERT_EQUAL_INT(0, total);
 }
 
 /* ---- clipping, bands, canaries ---------------------------------------------- */
@@ -572,6 +589,22 @@ static int cube_scene(tri_t *out)
     return n;
 }
 
+static int rolled_floor_scene(tri_t *out, double roll_deg)
+{
+    double P[4][3] = {{-40, -0.577, -1}, {40, -0.577, -1}, {40, -0.577, -50}, {-40, -0.577, -50}};
+    static const double uv[4][2] = {{-20, -0.5}, {20, -0.5}, {20, -25}, {-20, -25}};
+    double c = cos(roll_deg * FXL_TEST_PI / 180), sn = sin(roll_deg * FXL_TEST_PI / 180);
+    fxl_vertex_t q[4];
+    int i;
+    for (i = 0; i < 4; i++) {
+        double x = P[i][0] * c - P[i][1] * sn, y = P[i][0] * sn + P[i][1] * c;
+        q[i] = test_project(x, y, P[i][2], uv[i][0], uv[i][1]);
+    }
+    out[0].v[0] = q[0]; out[0].v[1] = q[1]; out[0].v[2] = q[2];
+    out[1].v[0] = q[0]; out[1].v[1] = q[2]; out[1].v[2] = q[3];
+    return 2;
+}
+
 /* Max |(u,v) - exact| in level-0 texels over every pixel that d, with its
  * tw x tw texture, draws of the triangles, seen through probe (probe_seg
  * or a probe that records more and calls it). */
@@ -710,20 +743,50 @@ static double subdiv_bound(const tri_t *tr, int L, int tw)
 
 void test_subdivided_modes_within_derived_bound_and_affine_is_worse(void)
 {
+    /* The floor's spans are each at one depth (q' = 0: the bound is the
+     * exact-mode tolerance plus truncation); the cube's and those of a quad
+     * over the target whose depth doubles along its diagonal cross depth, so
+     * there the L^2 term is what is tested.
+     * Its tightness is checked too: on the triangle where the bound's L^2
+     * term is largest at L = 16 the error must reach a quarter of it (a
+     * bound that grew loose would hide a subdivision that went wrong; at
+     * L = 64 the cube's spans are shorter than a segment). */
     tri_t tris[12];
-    int n, k, L;
+    int n, k, L, sc;
     char msg[160];
     double exact_e, affine_e;
-    n = floor_scene(tris);
-    exact_e = scene_max_error(tris, n, FXL_PERSP_EXACT, 64);
-    for (L = 4; L <= 64; L *= 2) {
-        for (k = 0; k < n; k++) {
-            double e = scene_max_error(&tris[k], 1, L, 64), b = subdiv_bound(&tris[k], L, 64);
-            snprintf(msg, sizeof msg, "floor tri %d subdiv%d: max error %.4f texels, bound %.4f", k, L, e, b);
+    for (sc = 0; sc < 3; sc++) {
+        static const char *const names[3] = {"floor", "cube", "slanted quad"};
+        if (sc == 2) {
+            const fxl_vertex_t a = vtx(0.25, 0.5, 0.5, 0, 0), b = vtx(319.75, 0.5, 0.75, 4, 0);
+            const fxl_vertex_t c = vtx(319.75, 239.5, 1, 4, 4), d = vtx(0.25, 239.5, 0.75, 0, 4);
+            tris[0].v[0] = a; tris[0].v[1] = b; tris[0].v[2] = c;
+            tris[1].v[0] = a; tris[1].v[1] = c; tris[1].v[2] = d;
+            n = 2;
+        } else {
+            n = sc == 0 ? floor_scene(tris) : cube_scene(tris);
+        }
+        for (L = 4; L <= 64; L *= 2) {
+            double worst_b = 0, worst_e = 0;
+            for (k = 0; k < n; k++) {
+                double e = scene_max_error(&tris[k], 1, L, 64), b = subdiv_bound(&tris[k], L, 64);
+                snprintf(msg, sizeof msg, "%s tri %d subdiv%d: max error %.4f texels, bound %.4f", names[sc], k, L, e,
+                         b);
+                TEST_ASSERT_TRUE_MESSAGE(e <= b, msg);
+                if (b > worst_b && e > 0) {
+                    worst_b = b;
+                    worst_e = e;
+                }
+            }
+            snprintf(msg, sizeof msg, "%s subdiv%d: largest bound %.4f texels, that triangle's max error %.4f",
+                     names[sc], L, worst_b, worst_e);
             TEST_MESSAGE(msg);
-            TEST_ASSERT_TRUE_MESSAGE(e <= b, msg);
+            if (sc > 0 && L == 16)
+                TEST_ASSERT_TRUE_MESSAGE(worst_e >= worst_b / 4, msg);
         }
     }
+    n = floor_scene(tris);
+    exact_e = scene_max_error(tris, n, FXL_PERSP_EXACT, 64);
     /* Affine is exact to its own (screen-linear) definition ... */
     affine_e = scene_max_error_ref(tris, n, FXL_PERSP_AFFINE, 64, 1);
     snprintf(msg, sizeof msg, "floor affine vs screen-linear reference: %.6f texels", affine_e);
@@ -749,22 +812,6 @@ static uint32_t probe_seg_len(const fxl__tri_t *tri, const fxl__seg_t *s)
         probe_seg_len_max = tri->seg_log2;
     probe_affine = tri->affine;
     return probe_seg(tri, s);
-}
-
-static int rolled_floor_scene(tri_t *out, double roll_deg)
-{
-    double P[4][3] = {{-40, -0.577, -1}, {40, -0.577, -1}, {40, -0.577, -50}, {-40, -0.577, -50}};
-    static const double uv[4][2] = {{-20, -0.5}, {20, -0.5}, {20, -25}, {-20, -25}};
-    double c = cos(roll_deg * FXL_TEST_PI / 180), sn = sin(roll_deg * FXL_TEST_PI / 180);
-    fxl_vertex_t q[4];
-    int i;
-    for (i = 0; i < 4; i++) {
-        double x = P[i][0] * c - P[i][1] * sn, y = P[i][0] * sn + P[i][1] * c;
-        q[i] = test_project(x, y, P[i][2], uv[i][0], uv[i][1]);
-    }
-    out[0].v[0] = q[0]; out[0].v[1] = q[1]; out[0].v[2] = q[2];
-    out[1].v[0] = q[0]; out[1].v[1] = q[2]; out[1].v[2] = q[3];
-    return 2;
 }
 
 /* Writes the texel index a point-sampled repeat lookup of a 256 x 256
@@ -1884,7 +1931,7 @@ void test_draw_api_errors(void)
     make_texture(&tex);
     tex.log2_w = 30;
     d.texture = &tex;
-    TEST_ASSERT_NOT_EQUAL(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_draw_triangle(&t, &d, v, NULL));
     d.texture = base;
     fxl_draw_defaults(&d);
     d.texture = base;
