@@ -47,11 +47,21 @@ endfunction()
 
 # fxl_freestanding(<target>)
 # The core and the port layer use no libc. In a bare-metal build say so to
-# the compiler, so it cannot assume a hosted library behind builtins.
+# the compiler, so it cannot assume a hosted library behind builtins. They
+# use no floating point either, but with the hard-float ABI (Cortex-M4/M7)
+# GCC at -O2 parks integers in FPU registers (67 VMOVs in the core): code
+# that faults where the FPU is not enabled and makes every interrupt and
+# task switch during a draw stack the FPU context. -mgeneral-regs-only
+# keeps the core on the integer registers, as bench/'s soft-ABI build is.
+include(CheckCCompilerFlag)
 function(fxl_freestanding target)
   get_target_property(type ${target} TYPE)
   if(NOT type STREQUAL "INTERFACE_LIBRARY" AND CMAKE_SYSTEM_NAME STREQUAL "Generic")
     target_compile_options(${target} PRIVATE -ffreestanding)
+    check_c_compiler_flag(-mgeneral-regs-only FXL_HAVE_GENERAL_REGS_ONLY)
+    if(FXL_HAVE_GENERAL_REGS_ONLY)
+      target_compile_options(${target} PRIVATE -mgeneral-regs-only)
+    endif()
   endif()
 endfunction()
 
