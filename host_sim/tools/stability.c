@@ -35,7 +35,11 @@
  * Inputs beyond q16 (|x| >= 32768 px) are clipped in double to the guard
  * band +-GUARD px first (Sutherland-Hodgman in screen space; 1/w, u/w, v/w
  * are affine there, so the clipped attributes are exact) - the core itself
- * cannot represent them.
+ * cannot represent them. The eyeplane and screen sweeps also send the same
+ * geometry, in view space, through fixel's own fixed-point front end
+ * (variants front_end*: near plane, guard-band clip and projection of
+ * fxl_pipeline_emit, then the core), measured against the intended
+ * triangle in front of the near plane.
  */
 #include <errno.h>
 #include <math.h>
@@ -46,6 +50,7 @@
 #include <sys/stat.h>
 
 #include "fixel/fixel.h"
+#include "fixel/pipeline.h"
 #include "reference.h"
 #include "../../src/raster_int.h"
 
@@ -246,6 +251,11 @@ static void truth_uv(const truth_t *tr, long double x, long double y, long doubl
     *v = (tr->vq.a + tr->vq.b * x + tr->vq.c * y) / q;
 }
 
+static long double truth_q(const truth_t *tr, long double x, long double y)
+{
+    return tr->q.a + tr->q.b * x + tr->q.c * y;
+}
+
 static int truth_inside(const truth_t *tr, long double x, long double y)
 {
     int k;
@@ -320,19 +330,18 @@ static void check_canaries(const char *what)
 
 /* Draw the intended triangle t (already in q16 range unless clip != 0) with
  * `draw`; measure against the truth. */
+static result_t measure_tris(const fxl_vertex_t fv[][3], int ntri, const dvert t[3], long double q_limit,
+                             fxl_draw_t draw, const fxl_texture_t *tex, int clip, const char *what);
+
 static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *tex, int clip, const char *what)
 {
     dvert tris[MAXPOLY][3];
     fxl_vertex_t fv[MAXPOLY][3];
     int ntri, k, i;
-    long n = 0;
-    result_t r;
-    truth_t tr;
-    fxl_target_t tg;
     long double maxq = 0;
     dvert tt[3];
+    int clipped = 0;
 
-    memset(&r, 0, sizeof r);
     if (clip) {
         /* Vertices that fit q16 would be snapped by the core anyway; put
          * them on the grid so the clipped case shows only what clipping
@@ -352,7 +361,7 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
         } else {
             ntri = guard_clip(t, tris, guard);
         }
-        r.clipped = clip;
+        clipped = clip;
     } else {
         memcpy(tris[0], t, sizeof tris[0]);
         ntri = 1;
@@ -365,8 +374,6 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
     for (k = 0; k < ntri; k++)
         for (i = 0; i < 3; i++)
             fv[k][i] = to_vertex(&tris[k][i], 1.0L / maxq);
-    r.submitted = ntri;
-    draw.texture = tex;
     if (!clip) {
         /* In range: the intended triangle is exactly what the core was
          * given (snapped position, quantised 1/w, u, v), so the error is the
@@ -380,6 +387,27 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
         }
         t = tt;
     }
+    return measure_tris((const fxl_vertex_t(*)[3])fv, ntri, t, 0, draw, tex, clipped, what);
+}
+
+/* Draw the screen-space triangles fv[0..ntri) (for real, with canaries, and
+ * through the probe) and measure them against the intended triangle t: its
+ * coverage (intersected with q <= q_limit, the part in front of a near
+ * plane, when q_limit > 0) and its perspective mapping. clip: 0 when fv is
+ * t itself, else how t was clipped (recorded in the CSV). */
+static result_t measure_tris(const fxl_vertex_t fv[][3], int ntri, const dvert t[3], long double q_limit,
+                             fxl_draw_t draw, const fxl_texture_t *tex, int clip, const char *what)
+{
+    int k, i;
+    long n = 0;
+    result_t r;
+    truth_t tr;
+    fxl_target_t tg;
+
+    memset(&r, 0, sizeof r);
+    r.clipped = clip;
+    r.submitted = ntri;
+    draw.texture = tex;
 
     /* real draw with canaries */
     for (i = 0; i < CAN; i++) {
@@ -421,6 +449,7 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
     }
     check_canaries(what);
 
+    memset(&tr, 0, sizeof tr);
     truth_init(&tr, t);   /* every method against the perspective truth */
     for (i = 0; i < TW * TH; i++) {
         long double cx = (i % TW) + 0.5L, cy = (i / TW) + 0.5L;
@@ -429,7 +458,8 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
         /* (direct inputs: the intended triangle is the submitted one, whose
          * exact coverage is the line above; the open/closed edge rule only
          * matters for the clipped path, where ties are measure-zero) */
-        if (clip && tr.valid && (truth_inside(&tr, cx, cy) != (cnt[i] != 0)))
+        if (clip && tr.valid &&
+            ((truth_inside(&tr, cx, cy) && (q_limit <= 0 || truth_q(&tr, cx, cy) <= q_limit)) != (cnt[i] != 0)))
             r.cov_intended++;
         if (!cnt[i] || !tex || !tr.valid)
             continue;
@@ -458,6 +488,110 @@ static result_t measure(const dvert t[3], fxl_draw_t draw, const fxl_texture_t *
         r.p99_err = errbuf[(size_t)ceil(0.99 * (double)n) - 1];
     }
     return r;
+}
+
+/* ---- through fixel's own front end --------------------------------------------- */
+
+/* The triangles fxl_pipeline_emit hands over (a clipped triangle is a fan of
+ * at most FXL_CLIP_MAX_VERTS - 2). */
+typedef struct fe_out {
+    fxl_vertex_t tri[MAXPOLY][3];
+    int n;
+} fe_out_t;
+
+static fxl_status_t fe_collect(void *user, const fxl_vertex_t tri[3])
+{
+    fe_out_t *o = (fe_out_t *)user;
+    if (o->n >= MAXPOLY)
+        return FXL_ERR_NOMEM;
+    memcpy(o->tri[o->n++], tri, sizeof o->tri[0]);
+    return FXL_OK;
+}
+
+#define FE_FOVY 10923    /* fxl_angle_t: 60 degrees (65536 / 6, rounded) */
+
+/* A view-space triangle (q16, camera at the origin looking down -z) drawn
+ * the way a firmware draws it: fxl_pipeline_emit (near plane, guard-band
+ * clip, projection into the TW x TH viewport, all fixed point) into
+ * fxl_draw_triangle. The intended triangle is the same q16 positions
+ * projected in long double with the pipeline's own q32 matrix and viewport,
+ * so the error is what the front end's clipping and quantisation add to the
+ * method's; coverage is compared with the part in front of the near plane. */
+static result_t measure_front(const fxl_vec3_t pos[3], const fxl_texcoord_t uv[3], fxl_q16_t near_q16,
+                              fxl_draw_t draw, const fxl_texture_t *tex, const char *what)
+{
+    static const uint16_t idx[3] = {0, 1, 2};
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_mesh_t m;
+    fxl_status_t st;
+    fe_out_t o;
+    dvert t[3];
+    result_t r;
+    int i, j;
+
+    memset(&r, 0, sizeof r);
+    r.clipped = 3;
+    if ((st = fxl_pipeline_init(&p, TW, TH)) != FXL_OK ||
+        (st = fxl_pipeline_set_perspective(&p, FE_FOVY, 1 << 16, near_q16, 0)) != FXL_OK ||
+        (st = fxl_pipeline_prepare(&p, &xf)) != FXL_OK) {
+        r.status = st;
+        return r;
+    }
+    p.cull = FXL_CULL_NONE;
+    memset(&m, 0, sizeof m);
+    m.pos = pos;
+    m.uv = uv;
+    m.vert_count = 3;
+    m.idx = idx;
+    m.tri_count = 1;
+    o.n = 0;
+    if ((st = fxl_pipeline_emit(&p, &m, fe_collect, &o, NULL)) != FXL_OK) {
+        r.status = st;
+        return r;
+    }
+    for (i = 0; i < 3; i++) {
+        const long double P[4] = {pos[i].x / 65536.0L, pos[i].y / 65536.0L, pos[i].z / 65536.0L, 1};
+        long double c[4] = {0, 0, 0, 0};
+        int row;
+        for (row = 0; row < 4; row++)
+            for (j = 0; j < 4; j++)
+                c[row] += (long double)xf.mvp[row][j] / 4294967296.0L * P[j];
+        fxl_clipvert_t cv;
+        fxl_vertex_t sv;
+        t[i].x = xf.cx_q16 / 65536.0L + c[0] / c[3] * (xf.hw_q16 / 65536.0L);
+        t[i].y = xf.cy_q16 / 65536.0L - c[1] / c[3] * (xf.hh_q16 / 65536.0L);
+        t[i].q = 1.0L / c[3];
+        /* A vertex the front end projects itself (in front of the near
+         * plane, inside the guard band) reaches the core snapped to the
+         * 1/16-px grid: put the intended one there too, as the clipped
+         * path of measure() does, so that what is measured is the
+         * clipping and 1/w's precision, not the grid. */
+        if (fxl_xform_clip(&xf, &pos[i], &cv) == FXL_OK && fxl_xform_project(&xf, &cv, &sv) == FXL_OK) {
+            t[i].x = (long double)ref_snap(sv.x) / (1 << FXL_SUBPIXEL_BITS);
+            t[i].y = (long double)ref_snap(sv.y) / (1 << FXL_SUBPIXEL_BITS);
+        }
+        t[i].u = uv[i].u / 65536.0L;
+        t[i].v = uv[i].v / 65536.0L;
+    }
+    return measure_tris((const fxl_vertex_t(*)[3])o.tri, o.n, t, 65536.0L / near_q16, draw, tex, 3, what);
+}
+
+static fxl_vec3_t vec3_q16(double x, double y, double z)
+{
+    fxl_vec3_t v;
+    v.x = (fxl_q16_t)lround(x * 65536.0);
+    v.y = (fxl_q16_t)lround(y * 65536.0);
+    v.z = (fxl_q16_t)lround(z * 65536.0);
+    return v;
+}
+
+static fxl_texcoord_t uv_q16(double u, double v)
+{
+    fxl_texcoord_t t;
+    t.u = (fxl_q16_t)lround(u * 65536.0);
+    t.v = (fxl_q16_t)lround(v * 65536.0);
+    return t;
 }
 
 /* ---- output ----------------------------------------------------------------------- */
@@ -515,11 +649,13 @@ static void emit(sweep_out_t *s, const char *variant, double param, int m, const
     fprintf(csv_all, line, s->name, variant, param, methods[m].name, fxl_status_name(r->status), r->clipped,
             r->submitted, r->pixels, r->cov_mismatch, r->cov_intended, r->max_err, r->p99_err, r->max_level);
     /* Side variants (a tight guard band, the unclipped counter-example)
-     * are in the CSV but do not define the method's breaking point. */
+     * are in the CSV but do not define the method's breaking point; nor do
+     * the front end's (a different path to the core), whose coverage and
+     * status must still be right. */
     if (!strcmp(variant, "saturated_no_clip") || !strcmp(variant, "clipped_guard1024"))
         return;
     for (j = 0; j < 3; j++)
-        if (!s->have[m][j] && r->max_err > lim[j]) {
+        if (strncmp(variant, "front_end", 9) != 0 && !s->have[m][j] && r->max_err > lim[j]) {
             s->have[m][j] = 1;
             s->brk[m][j] = param;
         }
@@ -572,6 +708,24 @@ static void run_all_methods(sweep_out_t *s, const char *variant, double param, c
         snprintf(what, sizeof what, "%s %s %g %s", s->name, variant, param, methods[m].name);
         r[m] = measure(t, d, tex, clip, what);
         emit(s, variant, param, m, &r[m]);
+    }
+}
+
+/* run_all_methods through the front end (measure_front) */
+static void run_all_methods_front(sweep_out_t *s, const char *variant, double param, const fxl_vec3_t pos[3],
+                                  const fxl_texcoord_t uv[3], fxl_q16_t near_q16, const fxl_texture_t *tex)
+{
+    int m;
+    char what[128];
+    for (m = 0; m < NMETH; m++) {
+        fxl_draw_t d;
+        result_t r;
+        fxl_draw_defaults(&d);
+        d.persp = methods[m].persp;
+        d.mip = FXL_MIP_NONE;
+        snprintf(what, sizeof what, "%s %s %g %s", s->name, variant, param, methods[m].name);
+        r = measure_front(pos, uv, near_q16, d, tex, what);
+        emit(s, variant, param, m, &r);
     }
 }
 
@@ -711,6 +865,24 @@ static void sweep_eyeplane(void)
             guard = GUARD;
             run_all_methods(&s, "saturated_no_clip", 2.0 / e, t, &tex, 2, r);
         }
+        {
+            /* The same triangle through fixel's front end, 4096 times
+             * larger so that q16 positions resolve the third vertex's depth
+             * (4096 e >= 8e-4). With a near plane at w = 0.1 (scaled) the
+             * front end cuts off what is nearer: the part of the triangle
+             * left must be drawn right. With the near plane just in front
+             * of the third vertex nothing is near-clipped and the guard
+             * band alone bounds the coordinates, but 1/w is u0.32 scaled to
+             * near: at a w ratio of 10^7 the far vertices keep ~9 bits. */
+            const double S = 4096;
+            const fxl_vec3_t pos[3] = {vec3_q16(-0.9 * S, -0.7 * S, -2.0 * S), vec3_q16(0.9 * S, -0.6 * S, -2.0 * S),
+                                       vec3_q16(0.3 * S, 0.25 * S, -e * S)};
+            const fxl_texcoord_t uv[3] = {uv_q16(0, 0), uv_q16(4, 0), uv_q16(2, 4)};
+            const long near_below = (long)(0.9 * -pos[2].z);
+            run_all_methods_front(&s, "front_end_near0.1", 2.0 / e, pos, uv, (fxl_q16_t)lround(0.1 * S * 65536), &tex);
+            run_all_methods_front(&s, "front_end_no_near_clip", 2.0 / e, pos, uv,
+                                  (fxl_q16_t)(near_below > 0 ? near_below : 1), &tex);
+        }
     }
     sweep_end(&s, "w_ratio");
 }
@@ -744,6 +916,23 @@ static void sweep_screen(void)
         }
         run_all_methods(&s, clip ? "clipped" : "direct", S, t, &tex, clip, r);
         dat_row(&s, S, r);
+        {
+            /* The same triangle through fixel's front end: view-space
+             * vertices at w = 1, 2, 4 that project onto t (the front end's
+             * own matrix gives the intended triangle, within 1e-5 of t), its
+             * guard-band clip in fixed point, then the core. */
+            const double f = 1.0 / tan(30.0 * PI / 180.0);
+            fxl_vec3_t pos[3];
+            fxl_texcoord_t uv[3];
+            int i;
+            for (i = 0; i < 3; i++) {
+                const double w = 1.0 / (double)t[i].q;
+                pos[i] = vec3_q16(((double)t[i].x - TW * 0.5) / (TW * 0.5) * w / f,
+                                  -((double)t[i].y - TH * 0.5) / (TH * 0.5) * w / f, -w);
+                uv[i] = uv_q16((double)t[i].u, (double)t[i].v);
+            }
+            run_all_methods_front(&s, "front_end", S, pos, uv, 1 << 15, &tex);
+        }
     }
     sweep_end(&s, "extent");
     {
