@@ -102,5 +102,8 @@ cppcheck:
 	    -I include -I src -I port src port || true; \
 	fi
 
+# Every build tree and log the Makefile and the scripts make (build-*/ and
+# build-*.log: bench, stability, configuration tests, CI's extra build types).
 clean:
 	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(foreach cpu,$(FW_CPUS),build-fw-$(patsubst cortex-%,%,$(cpu))) $(GALLERY)
+	rm -rf build-*/ build-*.log
