@@ -77,7 +77,7 @@ firmware: deps-firmware
 	    exit 1; \
 	  fi; \
 	  $(ARM_PREFIX)size -t $$archives; \
-	  NM=$(ARM_PREFIX)nm scripts/check_freestanding.sh $$archives; \
+	  NM=$(ARM_PREFIX)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives; \
 	done
 
 bench: build

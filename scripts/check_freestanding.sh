@@ -14,7 +14,9 @@
 #   __clzsi2 __ctzsi2 ...   libgcc bit-count helpers for cores without CLZ
 # The last two groups are compiler run-time, not libc: a plain switch
 # statement or __builtin_clz on Cortex-M0+ needs them. Set
-# FXL_FREESTANDING_STRICT=1 to allow only memcpy/memset/memmove/__aeabi_*.
+# FXL_FREESTANDING_STRICT=1 to allow only memcpy/memset/memmove/__aeabi_*
+# (issue 2's rule; `make firmware` does: fixel's own archives need none of
+# the last two groups, which this default still lets other code use).
 set -euo pipefail
 
 NM=${NM:-arm-none-eabi-nm}

@@ -25,16 +25,29 @@ static int64_t guard_w(const fxl_xform_t *xf, int64_t w)
     return fxl__mul_shr(w, (uint32_t)xf->guard_q16, 16, NULL);
 }
 
+/* The clip planes are told apart by comparisons, not a switch: on Thumb-1
+ * (Cortex-M0+) GCC compiles a switch of this size at -Os into a table and
+ * a call of libgcc's __gnu_thumb1_case_uqi, outside what a freestanding
+ * core may reference (scripts/check_freestanding.sh, strict). */
+static int plane_is_x(int plane)
+{
+    return plane == PL_XP || plane == PL_XN;
+}
+
+static int plane_is_positive(int plane)   /* |x| <= G w or |y| <= G w from above */
+{
+    return plane == PL_XP || plane == PL_YP;
+}
+
 static int64_t plane_dist(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *v)
 {
-    switch (plane) {
-    case PL_NEAR: return v->w - xf->near_q32;
-    case PL_FAR: return xf->far_q32 - v->w;
-    case PL_XP: return guard_w(xf, v->w) - v->x;
-    case PL_XN: return guard_w(xf, v->w) + v->x;
-    case PL_YP: return guard_w(xf, v->w) - v->y;
-    default: return guard_w(xf, v->w) + v->y;
-    }
+    int64_t c;
+    if (plane == PL_NEAR)
+        return v->w - xf->near_q32;
+    if (plane == PL_FAR)
+        return xf->far_q32 - v->w;
+    c = plane_is_x(plane) ? v->x : v->y;
+    return plane_is_positive(plane) ? guard_w(xf, v->w) - c : guard_w(xf, v->w) + c;
 }
 
 static int64_t lerp64(int64_t a, int64_t b, uint32_t t_q31)
@@ -69,13 +82,17 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
     res->r = lerp32(in->r, out->r, t);
     res->g = lerp32(in->g, out->g, t);
     res->b = lerp32(in->b, out->b, t);
-    switch (plane) {
-    case PL_NEAR: res->w = xf->near_q32; break;
-    case PL_FAR: res->w = xf->far_q32; break;
-    case PL_XP: res->x = guard_w(xf, res->w); break;
-    case PL_XN: res->x = -guard_w(xf, res->w); break;
-    case PL_YP: res->y = guard_w(xf, res->w); break;
-    default: res->y = -guard_w(xf, res->w); break;
+    /* the intersection exactly on the plane */
+    if (plane == PL_NEAR) {
+        res->w = xf->near_q32;
+    } else if (plane == PL_FAR) {
+        res->w = xf->far_q32;
+    } else {
+        const int64_t g = plane_is_positive(plane) ? guard_w(xf, res->w) : -guard_w(xf, res->w);
+        if (plane_is_x(plane))
+            res->x = g;
+        else
+            res->y = g;
     }
     if (res->w < xf->near_q32) res->w = xf->near_q32; /* rounding never takes it behind near */
 }

@@ -76,6 +76,21 @@ static void fix_seam_and_poles(int64_t u[3], const int pole[3])
         if (pole[i]) u[i] = fxl__sdiv64(sum >= 0 ? sum + count / 2 : sum - count / 2, count);
 }
 
+/* Cube map faces (FXL_CUBE_POS_X .. NEG_Z): the position's components
+ * that give the major axis ma and the face coordinates sc, tc, as
+ * {axis, sign} (the OpenGL cube-map table). A table rather than a switch:
+ * on Thumb-1 (Cortex-M0+) GCC compiles six cases at -Os into a jump table
+ * and a call of libgcc's __gnu_thumb1_case_shi, outside what a
+ * freestanding core may reference (scripts/check_freestanding.sh, strict). */
+static const int8_t cube_face_map[6][3][2] = {
+    {{0, 1}, {2, -1}, {1, -1}},  /* +x: ma = x,  sc = -z, tc = -y */
+    {{0, -1}, {2, 1}, {1, -1}},  /* -x: ma = -x, sc = z,  tc = -y */
+    {{1, 1}, {0, 1}, {2, 1}},    /* +y: ma = y,  sc = x,  tc = z */
+    {{1, -1}, {0, 1}, {2, -1}},  /* -y: ma = -y, sc = x,  tc = -z */
+    {{2, 1}, {0, 1}, {1, -1}},   /* +z: ma = z,  sc = x,  tc = -y */
+    {{2, -1}, {0, -1}, {1, -1}}, /* -z: ma = -z, sc = -x, tc = -y */
+};
+
 /* Cube map: face from the summed positions, (s, t) on that face. */
 static void cube(const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3])
 {
@@ -86,15 +101,9 @@ static void cube(const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3])
     else if (mag(sy) >= mag(sz)) face = sy >= 0 ? FXL_CUBE_POS_Y : FXL_CUBE_NEG_Y;
     else face = sz >= 0 ? FXL_CUBE_POS_Z : FXL_CUBE_NEG_Z;
     for (i = 0; i < 3; i++) {
-        int64_t x = pos[i].x, y = pos[i].y, z = pos[i].z, ma, sc, tc, s, t;
-        switch (face) {
-        case FXL_CUBE_POS_X: ma = x;  sc = -z; tc = -y; break;
-        case FXL_CUBE_NEG_X: ma = -x; sc = z;  tc = -y; break;
-        case FXL_CUBE_POS_Y: ma = y;  sc = x;  tc = z;  break;
-        case FXL_CUBE_NEG_Y: ma = -y; sc = x;  tc = -z; break;
-        case FXL_CUBE_POS_Z: ma = z;  sc = x;  tc = -y; break;
-        default:             ma = -z; sc = -x; tc = -y; break;
-        }
+        const int64_t c[3] = {pos[i].x, pos[i].y, pos[i].z};
+        const int8_t(*const f)[2] = cube_face_map[face];
+        int64_t ma = c[f[0][0]] * f[0][1], sc = c[f[1][0]] * f[1][1], tc = c[f[2][0]] * f[2][1], s, t;
         if (ma < 1) ma = 1; /* a vertex behind the face plane: clamped below */
         /* s = (sc / ma + 1) / 2 in q16; |sc| < 2^31 so sc * 2^15 < 2^46. */
         s = fxl__sdiv64(sc * 32768 + (sc >= 0 ? ma / 2 : -(ma / 2)), ma) + 32768;
@@ -114,25 +123,27 @@ static fxl_q16_t scale_offset(int64_t raw, fxl_q16_t scale, fxl_q16_t offset)
     return fxl__to_i32(r, NULL);
 }
 
+/* The modes are told apart by if-chains: on Thumb-1 (Cortex-M0+) GCC
+ * compiles a switch of four or more cases at -Os into a table and a call of
+ * libgcc's __gnu_thumb1_case_uqi, outside what a freestanding core may
+ * reference (scripts/check_freestanding.sh, strict). */
+static int texgen_polar(const fxl_texgen_t *tg)
+{
+    return tg->mode == FXL_TEXGEN_CYLINDRICAL || tg->mode == FXL_TEXGEN_SPHERICAL;
+}
+
 void fxl__texgen_vertex(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
 {
     out[0] = out[1] = out[2] = 0;
-    switch (tg->mode) {
-    case FXL_TEXGEN_PLANAR:
+    if (tg->mode == FXL_TEXGEN_PLANAR) {
         out[0] = tg->plane == FXL_PLANE_YZ ? pos->y : pos->x;
         out[1] = tg->plane == FXL_PLANE_XY ? pos->y : pos->z;
-        break;
-    case FXL_TEXGEN_CYLINDRICAL:
-    case FXL_TEXGEN_SPHERICAL:
+    } else if (texgen_polar(tg)) {
         polar(tg, pos, out);
-        break;
-    case FXL_TEXGEN_CUBE: /* the face is chosen per triangle */
+    } else if (tg->mode == FXL_TEXGEN_CUBE) {   /* the face is chosen per triangle */
         out[0] = pos->x;
         out[1] = pos->y;
         out[2] = pos->z;
-        break;
-    default:
-        break;
     }
 }
 
@@ -146,22 +157,16 @@ void fxl__texgen_finish(const fxl_texgen_t *tg, const int32_t vt[3][3], fxl_texc
         v[i] = vt[i][1];
         pole[i] = vt[i][2] != 0;
     }
-    switch (tg->mode) {
-    case FXL_TEXGEN_CYLINDRICAL:
-    case FXL_TEXGEN_SPHERICAL:
+    if (texgen_polar(tg)) {
         fix_seam_and_poles(u, pole);
-        break;
-    case FXL_TEXGEN_CUBE:
+    } else if (tg->mode == FXL_TEXGEN_CUBE) {
         for (i = 0; i < 3; i++) {
             pos[i].x = vt[i][0];
             pos[i].y = vt[i][1];
             pos[i].z = vt[i][2];
         }
         cube(pos, u, v);
-        break;
-    default: /* planar: per vertex already; none: zeros */
-        break;
-    }
+    }   /* planar: per vertex already; none: zeros */
     for (i = 0; i < 3; i++) {
         out[i].u = scale_offset(u[i], tg->scale_u, tg->offset_u);
         out[i].v = scale_offset(v[i], tg->scale_v, tg->offset_v);
