@@ -1,7 +1,8 @@
 /* test_determinism.c - the same input renders the same bits.
  *
  * Renders the determinism list (determinism/det_entries.h: every gallery
- * scene x 9 draw variants at 320x240) and checks, inside this build:
+ * scene x 9 draw variants, then every pipeline scene x 4 front-end
+ * variants, at 320x240) and checks, inside this build:
  * - a second render of the same frame is bit-identical (no dependence on
  *   uninitialised memory, addresses or earlier draws);
  * - rendering the frame as 10 bands of 24 rows (targets with origin_y = 24k,
@@ -9,11 +10,16 @@
  * - fxl_host_crc_target equals the CRC of the raw frame bytes.
  * It writes the CRC list to $FXL_TEST_OUTPUT_DIR/determinism_crcs.txt in the
  * format of determinism/det_main.c; host_sim/scripts/determinism.sh compares
- * it with gcc -O0 / -O2, clang -O2 and Cortex-M4 (qemu) builds of the core.
+ * it with gcc -O0 / -O2 / -Os, clang -O2 and Cortex-M4 / M0+ (qemu) builds
+ * of the core. The front-end frames here come from the host's own scenes
+ * (pscene_build, pscene_draw, scene_clear), det_main's from the fixed-point
+ * data gen_data.c wrote: equal lists mean the two routes agree.
  * A build that leaves features out (fixel/config.h) draws without a depth
  * buffer when it has no depth (as det_main does there: its depth calls are
- * refused), and a variant that needs a left-out feature must be refused
- * with FXL_ERR_UNSUPPORTED; its line carries that status.
+ * refused), except a front-end scene whose image needs the depth test
+ * (anyscene_needs_depth: p_cubemap), whose buffer the core refuses as in the
+ * gallery; a variant that needs a left-out feature must be refused with
+ * FXL_ERR_UNSUPPORTED; its line carries that status.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,6 +71,72 @@ static fxl_status_t render(const scene_t *s, const fxl_texture_t *tex, const det
     return FXL_OK;
 }
 
+/* A front-end frame of det_entries.h into rows [y0, y0 + h) of buf, the
+ * way the gallery draws it: scene_clear's sky (or the band renderer's flat
+ * clear), then pscene_draw (with its vertex cache) or, for a variant
+ * without the cache, every part through fxl_mesh_draw with its own
+ * pipeline and pscene_part_draw's state. */
+static fxl_status_t render_pipe(pscene_t *p, const det_pvariant_t *pv, uint16_t *buf, int32_t y0, int32_t h)
+{
+    fxl_target_t tg;
+    fxl_draw_t d;
+    fxl_status_t st;
+    int i;
+
+    det_draw_settings(&pv->v, &d);
+    st = fxl_target_init(&tg, buf + (size_t)y0 * DET_W, DET_W, h, DET_W, drawable_rgb565());
+    if (st == FXL_OK)
+        st = fxl_target_set_origin(&tg, 0, y0);
+    if (st == FXL_OK && (FXL_HAVE_DEPTH || anyscene_needs_depth(p->name)))
+        st = fxl_target_set_depth(&tg, depth);
+    if (st != FXL_OK)
+        return st;
+    if (pv->clear == DET_CLEAR_SKY)
+        scene_clear(&tg, DET_H);
+    else
+        scene_clear_flat(&tg, PANEL_CLEAR_RGB565);
+    if (pv->cache) {
+        st = pscene_draw(p, &d, &tg, NULL);
+    } else {
+        for (i = 0; i < p->parts && st == FXL_OK; i++) {
+            fxl_draw_t pd;
+            fxl_pipeline_t pipe = p->part[i].pipe;
+            pscene_part_draw(p, i, &d, &pd);
+            st = fxl_mesh_draw(&pipe, &tg, &pd, &p->part[i].mesh, NULL);
+        }
+    }
+    if (st != FXL_OK)
+        return st;
+    pixels_to_native(buf + (size_t)y0 * DET_W, (size_t)h * DET_W, tg.format);
+    return FXL_OK;
+}
+
+/* The first feature a front-end frame needs and this build left out, or
+ * NULL (gallery_missing_feature's rule for the gallery's p_* images). */
+static const char *pipe_missing(const pscene_t *p, const det_pvariant_t *pv)
+{
+    fxl_draw_t d;
+    if (!FXL_HAVE_DEPTH && anyscene_needs_depth(p->name))
+        return "FXL_HAVE_DEPTH";
+    det_draw_settings(&pv->v, &d);
+    return pscene_missing_feature(p, &d, drawable_rgb565(), FXL_HAVE_DEPTH);
+}
+
+/* Repeat and band checks of one frame already drawn into `full`; fails the
+ * test naming the first pixel that differs. */
+static void check_repeat_and_bands(const char *name, const char *variant)
+{
+    char msg[200];
+    size_t i;
+    for (i = 0; i < (size_t)DET_W * DET_H; i++) {
+        if (full[i] != again[i] || full[i] != banded[i]) {
+            snprintf(msg, sizeof msg, "%s %s: pixel (%d,%d) full %04X, repeat %04X, banded %04X", name, variant,
+                     (int)(i % DET_W), (int)(i / DET_W), full[i], again[i], banded[i]);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+}
+
 static FILE *open_list(void)
 {
     const char *dir = getenv("FXL_TEST_OUTPUT_DIR");
@@ -100,7 +172,6 @@ void test_determinism_repeat_bands_and_crc_list(void)
             fxl_draw_t d;
             uint32_t crc_raw, crc_host;
             int32_t y;
-            size_t i;
             const char *missing;
 
             det_draw_settings(var, &d);
@@ -119,13 +190,7 @@ void test_determinism_repeat_bands_and_crc_list(void)
             TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, render(&s, &ht.tex, var, again, 0, DET_H), msg);
             for (y = 0; y < DET_H; y += BAND)
                 TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, render(&s, &ht.tex, var, banded, y, BAND), msg);
-            for (i = 0; i < (size_t)DET_W * DET_H; i++) {
-                if (full[i] != again[i] || full[i] != banded[i]) {
-                    snprintf(msg, sizeof msg, "%s %s: pixel (%d,%d) full %04X, repeat %04X, banded %04X", s.name,
-                             var->name, (int)(i % DET_W), (int)(i / DET_W), full[i], again[i], banded[i]);
-                    TEST_FAIL_MESSAGE(msg);
-                }
-            }
+            check_repeat_and_bands(s.name, var->name);
             crc_raw = crc32_update(0, full, sizeof full);
             fxl_target_init(&whole, full, DET_W, DET_H, DET_W, FXL_PIXFMT_RGB565);
             crc_host = fxl_host_crc_target(&whole);
@@ -136,12 +201,48 @@ void test_determinism_repeat_bands_and_crc_list(void)
         texture_free(&ht);
         scene_free(&s);
     }
+    for (si = 0; si < pscene_count(); si++) {
+        pscene_t p;
+        char msg[200];
+        TEST_ASSERT_EQUAL_INT(SCENE_OK, pscene_build(pscene_name(si), DET_W, DET_H, 0, &p));
+        for (k = 0; k < DET_NPVARIANTS; k++) {
+            const det_pvariant_t *pv = &det_pvariants[k];
+            const char *missing = pipe_missing(&p, pv);
+            fxl_target_t whole;
+            fxl_status_t st;
+            uint32_t crc_raw;
+            int32_t y;
+
+            snprintf(msg, sizeof msg, "%s %s", p.name, pv->v.name);
+            st = render_pipe(&p, pv, full, 0, DET_H);
+            if (missing != NULL) { /* never in the default configuration */
+                snprintf(msg, sizeof msg, "%s %s needs %s", p.name, pv->v.name, missing);
+                TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_UNSUPPORTED, st, msg);
+                fprintf(list, "%s %s %s %08lx\n", p.name, pv->v.name, fxl_status_name(st),
+                        (unsigned long)crc32_update(0, full, sizeof full));
+                refused++;
+                continue;
+            }
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, st, msg);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, render_pipe(&p, pv, again, 0, DET_H), msg);
+            for (y = 0; y < DET_H; y += BAND)
+                TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, render_pipe(&p, pv, banded, y, BAND), msg);
+            check_repeat_and_bands(p.name, pv->v.name);
+            crc_raw = crc32_update(0, full, sizeof full);
+            fxl_target_init(&whole, full, DET_W, DET_H, DET_W, FXL_PIXFMT_RGB565);
+            TEST_ASSERT_EQUAL_HEX32_MESSAGE(crc_raw, fxl_host_crc_target(&whole), msg);
+            fprintf(list, "%s %s %s %08lx\n", p.name, pv->v.name, fxl_status_name(st), (unsigned long)crc_raw);
+            frames++;
+        }
+        pscene_free(&p);
+    }
     fprintf(list, "done\n");
     fclose(list);
     snprintf(note, sizeof note, "%d of %d frames checked, %d need features this build lacks",
              frames, frames + refused, refused);
     TEST_MESSAGE(note);
-    /* 8 scenes x 9 variants when this was written; at least the gallery's */
+    /* 8 scenes x 9 variants + 6 pipeline scenes x 4 when this was written;
+     * at least the gallery's */
     TEST_ASSERT_GREATER_OR_EQUAL(3 * 4, frames);
 }
 

@@ -2,14 +2,18 @@
 # determinism.sh - the gallery CRCs must be bit-identical across builds.
 #
 # Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
-# variants, 320x240) with the core built by: gcc -O0, -O2 and -Os, gcc -O2 with
+# variants, then every pipeline scene, the gallery's p_*, x 4 variants drawn
+# from object-space meshes by the fixed-point front end, 320x240) with the
+# core built by: gcc -O0, -O2 and -Os, gcc -O2 with
 # the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
 # qemu-system-arm -M mps2-an386 with semihosting (when both exist), and compares each list
-# with the one tests/test_determinism wrote (when it has run). Vertex data
-# and textures are generated once on the host (determinism/gen_data.c), so
-# every build renders the same input.
+# with the one tests/test_determinism wrote (when it has run). Vertex data,
+# meshes, front-end parameters (fixed point) and textures are generated once
+# on the host (determinism/gen_data.c), so every build renders the same
+# input. The front-end frames that are gallery images must also carry the
+# gallery's golden CRC (tests/golden/gallery_crc.txt).
 #   FXL_BUILD_DIR  a configured host build with lib/libfixel_host.a (default build)
 #   FXL_DET_OUT    work folder (default $FXL_BUILD_DIR/determinism)
 # Exit 0 when all lists agree, 1 on a mismatch or a failed build/run.
@@ -33,7 +37,7 @@ cc=${CC:-gcc}
 "$cc" -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -I"$root/include" -I"$root/host_sim/lib" \
     "$root/determinism/gen_data.c" "$lib/libfixel_host.a" "$lib/libfixel.a" \
     $( [ -f "$lib/libfixel_port.a" ] && echo "$lib/libfixel_port.a" ) -lpng -lm -o "$out/gen_data"
-"$out/gen_data" "$out/det_data.h"
+"$out/gen_data" "$out/det_data.h" "$root/tests/golden/gallery_crc.txt" "$out/det_golden.txt"
 
 lists=()
 run_host() {   # name compiler flags...
@@ -123,6 +127,23 @@ for name in "${lists[@]}"; do
         status=1
     fi
 done
+# gen_data wrote the golden CRC of every front-end frame that is a gallery
+# image (det_entries.h: golden keys) as the line det_main prints for it.
+golden=$(grep -c . "$out/det_golden.txt" || true)
+matched=0
+while read -r want; do
+    if grep -Fxq "$want" "$ref"; then
+        matched=$((matched + 1))
+    else
+        echo "  golden: $want, but gcc-O2 printed: $(grep "^${want% FXL_OK *} " "$ref" || echo nothing)"
+        status=1
+    fi
+done < "$out/det_golden.txt"
+echo "== front-end frames with a gallery golden CRC: $matched of $golden equal it"
+if [ "$golden" -eq 0 ]; then
+    echo "determinism.sh: no front-end frame found in tests/golden/gallery_crc.txt" >&2
+    status=1
+fi
 if grep -v '^done$' "$ref" | grep -v ' FXL_OK ' >/dev/null; then
     echo "determinism.sh: some draws failed:" >&2
     grep -v '^done$' "$ref" | grep -v ' FXL_OK ' >&2
