@@ -1,10 +1,17 @@
-/* fuzz.c - fixel-fuzz: randomized, deterministic fuzzing of fxl_draw_triangle.
+/* fuzz.c - fixel-fuzz: randomized, deterministic fuzzing of fxl_draw_triangle
+ * and of the 3D front end (fxl_mesh_draw and the rest of fixel/pipeline.h).
  *
  *   fixel-fuzz [--cases N] [--seed S] [--start I] [--long] [--bytes B]
  *              [--replay HEX] [--stop-after K] [--quiet]
  *
  * Case i of seed S is B bytes (default 192) from a SplitMix64 stream keyed by
- * (S, i), decoded and checked by tests/fuzz/fuzz_case.h (status codes,
+ * (S, i). When bits 3..5 of its last byte are 0 (1 in 8) it is a front-end
+ * case: it is extended to max(B, FZP_BYTES = 448) bytes of the same stream,
+ * the last one set to that byte again, and decoded and checked by
+ * tests/fuzz/fuzz_pipe.h (documented statuses, canaries and guard pages
+ * around every caller buffer, clip, bands, fxl_mesh_draw against emit plus
+ * fxl_draw_indexed, vertex cache, the stages alone). Every other case is
+ * decoded and checked by tests/fuzz/fuzz_case.h as before (status codes,
  * canaries and guard pages, clip, determinism, exact coverage, stats).
  * A finding prints the seed, the case index, its bytes as hex (feed them to
  * --replay or to tests/test_fuzz_regress.c) and the decoded case. Exit 0 when
@@ -17,7 +24,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "../../tests/fuzz/fuzz_case.h"
+#include "../../tests/fuzz/fuzz_pipe.h"
 
 #define MAX_BYTES 1024
 
@@ -79,12 +86,13 @@ static void usage(void)
 int main(int argc, char **argv)
 {
     uint64_t cases = 100000, seed = 1, start = 0, i, findings = 0, stop_after = 10;
-    uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0;
+    uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0, n_pipe = 0, n_pipe_ok = 0, n_tris = 0;
     size_t nbytes = 192;
     const char *replay = NULL;
     int quiet = 0, a;
     uint8_t buf[MAX_BYTES];
     static fz_state st;
+    static fz_pstate pst;
     char msg[FZ_MSG];
     double t0;
 
@@ -114,13 +122,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "fixel-fuzz: --bytes must be 1..%d\n", MAX_BYTES);
         return 2;
     }
-    if (fz_state_init(&st) != 0) {
+    if (fz_state_init(&st) != 0 || fz_pstate_init(&pst, &st) != 0) {
         fprintf(stderr, "fixel-fuzz: out of memory\n");
         return 2;
     }
 
     if (replay) {
-        fz_case c;
         fz_outcome o;
         size_t n;
         int bad;
@@ -128,26 +135,36 @@ int main(int argc, char **argv)
             fprintf(stderr, "fixel-fuzz: --replay wants an even number of hex digits (max %d bytes)\n", MAX_BYTES);
             return 2;
         }
-        fz_prepare(buf, n, &c);
-        bad = fz_run_case(&st, &c, &o, msg);
-        printf("replay: %s (status %s, %u written, %u covered)\n", bad ? msg : "ok", fxl_status_name(o.status),
-               (unsigned)o.written, (unsigned)o.covered);
-        fz_print_case(stdout, &c);
+        bad = fz_input_run(&pst, buf, n, &o, msg, NULL, 0);
+        if (o.pipe)
+            printf("replay: %s (front end, status %s, %u written, %u screen triangles)\n", bad ? msg : "ok",
+                   fxl_status_name(o.status), (unsigned)o.written, (unsigned)o.emitted);
+        else
+            printf("replay: %s (status %s, %u written, %u covered)\n", bad ? msg : "ok", fxl_status_name(o.status),
+                   (unsigned)o.written, (unsigned)o.covered);
+        fz_input_run(&pst, buf, n, &o, msg, stdout, 1);
         return bad;
     }
 
     t0 = now_s();
     for (i = start; i < start + cases; i++) {
-        fz_case c;
         fz_outcome o;
+        size_t n = nbytes;
         case_bytes(seed, i, buf, nbytes);
-        fz_prepare(buf, nbytes, &c);
-        if (fz_run_case(&st, &c, &o, msg)) {
+        if (fz_input_is_pipe(buf, nbytes) && nbytes < FZP_BYTES) {
+            /* a front-end case needs more bytes: the same stream, longer,
+             * ending in the byte that made it one */
+            uint8_t sel = buf[nbytes - 1];
+            n = FZP_BYTES;
+            case_bytes(seed, i, buf, n);
+            buf[n - 1] = sel;
+        }
+        if (fz_input_run(&pst, buf, n, &o, msg, NULL, 0)) {
             findings++;
             printf("FINDING seed %llu case %llu: %s\n  bytes ", (unsigned long long)seed, (unsigned long long)i, msg);
-            print_hex(stdout, buf, nbytes);
+            print_hex(stdout, buf, n);
             printf("\n");
-            fz_print_case(stdout, &c);
+            fz_input_run(&pst, buf, n, &o, msg, stdout, 1);
             fflush(stdout);
             if (findings >= stop_after)
                 break;
@@ -158,6 +175,9 @@ int main(int argc, char **argv)
             n_err++;
         n_px += o.written;
         n_equal += (uint64_t)o.checked_equal;
+        n_pipe += (uint64_t)o.pipe;
+        n_pipe_ok += (uint64_t)(o.pipe && o.status == FXL_OK);
+        n_tris += o.emitted;
         if (!quiet && (i - start + 1) % 1000000u == 0) {
             fprintf(stderr, "fixel-fuzz: %llu cases, %.0f cases/s\n", (unsigned long long)(i - start + 1),
                     (double)(i - start + 1) / (now_s() - t0));
@@ -167,11 +187,12 @@ int main(int argc, char **argv)
         double dt = now_s() - t0;
         uint64_t done = i - start;
         printf("fixel-fuzz: seed %llu, cases %llu..%llu: %llu run in %.1f s (%.0f cases/s), %llu valid "
-               "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written, "
-               "%llu finding(s)\n",
+               "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written; "
+               "%llu front-end cases (%llu valid, %llu screen triangles); %llu finding(s)\n",
                (unsigned long long)seed, (unsigned long long)start, (unsigned long long)(start + done),
                (unsigned long long)done, dt, dt > 0 ? (double)done / dt : 0.0, (unsigned long long)n_ok,
                (unsigned long long)n_equal, (unsigned long long)n_err, (unsigned long long)n_px,
+               (unsigned long long)n_pipe, (unsigned long long)n_pipe_ok, (unsigned long long)n_tris,
                (unsigned long long)findings);
     }
     return findings ? 1 : 0;

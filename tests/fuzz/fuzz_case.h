@@ -4,7 +4,9 @@
  * the libFuzzer entry point (tests/fuzz/fuzz_raster.c) and the regression
  * test (tests/test_fuzz_regress.c), so a reproducer is just the input bytes.
  * Header-only (static functions) because each user is one translation unit;
- * host code: libc and POSIX (mmap for guard pages).
+ * host code: libc and POSIX (mmap for guard pages). The 3D front end's cases
+ * (1 input in 8) are fuzz_pipe.h's, built on the reader, decoder parts,
+ * guarded memory and checks here.
  *
  * A case is decoded from bytes (missing bytes read as 0, so any length is a
  * valid case): target size, stride, format, origin, clip, optional depth
@@ -239,16 +241,13 @@ static const int16_t fz_persp_vals[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, FXL_P
                                         /* invalid: */ 3, 512, -2, 24, INT16_MIN, INT16_MAX};
 #define FZ_NPERSP_VALID 11
 
-static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
+/* fz_decode in four parts, read in this order; the front-end case
+ * (fuzz_pipe.h) reads the first three and its own geometry instead of the
+ * fourth. c starts zeroed. */
+static void fz_decode_target(fz_reader *r, fz_case *c)
 {
-    fz_reader rd = {data, n, 0};
-    fz_reader *r = &rd;
-    uint32_t m, mb, i;
-    int32_t prev_x, prev_y;
+    uint32_t m;
 
-    memset(c, 0, sizeof *c);
-
-    /* ---- target ---- */
     m = fz_u8(r);
     if (m < 200) {
         c->w = 1 + (int32_t)(fz_u8(r) % 40u);
@@ -308,8 +307,12 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
         static const uint16_t dv[] = {0, 0, 1, 0x7FFF, 0xFFFF, 0x8000};
         c->depth_init = c->depth_rand ? (uint16_t)fz_u16(r) : dv[fz_u8(r) % 6u];
     }
+}
 
-    /* ---- texture ---- */
+static void fz_decode_texture(fz_reader *r, fz_case *c)
+{
+    uint32_t m;
+
     m = fz_u8(r);
     c->has_tex = m >= 48;
     if (c->has_tex) {
@@ -351,8 +354,12 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
         c->pal_null = fz_u8(r) < 8;
         c->tex_seed = fz_u32(r);
     }
+}
 
-    /* ---- draw ---- */
+static void fz_decode_draw(fz_reader *r, fz_case *c)
+{
+    uint32_t m;
+
     fxl_draw_defaults(&c->draw);
     m = fz_u8(r);
     c->draw.persp = m < 240 ? fz_persp_vals[m % FZ_NPERSP_VALID]
@@ -377,8 +384,13 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
                                   : (m < 230 ? fz_special_i32[fz_u8(r) % FZ_NSPECIAL] : FXL_Q16_ONE / 4);
     if (c->has_tex && fz_u8(r) >= 8)
         c->draw.texture = &c->tex;   /* else untextured with a texture prepared */
+}
 
-    /* ---- vertices ---- */
+static void fz_decode_vertices(fz_reader *r, fz_case *c)
+{
+    uint32_t m, mb, i;
+    int32_t prev_x, prev_y;
+
     /* 0..5 free (of those, a byte of 41..87: v1 on v0's row at its depth;
      * 41, so that no input of test_fuzz_regress.c changes meaning: their
      * bytes here are 0, 1, 40, 88, 91, 127, 128, 183, 216, 240 and 255),
@@ -420,6 +432,17 @@ static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
             c->v[2].y = (int32_t)y;
         }
     }
+}
+
+static void fz_decode(const uint8_t *data, size_t n, fz_case *c)
+{
+    fz_reader rd = {data, n, 0};
+
+    memset(c, 0, sizeof *c);
+    fz_decode_target(&rd, c);
+    fz_decode_texture(&rd, c);
+    fz_decode_draw(&rd, c);
+    fz_decode_vertices(&rd, c);
 }
 
 /* ---- the oracle ------------------------------------------------------------- */
@@ -535,12 +558,12 @@ static inline void fz_prepare(const uint8_t *data, size_t n, fz_case *c)
         fz_fit_build(c);
 }
 
-/* Which errors the documented rules allow for this case (0: must be OK). */
-static uint32_t fz_expected_errors(const fz_case *c)
+/* Which errors the documented rules allow for the target and draw alone,
+ * before any vertex is read (fxl_draw_check; 0: must be OK). */
+static uint32_t fz_setting_errors(const fz_case *c)
 {
     uint32_t e = 0;
     const fxl_draw_t *d = &c->draw;
-    int i;
 
     if (!fz_target_valid(c))
         e |= FZ_E_ARG;
@@ -563,11 +586,20 @@ static uint32_t fz_expected_errors(const fz_case *c)
         if (bad)
             e |= FZ_E_ARG | FZ_E_RANGE | FZ_E_UNSUP;   /* texture.h does not fix which */
     }
+    if (fz_left_out(c))
+        e |= FZ_E_UNSUP;
+    return e;
+}
+
+/* Which errors the documented rules allow for this case (0: must be OK). */
+static uint32_t fz_expected_errors(const fz_case *c)
+{
+    uint32_t e = fz_setting_errors(c);
+    int i;
+
     for (i = 0; i < 3; i++)
         if (c->v[i].inv_w == 0)
             e |= FZ_E_RANGE;
-    if (fz_left_out(c))
-        e |= FZ_E_UNSUP;
     return e;
 }
 
@@ -598,6 +630,8 @@ typedef struct fz_outcome {
     uint32_t written;       /* pixels written */
     uint32_t covered;       /* exact coverage within the clip */
     int checked_equal;      /* coverage equality was required */
+    int pipe;               /* a front-end case (fuzz_pipe.h) */
+    uint32_t emitted;       /* front end: screen triangles emitted */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */
@@ -756,6 +790,84 @@ static int fz_in_clip(const fz_case *c, int32_t col, int32_t row)
 
 #define FZ_FAIL(...) do { snprintf(msg, FZ_MSG, __VA_ARGS__); return 1; } while (0)
 
+/* The depth buffer's initial contents (s->dep_init), canaries included. */
+static void fz_init_depth(fz_state *s, const fz_case *c)
+{
+    size_t n = (size_t)c->stride * (size_t)c->h, i;
+    uint32_t x = c->depth_init | 0x10000u;
+
+    for (i = 0; i < n + 2u * FZ_CANARY; i++)
+        s->dep_init[i] = c->depth_rand ? (uint16_t)(fz_xs(&x) >> 16) : c->depth_init;
+    for (i = 0; i < FZ_CANARY; i++) {
+        s->dep_init[i] = fz_canary_word(i + 5u);
+        s->dep_init[FZ_CANARY + n + i] = fz_canary_word(i + 99u);
+    }
+}
+
+/* Check 2: the canary words around the pixels (fz_fill) and the depth
+ * buffer (dep NULL: none) of one render. */
+static int fz_check_canaries(const fz_case *c, const fz_state *s, const uint16_t *pix, const uint16_t *dep,
+                             char *msg)
+{
+    size_t n = (size_t)c->stride * (size_t)c->h, i;
+
+    for (i = 0; i < FZ_CANARY; i++) {
+        if (pix[i] != fz_canary_word(i))
+            FZ_FAIL("canary before pixels overwritten (word %d)", (int)i - FZ_CANARY);
+        if (pix[FZ_CANARY + n + i] != fz_canary_word(i + 77u))
+            FZ_FAIL("canary after pixels overwritten (word %d past the end)", (int)i);
+        if (dep && (dep[i] != s->dep_init[i] || dep[FZ_CANARY + n + i] != s->dep_init[FZ_CANARY + n + i]))
+            FZ_FAIL("depth canary overwritten (word %d)", (int)i);
+    }
+    return 0;
+}
+
+/* Checks 3 and 4 on two renders of one case, pix_a on background 0x0000
+ * and pix_b on 0xFFFF (depth dep_a, dep_b, or NULL): every written pixel
+ * inside the clip and equal in both, none when !may_write (status st, for
+ * the message), depth likewise and only with FXL_DEPTH_WRITE. *written:
+ * the pixels either render wrote. */
+static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *pix_a, const uint16_t *pix_b,
+                           const uint16_t *dep_a, const uint16_t *dep_b, fxl_status_t st, int may_write,
+                           uint32_t *written, char *msg)
+{
+    size_t n = (size_t)c->stride * (size_t)c->h, i;
+    int32_t row, col;
+
+    *written = 0;
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->stride; col++) {
+            size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+            uint16_t a = pix_a[k], b = pix_b[k];
+            int wa = a != 0x0000u, wb = b != 0xFFFFu;
+            if (!wa && !wb)
+                continue;
+            if (!may_write)
+                FZ_FAIL("pixel (%d,%d) written although the draw failed with %s", col, row, fxl_status_name(st));
+            if (!fz_in_clip(c, col, row))
+                FZ_FAIL("pixel (%d,%d) (frame %d,%d) written outside the clip [%d,%d)x[%d,%d)", col, row,
+                        col + c->origin_x, row + c->origin_y, c->clip.x0, c->clip.x1, c->clip.y0, c->clip.y1);
+            /* One render kept its background: the drawn value equals it. */
+            if ((wa && wb && a != b) || (!wa && b != 0x0000u) || (!wb && a != 0xFFFFu))
+                FZ_FAIL("pixel (%d,%d) nondeterministic: %04X vs %04X", col, row, a, b);
+            (*written)++;
+        }
+    if (dep_a)
+        for (i = 0; i < n; i++) {
+            size_t k = FZ_CANARY + i;
+            int32_t rr = (int32_t)(i / (size_t)c->stride), cc = (int32_t)(i % (size_t)c->stride);
+            if (dep_a[k] != dep_b[k])
+                FZ_FAIL("depth (%d,%d) nondeterministic: %04X vs %04X", cc, rr, dep_a[k], dep_b[k]);
+            if (dep_a[k] != s->dep_init[k]) {
+                if (!may_write || !fz_in_clip(c, cc, rr))
+                    FZ_FAIL("depth (%d,%d) written %s", cc, rr, !may_write ? "on error" : "outside the clip");
+                if (!(c->draw.depth & FXL_DEPTH_WRITE))
+                    FZ_FAIL("depth (%d,%d) written without FXL_DEPTH_WRITE", cc, rr);
+            }
+        }
+    return 0;
+}
+
 /* Run one decoded case. Returns 0 when every check holds, 1 with a message
  * in msg (FZ_MSG bytes) otherwise. */
 static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
@@ -764,7 +876,6 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     fxl_stats_t sa, sb, sp;
     fxl_status_t st_a, st_b, st_p, st_chk;
     uint32_t allowed, written = 0, covered = 0;
-    size_t n = (size_t)c->stride * (size_t)c->h, i;
     int32_t row, col;
     int need_equal;
     long det;
@@ -773,15 +884,8 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     memset(out, 0, sizeof *out);
     if (c->has_tex)
         fz_place_texture(s, c);
-    if (c->has_depth) {
-        uint32_t x = c->depth_init | 0x10000u;
-        for (i = 0; i < n + 2u * FZ_CANARY; i++)
-            s->dep_init[i] = c->depth_rand ? (uint16_t)(fz_xs(&x) >> 16) : c->depth_init;
-        for (i = 0; i < FZ_CANARY; i++) {
-            s->dep_init[i] = fz_canary_word(i + 5u);
-            s->dep_init[FZ_CANARY + n + i] = fz_canary_word(i + 99u);
-        }
-    }
+    if (c->has_depth)
+        fz_init_depth(s, c);
     fz_fill(c, s, s->pix_a, 0x0000u, c->has_depth ? s->dep_a : NULL);
     fz_fill(c, s, s->pix_b, 0xFFFFu, c->has_depth ? s->dep_b : NULL);
     fz_make_target(c, &ta, s->pix_a, c->has_depth ? s->dep_a : NULL);
@@ -794,16 +898,9 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     out->status = st_a;
 
     /* 2: canaries */
-    for (i = 0; i < FZ_CANARY; i++) {
-        if (s->pix_a[i] != fz_canary_word(i) || s->pix_b[i] != fz_canary_word(i))
-            FZ_FAIL("canary before pixels overwritten (word %d)", (int)i - FZ_CANARY);
-        if (s->pix_a[FZ_CANARY + n + i] != fz_canary_word(i + 77u) ||
-            s->pix_b[FZ_CANARY + n + i] != fz_canary_word(i + 77u))
-            FZ_FAIL("canary after pixels overwritten (word %d past the end)", (int)i);
-        if (c->has_depth && (s->dep_a[i] != s->dep_init[i] || s->dep_a[FZ_CANARY + n + i] != s->dep_init[FZ_CANARY + n + i] ||
-                             s->dep_b[i] != s->dep_init[i] || s->dep_b[FZ_CANARY + n + i] != s->dep_init[FZ_CANARY + n + i]))
-            FZ_FAIL("depth canary overwritten (word %d)", (int)i);
-    }
+    if (fz_check_canaries(c, s, s->pix_a, c->has_depth ? s->dep_a : NULL, msg) ||
+        fz_check_canaries(c, s, s->pix_b, c->has_depth ? s->dep_b : NULL, msg))
+        return 1;
     /* 1: status */
     if (st_a != st_b)
         FZ_FAIL("nondeterministic status: %s then %s", fxl_status_name(st_a), fxl_status_name(st_b));
@@ -820,36 +917,9 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
                 (allowed & FZ_E_RANGE) ? " RANGE" : "", (allowed & FZ_E_UNSUP) ? " UNSUPPORTED" : "");
 
     /* 3, 4: written pixels, clip, determinism */
-    for (row = 0; row < c->h; row++)
-        for (col = 0; col < c->stride; col++) {
-            size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
-            uint16_t a = s->pix_a[k], b = s->pix_b[k];
-            int wa = a != 0x0000u, wb = b != 0xFFFFu;
-            if (!wa && !wb)
-                continue;
-            if (st_a != FXL_OK)
-                FZ_FAIL("pixel (%d,%d) written although the draw failed with %s", col, row, fxl_status_name(st_a));
-            if (!fz_in_clip(c, col, row))
-                FZ_FAIL("pixel (%d,%d) (frame %d,%d) written outside the clip [%d,%d)x[%d,%d)", col, row,
-                        col + c->origin_x, row + c->origin_y, c->clip.x0, c->clip.x1, c->clip.y0, c->clip.y1);
-            /* One render kept its background: the drawn value equals it. */
-            if ((wa && wb && a != b) || (!wa && b != 0x0000u) || (!wb && a != 0xFFFFu))
-                FZ_FAIL("pixel (%d,%d) nondeterministic: %04X vs %04X", col, row, a, b);
-            written++;
-        }
-    if (c->has_depth)
-        for (i = 0; i < n; i++) {
-            size_t k = FZ_CANARY + i;
-            int32_t rr = (int32_t)(i / (size_t)c->stride), cc = (int32_t)(i % (size_t)c->stride);
-            if (s->dep_a[k] != s->dep_b[k])
-                FZ_FAIL("depth (%d,%d) nondeterministic: %04X vs %04X", cc, rr, s->dep_a[k], s->dep_b[k]);
-            if (s->dep_a[k] != s->dep_init[k]) {
-                if (st_a != FXL_OK || !fz_in_clip(c, cc, rr))
-                    FZ_FAIL("depth (%d,%d) written %s", cc, rr, st_a != FXL_OK ? "on error" : "outside the clip");
-                if (!(c->draw.depth & FXL_DEPTH_WRITE))
-                    FZ_FAIL("depth (%d,%d) written without FXL_DEPTH_WRITE", cc, rr);
-            }
-        }
+    if (fz_check_writes(c, s, s->pix_a, s->pix_b, c->has_depth ? s->dep_a : NULL, c->has_depth ? s->dep_b : NULL,
+                        st_a, st_a == FXL_OK, &written, msg))
+        return 1;
     out->written = written;
     if (st_a != FXL_OK)
         return 0;
@@ -937,10 +1007,9 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
     return 0;
 }
 
-/* Print the case as C initialisers (for a regression test). */
-static void fz_print_case(FILE *f, const fz_case *c)
+/* Print the target, texture and draw of a case. */
+static void fz_print_settings(FILE *f, const fz_case *c)
 {
-    int i;
     fprintf(f, "  target %dx%d stride %d format %d origin (%d,%d) clip [%d,%d)x[%d,%d) depth %s init %04X%s\n", c->w,
             c->h, c->stride, c->format, c->origin_x, c->origin_y, c->clip.x0, c->clip.x1, c->clip.y0, c->clip.y1,
             c->has_depth ? "yes" : "no", c->depth_init, c->depth_rand ? " (random)" : "");
@@ -951,6 +1020,13 @@ static void fz_print_case(FILE *f, const fz_case *c)
     fprintf(f, "  draw persp %d filter %d mip %d lod %d texenv %d shade %d depth %d color %04X bias %d budget %d\n",
             c->draw.persp, c->draw.filter, c->draw.mip, c->draw.lod, c->draw.texenv, c->draw.shade, c->draw.depth,
             c->draw.color, c->draw.lod_bias_q8, (int)c->draw.auto_budget);
+}
+
+/* Print the case as C initialisers (for a regression test). */
+static void fz_print_case(FILE *f, const fz_case *c)
+{
+    int i;
+    fz_print_settings(f, c);
     for (i = 0; i < 3; i++)
         fprintf(f, "  v%d = {%ld, %ld, %luu, %ld, %ld, 0x%04X}  /* x %.4f y %.4f px */\n", i, (long)c->v[i].x,
                 (long)c->v[i].y, (unsigned long)c->v[i].inv_w, (long)c->v[i].u, (long)c->v[i].v, c->v[i].color,
