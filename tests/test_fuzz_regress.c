@@ -259,19 +259,27 @@ static size_t unhex(const char *h, uint8_t *b, size_t cap)
     return n;
 }
 
-/* want: the status; want_written: the pixels (< 0: not checked) */
+/* The checks of one replayed case, raster or front end: no finding (msg),
+ * the status want, and want_written pixels (< 0: not checked). */
+static void expect_outcome(int bad, const char *msg, const fz_outcome *o, int want, int want_written,
+                           const char *what)
+{
+    char m2[FZ_MSG + 120];
+    snprintf(m2, sizeof m2, "%s: %s", what, bad ? msg : "ok");
+    TEST_ASSERT_TRUE_MESSAGE(!bad, m2);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(want, o->status, what);
+    if (want_written >= 0)
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want_written, (int)o->written, what);
+}
+
 static void run_case(fz_case *c, int want, int want_written, const char *what)
 {
     fz_outcome o;
-    char msg[FZ_MSG], m2[FZ_MSG + 120];
+    char msg[FZ_MSG];
     int bad = fz_run_case(&st, c, &o, msg);
-    snprintf(m2, sizeof m2, "%s: %s", what, bad ? msg : "ok");
     if (bad)
         fz_print_case(stdout, c);   /* the decoded input, for the record */
-    TEST_ASSERT_TRUE_MESSAGE(!bad, m2);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want, o.status, what);
-    if (want_written >= 0)
-        TEST_ASSERT_EQUAL_INT_MESSAGE(want_written, (int)o.written, what);
+    expect_outcome(bad, msg, &o, want, want_written, what);
 }
 
 void test_fuzz_recorded_inputs_replay_clean(void)
@@ -303,19 +311,14 @@ void test_fuzz_recorded_inputs_replay_clean(void)
     TEST_MESSAGE(counts);
 }
 
-/* want: the status; want_written: the pixels (< 0: not checked) */
 static void run_pipe(fz_pcase *pc, int want, int want_written, const char *what)
 {
     fz_outcome o;
-    char msg[FZ_MSG], m2[FZ_MSG + 120];
+    char msg[FZ_MSG];
     int bad = fz_pipe_run(&pst, pc, &o, msg);
-    snprintf(m2, sizeof m2, "%s: %s", what, bad ? msg : "ok");
     if (bad)
         fz_pipe_print(stdout, pc);
-    TEST_ASSERT_TRUE_MESSAGE(!bad, m2);
-    TEST_ASSERT_EQUAL_INT_MESSAGE(want, o.status, what);
-    if (want_written >= 0)
-        TEST_ASSERT_EQUAL_INT_MESSAGE(want_written, (int)o.written, what);
+    expect_outcome(bad, msg, &o, want, want_written, what);
 }
 
 void test_fuzz_recorded_front_end_inputs_replay_clean(void)
