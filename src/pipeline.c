@@ -137,31 +137,42 @@ fxl_status_t fxl_mat4_mul(fxl_mat4_t *out, const fxl_mat4_t *a, const fxl_mat4_t
     return ovf ? FXL_ERR_RANGE : FXL_OK;
 }
 
-fxl_status_t fxl_mat4_transform(const fxl_mat4_t *m, const fxl_vec4_t *v, fxl_vec4_t *out)
+/* res[r] = row r of M times in, r < rows, rounded to nearest; returns
+ * nonzero when an entry saturated. */
+static int mul_rows(const fxl_mat4_t *m, const fxl_q16_t in[4], int rows, fxl_q16_t *res)
 {
-    fxl_q16_t in[4], res[4];
     int r, k, ovf = 0;
-    if (!m || !v || !out) return FXL_ERR_ARG;
-    in[0] = v->x; in[1] = v->y; in[2] = v->z; in[3] = v->w;
-    for (r = 0; r < 4; r++) {
+    for (r = 0; r < rows; r++) {
         int64_t acc = 0;
         for (k = 0; k < 4; k++) acc = fxl__add_sat(acc, (int64_t)m->m[r][k] * in[k], &ovf);
         res[r] = fxl__to_i32(fxl__shr_round(acc, 16), &ovf);
     }
+    return ovf;
+}
+
+fxl_status_t fxl_mat4_transform(const fxl_mat4_t *m, const fxl_vec4_t *v, fxl_vec4_t *out)
+{
+    fxl_q16_t in[4], res[4];
+    int ovf;
+    if (!m || !v || !out) return FXL_ERR_ARG;
+    in[0] = v->x; in[1] = v->y; in[2] = v->z; in[3] = v->w;
+    ovf = mul_rows(m, in, 4, res);
     out->x = res[0]; out->y = res[1]; out->z = res[2]; out->w = res[3];
     return ovf ? FXL_ERR_RANGE : FXL_OK;
 }
 
+/* Rows 0..2 only: the fourth row is never computed, so its contents (a
+ * projection's, say) cannot make a point or direction transform fail. */
 static fxl_status_t transform3(const fxl_mat4_t *m, const fxl_vec3_t *p, fxl_q16_t w,
                                fxl_vec3_t *out)
 {
-    fxl_vec4_t v, o;
-    fxl_status_t st;
+    fxl_q16_t in[4], res[3];
+    int ovf;
     if (!m || !p || !out) return FXL_ERR_ARG;
-    v.x = p->x; v.y = p->y; v.z = p->z; v.w = w;
-    st = fxl_mat4_transform(m, &v, &o);
-    out->x = o.x; out->y = o.y; out->z = o.z;
-    return st;
+    in[0] = p->x; in[1] = p->y; in[2] = p->z; in[3] = w;
+    ovf = mul_rows(m, in, 3, res);
+    out->x = res[0]; out->y = res[1]; out->z = res[2];
+    return ovf ? FXL_ERR_RANGE : FXL_OK;
 }
 
 fxl_status_t fxl_mat4_transform_point(const fxl_mat4_t *m, const fxl_vec3_t *p, fxl_vec3_t *out)
@@ -201,9 +212,9 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
     for (i = 0; i < 3; i++)
         if (ax[i] > 0x20000 || ax[i] < -0x20000) return FXL_ERR_RANGE;
     len2 = ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]; /* q32 */
-    /* | |a|^2 - 1 | <= 2^-7 covers | |a| - 1 | <= 2^-8. */
-    if (len2 - ((int64_t)1 << 32) > ((int64_t)1 << 25) ||
-        ((int64_t)1 << 32) - len2 > ((int64_t)1 << 25))
+    /* | |a| - 1 | <= 2^-8 exactly: |a| in q16 is sqrt(len2), so the test
+     * is (2^16 - 2^8)^2 <= len2 <= (2^16 + 2^8)^2. */
+    if (len2 < (int64_t)(65536 - 256) * (65536 - 256) || len2 > (int64_t)(65536 + 256) * (65536 + 256))
         return FXL_ERR_RANGE;
     fxl__sincos_q30(a, &s30, &c30);
     omc = ((int64_t)1 << 30) - c30; /* 1 - cos, q30, in [0, 2^31] */
@@ -307,7 +318,8 @@ fxl_status_t fxl_mat4_perspective(fxl_mat4_t *m, fxl_angle_t fovy, fxl_q16_t asp
     if (!m) return FXL_ERR_ARG;
     if (fovy == 0 || fovy >= 0x8000u || aspect <= 0 || near_q16 <= 0) return FXL_ERR_RANGE;
     if (far_q16 != 0 && far_q16 <= near_q16) return FXL_ERR_RANGE;
-    fxl__sincos_q30((fxl_angle_t)(fovy / 2u), &s30, &c30);
+    /* fovy in 2^-17 turns is fovy / 2 in fxl_angle_t units, odd fovy too. */
+    fxl__sincos_fine_q30((uint32_t)fovy, &s30, &c30);
     if (s30 <= 0) return FXL_ERR_RANGE;
     f = div_round((int64_t)c30 * 65536, s30);       /* cot(fovy / 2), q16 */
     fx = div_round(f * 65536, aspect);               /* f < 2^31: no overflow */

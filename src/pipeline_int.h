@@ -25,6 +25,9 @@ int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf);
 int32_t fxl__to_i32(int64_t x, int *ovf);
 /* sin and cos of a in q30 (|error| <= 2^-21 + 2^-29). */
 void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
+/* The same for an angle in 2^-17 turns (any uint32, wraps): half of an
+ * fxl_angle_t without losing its lowest bit (gluPerspective's fovy / 2). */
+void fxl__sincos_fine_q30(uint32_t a17, int32_t *s, int32_t *c);
 /* Angle of (x, y) in q32 turns (uint32, wraps), any int64 inputs with
  * |x|, |y| < 2^62. (0, 0) gives 0. */
 uint32_t fxl__atan2_q32(int64_t y, int64_t x);

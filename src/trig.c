@@ -31,7 +31,7 @@ static const uint32_t atan_q32[30] = {
 #define C_C4 ((int64_t)44739243)
 #define C_C6 ((int64_t)1491308)
 #define C_C8 ((int64_t)26631)
-/* round(2 pi * 2^46): f (1/65536 turns) * K / 2^32 = f in radians, q30. */
+/* round(2 pi * 2^46): f (2^-17 turns) * K / 2^33 = f in radians, q30. */
 #define K_RAD ((int64_t)442139859501778)
 
 static int64_t mul30(int64_t a, int64_t b)
@@ -40,10 +40,12 @@ static int64_t mul30(int64_t a, int64_t b)
     return fxl__shr_round(a * b, 30);
 }
 
-/* f in [0, 8192] (1/65536 turns), i.e. x in [0, pi/4]. */
+/* f in [0, 16384] (2^-17 turns), i.e. x in [0, pi/4]; f * K_RAD < 2^63.
+ * For even f this is bit for bit the former 2^-16-turn evaluation (the
+ * same real value is rounded). */
 static void octant_sincos(int32_t f, int64_t *s, int64_t *c)
 {
-    int64_t x = fxl__shr_round((int64_t)f * K_RAD, 32);
+    int64_t x = fxl__shr_round((int64_t)f * K_RAD, 33);
     int64_t x2 = mul30(x, x);
     int64_t p;
     p = C_S5 - mul30(x2, C_S7);
@@ -56,24 +58,30 @@ static void octant_sincos(int32_t f, int64_t *s, int64_t *c)
     *c = Q30_ONE - mul30(x2, p);
 }
 
-void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c)
+void fxl__sincos_fine_q30(uint32_t a17, int32_t *s, int32_t *c)
 {
-    int32_t f = (int32_t)(a & 0x3FFFu);
-    unsigned quadrant = (unsigned)a >> 14;
+    int32_t f = (int32_t)(a17 & 0x7FFFu);
+    unsigned quadrant = (unsigned)(a17 >> 15) & 3u;
     int64_t s0, c0, t;
-    if (f <= 0x2000) {
+    if (f <= 0x4000) {
         octant_sincos(f, &s0, &c0);
     } else {
-        octant_sincos(0x4000 - f, &c0, &s0);
+        octant_sincos(0x8000 - f, &c0, &s0);
     }
-    switch (quadrant) {
-    case 1: t = s0; s0 = c0; c0 = -t; break;
-    case 2: s0 = -s0; c0 = -c0; break;
-    case 3: t = s0; s0 = -c0; c0 = t; break;
-    default: break;
+    if (quadrant == 1u) {
+        t = s0; s0 = c0; c0 = -t;
+    } else if (quadrant == 2u) {
+        s0 = -s0; c0 = -c0;
+    } else if (quadrant == 3u) {
+        t = s0; s0 = -c0; c0 = t;
     }
     *s = (int32_t)s0; /* |value| <= 2^30 by construction */
     *c = (int32_t)c0;
+}
+
+void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c)
+{
+    fxl__sincos_fine_q30((uint32_t)a * 2u, s, c);
 }
 
 void fxl_sincos_q16(fxl_angle_t a, fxl_q16_t *s, fxl_q16_t *c)

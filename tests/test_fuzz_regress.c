@@ -14,19 +14,19 @@
  *
  * Front-end inputs (fuzz/fuzz_pipe.h: bits 3..5 of the last byte 0) have
  * their own table, pipe_replays, plus hand-made cases at the limits of
- * pipeline.h. The front-end fuzz found three places where the core answers
- * otherwise than pipeline.h says; they are tolerated by fuzz_pipe.h (build
- * with -DFZP_STRICT=1 to see them as findings) and not fixed here:
+ * pipeline.h. The front-end fuzz found three places where the core
+ * answered otherwise than pipeline.h says; all three are fixed in the core
+ * and pinned by tests in test_pipeline.c:
  *  - fxl_mat4_rotate_axis({65792, 0, 0}, a): |axis| = 1 + 2^-8 exactly,
- *    documented valid, returns FXL_ERR_RANGE (the core tests
- *    | |a|^2 - 1 | <= 2^-7, which differs by 2^16 in |a|^2 q32 at both ends);
+ *    documented valid, was FXL_ERR_RANGE (the test was | |a|^2 - 1 | <=
+ *    2^-7, off by 2^16 in |a|^2 q32 at both ends);
  *  - fxl_mat4_perspective(m, fovy 1, aspect 1, near 1, far 0): documented
- *    valid (0 < fovy; cot(fovy / 2) = 20861 fits q16), returns FXL_ERR_RANGE
- *    because fovy / 2 is taken in whole units (0); odd fovy lose half a unit;
+ *    valid (cot(fovy / 2) = 20861 fits q16), was FXL_ERR_RANGE because
+ *    fovy / 2 was taken in whole units (0); odd fovy lost half a unit;
  *  - fxl_mat4_transform_point(identity with m[3][0] = 1.0, m[3][3] =
- *    INT32_MAX, p = (1, 0, 0)) returns FXL_ERR_RANGE although pipeline.h says
- *    the fourth row is ignored (it is computed, and its overflow reported;
- *    the output x, y, z are right). Same for fxl_mat4_transform_vector.
+ *    INT32_MAX, p = (1, 0, 0)) was FXL_ERR_RANGE although the fourth row is
+ *    documented as ignored (it was computed and its overflow reported).
+ *    Same for fxl_mat4_transform_vector.
  */
 #include <stdio.h>
 #include <string.h>

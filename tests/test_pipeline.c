@@ -219,6 +219,28 @@ static void test_rotate_axis_rejects_non_unit_axis(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mat4_rotate_axis(NULL, &bad, 100));
 }
 
+/* pipeline.h: |axis| = 1 within 2^-8. On a coordinate axis |a| is the q16
+ * component itself, so the limits are 65536 +- 256 exactly; off the axes
+ * one extra q16 unit of y already crosses them. */
+static void test_rotate_axis_unit_tolerance_is_exactly_two_to_minus_8(void)
+{
+    fxl_mat4_t m;
+    fxl_vec3_t a;
+    const int32_t ok[] = {65536 + 256, 65536 - 256, -(65536 + 256), -(65536 - 256)};
+    const int32_t bad[] = {65536 + 257, 65536 - 257, -(65536 + 257), -(65536 - 257)};
+    int i;
+    for (i = 0; i < 4; i++) {
+        a.x = 0; a.y = ok[i]; a.z = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_rotate_axis(&m, &a, 1000));
+        a.y = bad[i];
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &a, 1000));
+    }
+    a.x = 65536 + 256; a.y = 1; a.z = 0; /* |a|^2 exceeds (2^16 + 2^8)^2 by 1 */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &a, 1000));
+    a.x = 65536 - 256; /* |a|^2 = (2^16 - 2^8)^2 + 1: inside */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_rotate_axis(&m, &a, 1000));
+}
+
 static void test_mat4_mul_and_transform_match_double(void)
 {
     fxl_mat4_t a, b, o, t;
@@ -269,6 +291,30 @@ static void test_mat4_mul_overflow_saturates_with_status(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mat4_mul(NULL, &a, &a));
 }
 
+/* pipeline.h: points and directions ignore the fourth row, so a row that
+ * overflows (here 1 * x + INT32_MAX * w) is neither computed nor reported;
+ * the full fxl_mat4_transform does report it. */
+static void test_transform_point_ignores_an_overflowing_fourth_row(void)
+{
+    fxl_mat4_t m;
+    fxl_vec3_t p = {FXL_Q16_INT(3), FXL_Q16_INT(-2), FXL_Q16_ONE}, o;
+    fxl_vec4_t v = {FXL_Q16_INT(3), FXL_Q16_INT(-2), FXL_Q16_ONE, FXL_Q16_ONE}, o4;
+    fxl_mat4_identity(&m);
+    m.m[3][0] = FXL_Q16_INT(30000);
+    m.m[3][3] = INT32_MAX;
+    m.m[0][3] = FXL_Q16_INT(5); /* translation: used by points, not by directions */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_transform_point(&m, &p, &o));
+    TEST_ASSERT_EQUAL_INT32(FXL_Q16_INT(8), o.x);
+    TEST_ASSERT_EQUAL_INT32(p.y, o.y);
+    TEST_ASSERT_EQUAL_INT32(p.z, o.z);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_transform_vector(&m, &p, &o));
+    TEST_ASSERT_EQUAL_INT32(p.x, o.x);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_transform(&m, &v, &o4));
+    m.m[0][0] = INT32_MAX; /* the first three rows are still checked */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_transform_point(&m, &p, &o));
+    TEST_ASSERT_EQUAL_INT32(INT32_MAX, o.x);
+}
+
 static void test_perspective_matches_glu_formula(void)
 {
     int deg;
@@ -276,7 +322,7 @@ static void test_perspective_matches_glu_formula(void)
         fxl_mat4_t m;
         fxl_angle_t fovy = FXL_ANGLE_DEG(deg);
         fxl_q16_t aspect = dq16(4.0 / 3.0), n = dq16(0.25), f = dq16(500);
-        double fv = 1.0 / tan(TWO_PI * (fovy / 2) / 65536.0);
+        double fv = 1.0 / tan(TWO_PI * (fovy / 2.0) / 65536.0);
         double dn = q16d(n), df = q16d(f);
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_perspective(&m, fovy, aspect, n, f));
         /* cot from q30 sin/cos: (2^-21.6 / s)(1 + cot) <= 0.36 LSB at 30 deg,
@@ -300,6 +346,46 @@ static void test_perspective_matches_glu_formula(void)
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 1000, 65536, 65536, 65536));
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, 1000, 0, 65536, 0));
     }
+}
+
+/* Every fovy from 1 to 32767, odd ones included (fovy / 2 keeps its half
+ * unit): f = cot(fovy / 2) within the bound derived from the q30 sin and
+ * cos error e = 2^-21 + 2^-29 (pipeline_int.h): |d cot| <= e (1 + cot) / s
+ * to first order (the margin 1.01 covers the second), plus 0.5 LSB for
+ * rounding. Where that bound straddles INT32_MAX either status is right;
+ * above it, FXL_ERR_RANGE. fovy = 1 fits: cot = 20860.76. */
+static void test_perspective_every_fovy_within_derived_bound(void)
+{
+    const double e = ldexp(1, -21) + ldexp(1, -29);
+    double worst = 0, worst_ratio = 0;
+    uint32_t fovy, ok = 0;
+    for (fovy = 1; fovy < 32768u; fovy++) {
+        fxl_mat4_t m;
+        double half = TWO_PI * fovy / 131072.0, s = sin(half), cot = cos(half) / s;
+        double bound = (1.01 * e * (1 + cot) / s) * 65536.0 + 0.5; /* q16 LSB */
+        double want = cot * 65536.0;
+        fxl_status_t st = fxl_mat4_perspective(&m, (fxl_angle_t)fovy, FXL_Q16_ONE, FXL_Q16_ONE, 0);
+        if (want - bound > (double)INT32_MAX) {
+            TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, st);
+            continue;
+        }
+        if (want + bound >= (double)INT32_MAX) continue;
+        snprintf(msg, sizeof msg, "fovy %u: status %d", (unsigned)fovy, (int)st);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, st, msg);
+        {
+            double err = fabs((double)m.m[1][1] - want);
+            snprintf(msg, sizeof msg, "fovy %u: f %ld want %.3f bound %.3f", (unsigned)fovy,
+                     (long)m.m[1][1], want, bound);
+            TEST_ASSERT_TRUE_MESSAGE(err <= bound, msg);
+            if (err > worst) worst = err;
+            if (err / bound > worst_ratio) worst_ratio = err / bound;
+        }
+        TEST_ASSERT_EQUAL_INT32(m.m[1][1], m.m[0][0]); /* aspect 1 */
+        ok++;
+    }
+    printf("perspective: %u fovy values, max |f - cot(fovy/2)| %.3f LSB, max error/bound %.3f\n",
+           (unsigned)ok, worst, worst_ratio);
+    TEST_ASSERT_EQUAL_UINT32(32767u, ok);
 }
 
 static void test_look_at_matches_double(void)
@@ -1019,9 +1105,12 @@ int main(void)
     RUN_TEST(test_rotations_match_double);
     RUN_TEST(test_rotate_axis_matches_rodrigues);
     RUN_TEST(test_rotate_axis_rejects_non_unit_axis);
+    RUN_TEST(test_rotate_axis_unit_tolerance_is_exactly_two_to_minus_8);
     RUN_TEST(test_mat4_mul_and_transform_match_double);
     RUN_TEST(test_mat4_mul_overflow_saturates_with_status);
+    RUN_TEST(test_transform_point_ignores_an_overflowing_fourth_row);
     RUN_TEST(test_perspective_matches_glu_formula);
+    RUN_TEST(test_perspective_every_fovy_within_derived_bound);
     RUN_TEST(test_look_at_matches_double);
     RUN_TEST(test_projection_accuracy_target_random_meshes);
     RUN_TEST(test_project_rejects_w_at_or_behind_near);

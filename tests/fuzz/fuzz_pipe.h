@@ -73,18 +73,6 @@
 #define FZP_BYTES 448               /* bytes fixel-fuzz gives a front-end case */
 #define FZP_OK 0x10u                /* in an expectation mask: FXL_OK allowed */
 
-/* Known differences between pipeline.h and the core, found by this
- * harness (described in tests/test_fuzz_regress.c). Tolerated unless built
- * with -DFZP_STRICT=1, so that CI stays a check for new ones:
- *  - fxl_mat4_rotate_axis tests | |a|^2 - 1 | <= 2^-7, not | |a| - 1 | <= 2^-8:
- *    a 2^16-wide band of |a|^2 (q32) at each end answers the other way;
- *  - fxl_mat4_perspective halves fovy in whole angle units first, so
- *    fovy = 1 (documented valid, cot fits q16) is FXL_ERR_RANGE;
- *  - fxl_mat4_transform_point / _vector compute the fourth row too, and
- *    return FXL_ERR_RANGE when it (documented "ignored") overflows. */
-#ifndef FZP_STRICT
-#define FZP_STRICT 0
-#endif
 
 /* ---- 1 in 8 inputs ------------------------------------------------------------ */
 
@@ -772,7 +760,7 @@ static int fzp_vertex_verdict(const fxl_xform_t *xf, const fxl_vec3_t *pos, int 
 static int fzp_persp_verdict(fxl_angle_t fovy, fxl_q16_t aspect, fxl_q16_t near_q16, fxl_q16_t far_q16)
 {
     double f, e[3], lim = (double)INT32_MAX;
-    int k, h, v = 0;
+    int k, v = 0;
     if (fovy == 0 || fovy >= 0x8000u || aspect <= 0 || near_q16 <= 0 || (far_q16 != 0 && far_q16 <= near_q16))
         return 2;
     if (far_q16 == 0)
@@ -780,22 +768,16 @@ static int fzp_persp_verdict(fxl_angle_t fovy, fxl_q16_t aspect, fxl_q16_t near_
     else
         e[2] = fmax(((double)far_q16 + near_q16) * 65536.0 / ((double)far_q16 - near_q16),
                     2.0 * (double)far_q16 * near_q16 / ((double)far_q16 - near_q16));
-    /* cot of fovy / 2, and (known, FZP_STRICT above) of the whole units
-     * below it, the core's half-angle: certain only where both agree */
-    for (h = 0; h < (FZP_STRICT ? 1 : 2); h++) {
-        int vh = 0;
-        double half = h ? (double)(fovy / 2u) : fovy / 2.0;
-        f = half > 0 ? 65536.0 / tan(half * 6.28318530717958647692 / 65536.0) : 1e300;
-        e[0] = f;
-        e[1] = f * 65536.0 / (double)aspect;
-        for (k = 0; k < 3; k++) {
-            double tol = e[k] * 0x1p-24 + 2.0;
-            if (e[k] > lim + tol)
-                vh = 2;
-            else if (e[k] > lim - tol && vh == 0)
-                vh = 1;
-        }
-        v = h == 0 ? vh : (v == vh ? v : 1);
+    /* cot of fovy / 2, odd fovy included */
+    f = 65536.0 / tan(fovy * 3.14159265358979323846 / 65536.0);
+    e[0] = f;
+    e[1] = f * 65536.0 / (double)aspect;
+    for (k = 0; k < 3; k++) {
+        double tol = e[k] * 0x1p-24 + 2.0;
+        if (e[k] > lim + tol)
+            v = 2;
+        else if (e[k] > lim - tol && v == 0)
+            v = 1;
     }
     return v;
 }
@@ -809,9 +791,7 @@ static int fzp_axis_verdict(const fxl_vec3_t *a)
         a->z < -0x20000)
         return 2;   /* |a| >= 2 */
     len2 = (int64_t)a->x * a->x + (int64_t)a->y * a->y + (int64_t)a->z * a->z;   /* q32 */
-    if (len2 >= lo && len2 <= hi)
-        return (!FZP_STRICT && len2 > one + ((int64_t)1 << 25)) ? 1 : 0;
-    return (!FZP_STRICT && len2 >= one - ((int64_t)1 << 25) && len2 < lo) ? 1 : 2;
+    return (len2 >= lo && len2 <= hi) ? 0 : 2;
 }
 
 /* fxl_mat4_look_at: 2 for eye == centre, up == 0 or up an exact multiple
@@ -1355,13 +1335,11 @@ static int fzp_parts(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xfor
     /* transforms of the model matrix (the fourth row is ignored for points
      * and directions, pipeline.h) */
     in[0] = pos[0].x; in[1] = pos[0].y; in[2] = pos[0].z; in[3] = FXL_Q16_ONE;
-    allow = fzp_allow(fzp_transform_verdict(&p->model, in, 0, FZP_STRICT ? 2 : 3)) |
-            fzp_allow(fzp_transform_verdict(&p->model, in, 0, 2));
+    allow = fzp_allow(fzp_transform_verdict(&p->model, in, 0, 2));
     st = fxl_mat4_transform_point(&p->model, &pos[0], &o3);
     FZP_EXPECT(st, allow, "fxl_mat4_transform_point");
     in[3] = 0;
-    allow = fzp_allow(fzp_transform_verdict(&p->model, in, 0, FZP_STRICT ? 2 : 3)) |
-            fzp_allow(fzp_transform_verdict(&p->model, in, 0, 2));
+    allow = fzp_allow(fzp_transform_verdict(&p->model, in, 0, 2));
     st = fxl_mat4_transform_vector(&p->model, &pos[0], &o3);
     FZP_EXPECT(st, allow, "fxl_mat4_transform_vector");
     in[3] = pos[1].x;
