@@ -632,6 +632,7 @@ typedef struct fz_outcome {
     int checked_equal;      /* coverage equality was required */
     int pipe;               /* a front-end case (fuzz_pipe.h) */
     uint32_t emitted;       /* front end: screen triangles emitted */
+    uint32_t placed;        /* front end: mesh triangles found where the double projection puts them */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */

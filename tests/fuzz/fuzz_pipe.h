@@ -50,7 +50,10 @@
  *  P5 emitted triangles: inside the guard band (FXL_GUARD_PX of the
  *     viewport centre), inv_w >= 1, none culled by the cull mode's
  *     winding, at most 7 per mesh triangle, a uniform colour or uv stays
- *     uniform through clipping.
+ *     uniform through clipping; a mesh triangle certainly inside every
+ *     plane and certainly kept by the cull mode is emitted where a double
+ *     projection of the core's matrix puts it (x, y, inv_w within derived
+ *     bounds, fzp_project_d).
  *  P6 the parts alone: fxl_xform_clip / _eye / _project, fxl_clip_triangle
  *     (output inside the planes, projectable), fxl_texgen_triangle,
  *     fxl_light_shade (never brighter than the base colour),
@@ -1267,6 +1270,106 @@ static int64_t fzp_area2(const fxl_vertex_t *t)
     return bx * cy - cx * by;   /* > 0: clockwise on the display (y down) */
 }
 
+/* A clip-space row of xf (q32) applied to pos in double, and a bound on
+ * how far the core's row_apply may be from it: three products rounded to
+ * q32 (1.5 units) plus the double sum's own error (2^-52 of the terms). */
+static double fzp_row_d(const int64_t row[4], const fxl_vec3_t *pos, double *err)
+{
+    double t0 = (double)row[0] * pos->x / 65536.0, t1 = (double)row[1] * pos->y / 65536.0,
+           t2 = (double)row[2] * pos->z / 65536.0, r3 = (double)row[3];
+    *err = 1.5 + (fabs(t0) + fabs(t1) + fabs(t2) + fabs(r3)) * 0x1p-52;
+    return r3 + t0 + t1 + t2;
+}
+
+/* fxl_xform_project in double, for clip x, y, w (q32) known within ex, ew:
+ * screen x, y (q16, clamped to the guard band like the core) and inv_w,
+ * with tolerances: the input error carried through x / w, plus the core's
+ * own (a 31-bit reciprocal, 2^-31 relative, and the q30 and q16 roundings),
+ * both doubled. */
+typedef struct fzp_proj {
+    double sx, sy, iw;
+    double tx, ty, tw;
+} fzp_proj;
+
+static void fzp_project_d(const fxl_xform_t *xf, double x, double y, double w, double ex, double ey, double ew,
+                          fzp_proj *o)
+{
+    double g = xf->guard_q16 / 65536.0, nx = x / w, ny = y / w, wl = w - ew;
+    double hw = (double)xf->hw_q16, hh = (double)xf->hh_q16;
+    o->tx = 2.0 * ((ex + fabs(nx) * ew) / wl * hw + (fabs(nx) + 1.0) * 0x1p-30 * hw + 1.0);
+    o->ty = 2.0 * ((ey + fabs(ny) * ew) / wl * hh + (fabs(ny) + 1.0) * 0x1p-30 * hh + 1.0);
+    nx = nx > g ? g : (nx < -g ? -g : nx);
+    ny = ny > g ? g : (ny < -g ? -g : ny);
+    o->sx = (double)xf->cx_q16 + nx * hw;
+    o->sy = (double)xf->cy_q16 - ny * hh;
+    o->iw = (double)xf->near_q32 / w * 4294967296.0;
+    o->tw = 2.0 * (o->iw * ew / wl + o->iw * 0x1p-30 + 1.0);
+    o->iw = o->iw > 4294967295.0 ? 4294967295.0 : (o->iw < 1.0 ? 1.0 : o->iw);
+}
+
+static int fzp_proj_match(const fzp_proj *r, const fxl_vertex_t *v)
+{
+    return fabs((double)v->x - r->sx) <= r->tx && fabs((double)v->y - r->sy) <= r->ty &&
+           fabs((double)v->inv_w - r->iw) <= r->tw;
+}
+
+/* P5, geometry: a mesh triangle whose three vertices are certainly inside
+ * near, far and the guard band (by more than the error bounds above) is
+ * emitted unclipped, so unless the cull mode might drop it, some emitted
+ * triangle carries its three projected vertices, in order. Returns the
+ * number of mesh triangles so checked in *checked. */
+static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xform_t *xf,
+                                      const fzp_rec *rec, uint32_t *checked, char *msg)
+{
+    double g = xf->guard_q16 / 65536.0;
+    uint32_t t, k, j;
+    *checked = 0;
+    for (t = 0; t < pc->tri_count; t++) {
+        fzp_proj pr[3];
+        double area, l1 = 0, d;
+        int inside = 1;
+        for (k = 0; k < 3 && inside; k++) {
+            const fxl_vec3_t *pos = &pc->pos[pc->idx[3u * t + k] % pc->npool];
+            double ex, ey, ew, x, y, w, m;
+            x = fzp_row_d(xf->mvp[0], pos, &ex);
+            y = fzp_row_d(xf->mvp[1], pos, &ey);
+            w = fzp_row_d(xf->mvp[3], pos, &ew);
+            m = g * ew + 4.0;
+            if (w - ew < (double)xf->near_q32 + 2.0 || (xf->far_q32 != 0 && w + ew > (double)xf->far_q32 - 2.0) ||
+                fabs(x) + ex > g * w - m || fabs(y) + ey > g * w - m)
+                inside = 0;
+            else
+                fzp_project_d(xf, x, y, w, ex, ey, ew, &pr[k]);
+        }
+        if (!inside)
+            continue;
+        /* twice the signed area in pixels (y down), and how far snapping
+         * (1/32 px) plus the tolerances can move it */
+        area = ((pr[1].sx - pr[0].sx) * (pr[2].sy - pr[0].sy) - (pr[2].sx - pr[0].sx) * (pr[1].sy - pr[0].sy)) /
+               (65536.0 * 65536.0);
+        d = 1.0 / 32.0;
+        for (k = 0; k < 3; k++) {
+            double e = (pr[k].tx > pr[k].ty ? pr[k].tx : pr[k].ty) / 65536.0;
+            d = e + 1.0 / 32.0 > d ? e + 1.0 / 32.0 : d;
+            l1 += (fabs(pr[(k + 1) % 3].sx - pr[k].sx) + fabs(pr[(k + 1) % 3].sy - pr[k].sy)) / 65536.0;
+        }
+        if (p->cull == FXL_CULL_CW ? area > -(4.0 * d * l1 + 16.0 * d * d)
+                                   : p->cull == FXL_CULL_CCW && area < 4.0 * d * l1 + 16.0 * d * d)
+            continue; /* culled, or too close to tell */
+        for (j = 0; j < rec->n; j++)
+            if (fzp_proj_match(&pr[0], &rec->tri[3u * j]) && fzp_proj_match(&pr[1], &rec->tri[3u * j + 1]) &&
+                fzp_proj_match(&pr[2], &rec->tri[3u * j + 2]))
+                break;
+        if (j == rec->n)
+            FZ_FAIL("mesh triangle %u lies inside every plane, projects to (%.1f, %.1f) (%.1f, %.1f) (%.1f, %.1f) px "
+                    "(tolerance %.3g px), but no emitted triangle is there",
+                    (unsigned)t, pr[0].sx / 65536.0, pr[0].sy / 65536.0, pr[1].sx / 65536.0, pr[1].sy / 65536.0,
+                    pr[2].sx / 65536.0, pr[2].sy / 65536.0, pr[0].tx / 65536.0);
+        (*checked)++;
+    }
+    return 0;
+}
+
 /* P5 on the emitted triangles. */
 static int fzp_check_emitted(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xform_t *xf, const fzp_rec *rec,
                              char *msg)
@@ -1380,6 +1483,13 @@ static int fzp_parts(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xfor
             ok3 = 0;
         else if (cv[k].u || cv[k].v || cv[k].r || cv[k].g || cv[k].b)
             FZ_FAIL("fxl_xform_clip: attributes not zeroed");
+        else {
+            double ex, ey, ew, x = fzp_row_d(xf->mvp[0], &pos[k], &ex), y = fzp_row_d(xf->mvp[1], &pos[k], &ey),
+                               w = fzp_row_d(xf->mvp[3], &pos[k], &ew);
+            if (fabs((double)cv[k].x - x) > ex || fabs((double)cv[k].y - y) > ey || fabs((double)cv[k].w - w) > ew)
+                FZ_FAIL("fxl_xform_clip: (%lld, %lld, w %lld) q32, the double product (%.1f, %.1f, w %.1f)",
+                        (long long)cv[k].x, (long long)cv[k].y, (long long)cv[k].w, x, y, w);
+        }
         st = fxl_xform_eye(xf, &pos[k], &o3);
         {
             int v0 = fzp_row_verdict(xf->mv[0], &pos[k], FZP_LIM_I32_Q32),
@@ -1410,6 +1520,13 @@ static int fzp_parts(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xfor
                    (long long)out[k].x, (long long)out[k].y, (long long)out[k].w);
         if (sv.inv_w == 0)
             FZ_FAIL("fxl_xform_project: inv_w 0");
+        if (st == FXL_OK) {
+            fzp_proj r;
+            fzp_project_d(xf, (double)out[k].x, (double)out[k].y, w, 0.0, 0.0, 0.0, &r);
+            if (!fzp_proj_match(&r, &sv))
+                FZ_FAIL("fxl_xform_project of clipped vertex %u: (%ld, %ld) q16 inv_w %lu, double (%.1f, %.1f) "
+                        "inv_w %.1f", (unsigned)k, (long)sv.x, (long)sv.y, (unsigned long)sv.inv_w, r.sx, r.sy, r.iw);
+        }
     }
     return 0;
 }
@@ -1625,6 +1742,9 @@ static int fz_pipe_run(fz_pstate *ps, fz_pcase *pc, fz_outcome *out, char *msg)
         FZ_FAIL("emit stats: %u triangles, %u outside, %u back faces, %u drawn", (unsigned)e1s.triangles,
                 (unsigned)e1s.culled_outside, (unsigned)e1s.culled_backface, (unsigned)e1s.drawn);
     if (xf_ok && fzp_check_emitted(pc, &p, &xf, &rec1, msg))
+        return 1;
+    if (xf_ok && e1 == FXL_OK && !pc->pos_null && !pc->idx_null &&
+        fzp_check_emitted_geometry(pc, &p, &xf, &rec1, &out->placed, msg))
         return 1;
 
     /* P3 */
