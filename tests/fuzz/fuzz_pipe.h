@@ -53,7 +53,8 @@
  *     uniform through clipping; a mesh triangle certainly inside every
  *     plane and certainly kept by the cull mode is emitted where a double
  *     projection of the core's matrix puts it (x, y, inv_w within derived
- *     bounds, fzp_project_d).
+ *     bounds, fzp_project_d), with the mesh's uv and colour unchanged
+ *     where texgen and lighting are off.
  *  P6 the parts alone: fxl_xform_clip / _eye / _project, fxl_clip_triangle
  *     (output inside the planes, projectable), fxl_texgen_triangle,
  *     fxl_light_shade (never brighter than the base colour),
@@ -1326,8 +1327,11 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
     *checked = 0;
     for (t = 0; t < pc->tri_count; t++) {
         fzp_proj pr[3];
+        fxl_texcoord_t want[3];
+        uint16_t want_col[3];
         double area, l1 = 0, d;
         int inside = 1;
+        uint32_t at;
         for (k = 0; k < 3 && inside; k++) {
             const fxl_vec3_t *pos = &pc->pos[pc->idx[3u * t + k] % pc->npool];
             double ex, ey, ew, x, y, w, m;
@@ -1356,10 +1360,36 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
         if (p->cull == FXL_CULL_CW ? area > -(4.0 * d * l1 + 16.0 * d * d)
                                    : p->cull == FXL_CULL_CCW && area < 4.0 * d * l1 + 16.0 * d * d)
             continue; /* culled, or too close to tell */
-        for (j = 0; j < rec->n; j++)
-            if (fzp_proj_match(&pr[0], &rec->tri[3u * j]) && fzp_proj_match(&pr[1], &rec->tri[3u * j + 1]) &&
-                fzp_proj_match(&pr[2], &rec->tri[3u * j + 2]))
+        /* unclipped, its attributes pass unchanged: the mesh's uv (0, 0
+         * without them) when texgen is off, the mesh colour or material
+         * when unlit. Pools repeat positions with other attributes, so
+         * another mesh triangle may be emitted at the same place: any
+         * emitted triangle with both is this one. */
+        for (k = 0; k < 3; k++) {
+            uint32_t ix = pc->idx[3u * t + k] % pc->npool;
+            want[k].u = want[k].v = 0;
+            if (pc->has_uv)
+                want[k] = pc->uv[ix];
+            want_col[k] = pc->has_color ? pc->color[ix] : p->material;
+        }
+        for (j = 0, at = rec->n; j < rec->n; j++) {
+            const fxl_vertex_t *v = &rec->tri[3u * j];
+            int attr = 1;
+            if (!fzp_proj_match(&pr[0], &v[0]) || !fzp_proj_match(&pr[1], &v[1]) || !fzp_proj_match(&pr[2], &v[2]))
+                continue;
+            at = j;
+            for (k = 0; k < 3; k++)
+                if ((p->texgen.mode == FXL_TEXGEN_NONE && (v[k].u != want[k].u || v[k].v != want[k].v)) ||
+                    ((!p->lighting || !pc->has_normal) && v[k].color != want_col[k]))
+                    attr = 0;
+            if (attr)
                 break;
+        }
+        if (j == rec->n && at != rec->n)
+            FZ_FAIL("mesh triangle %u emitted unclipped at its place, but not with its uv (%ld, %ld) (%ld, %ld) "
+                    "(%ld, %ld) or colours %04X %04X %04X",
+                    (unsigned)t, (long)want[0].u, (long)want[0].v, (long)want[1].u, (long)want[1].v,
+                    (long)want[2].u, (long)want[2].v, want_col[0], want_col[1], want_col[2]);
         if (j == rec->n)
             FZ_FAIL("mesh triangle %u lies inside every plane, projects to (%.1f, %.1f) (%.1f, %.1f) (%.1f, %.1f) px "
                     "(tolerance %.3g px), but no emitted triangle is there",
