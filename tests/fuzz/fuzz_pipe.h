@@ -53,8 +53,8 @@
  *     uniform through clipping; a mesh triangle certainly inside every
  *     plane and certainly kept by the cull mode is emitted where a double
  *     projection of the core's matrix puts it (x, y, inv_w within derived
- *     bounds, fzp_project_d), with the mesh's uv and colour unchanged
- *     where texgen and lighting are off.
+ *     bounds, fzp_project_d), with the mesh's uv (or exactly
+ *     fxl_texgen_triangle's) and, unlit, its colour.
  *  P6 the parts alone: fxl_xform_clip / _eye / _project, fxl_clip_triangle
  *     (output inside the planes, projectable), fxl_texgen_triangle,
  *     fxl_light_shade (never brighter than the base colour),
@@ -1328,9 +1328,10 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
     for (t = 0; t < pc->tri_count; t++) {
         fzp_proj pr[3];
         fxl_texcoord_t want[3];
+        fxl_vec3_t tpos[3];
         uint16_t want_col[3];
         double area, l1 = 0, d;
-        int inside = 1;
+        int inside = 1, tg_ok = 1;
         uint32_t at;
         for (k = 0; k < 3 && inside; k++) {
             const fxl_vec3_t *pos = &pc->pos[pc->idx[3u * t + k] % pc->npool];
@@ -1361,8 +1362,8 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
                                    : p->cull == FXL_CULL_CCW && area < 4.0 * d * l1 + 16.0 * d * d)
             continue; /* culled, or too close to tell */
         /* unclipped, its attributes pass unchanged: the mesh's uv (0, 0
-         * without them) when texgen is off, the mesh colour or material
-         * when unlit. Pools repeat positions with other attributes, so
+         * without them) when texgen is off (else those of texgen, below),
+         * the mesh colour or material when unlit. Pools repeat positions with other attributes, so
          * another mesh triangle may be emitted at the same place: any
          * emitted triangle with both is this one. */
         for (k = 0; k < 3; k++) {
@@ -1371,7 +1372,15 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
             if (pc->has_uv)
                 want[k] = pc->uv[ix];
             want_col[k] = pc->has_color ? pc->color[ix] : p->material;
+            tpos[k] = pc->pos[ix];
+            if (p->texgen.space == FXL_TEXGEN_EYE && fxl_xform_eye(xf, &pc->pos[ix], &tpos[k]) != FXL_OK)
+                tg_ok = 0;
         }
+        /* with texgen on, the uv of fxl_texgen_triangle on the same
+         * positions, bit for bit (the emit path splits it per vertex and
+         * per triangle; pipeline.h says the two are the same) */
+        if (p->texgen.mode != FXL_TEXGEN_NONE)
+            tg_ok = tg_ok && fxl_texgen_triangle(&p->texgen, tpos, want) == FXL_OK;
         for (j = 0, at = rec->n; j < rec->n; j++) {
             const fxl_vertex_t *v = &rec->tri[3u * j];
             int attr = 1;
@@ -1379,7 +1388,7 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
                 continue;
             at = j;
             for (k = 0; k < 3; k++)
-                if ((p->texgen.mode == FXL_TEXGEN_NONE && (v[k].u != want[k].u || v[k].v != want[k].v)) ||
+                if ((tg_ok && (v[k].u != want[k].u || v[k].v != want[k].v)) ||
                     ((!p->lighting || !pc->has_normal) && v[k].color != want_col[k]))
                     attr = 0;
             if (attr)
