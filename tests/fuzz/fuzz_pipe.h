@@ -1323,6 +1323,7 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
                                       const fzp_rec *rec, uint32_t *checked, char *msg)
 {
     double g = xf->guard_q16 / 65536.0;
+    int unlit = !p->lighting || !pc->has_normal;
     uint32_t t, k, j;
     *checked = 0;
     for (t = 0; t < pc->tri_count; t++) {
@@ -1330,9 +1331,8 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
         fxl_texcoord_t want[3];
         fxl_vec3_t tpos[3];
         uint16_t want_col[3];
-        double area, l1 = 0, d;
-        int inside = 1, tg_ok = 1;
-        uint32_t at;
+        double area, l1 = 0, e = 0, d, margin;
+        int inside = 1, tg_ok = 1, placed = 0;
         for (k = 0; k < 3 && inside; k++) {
             const fxl_vec3_t *pos = &pc->pos[pc->idx[3u * t + k] % pc->npool];
             double ex, ey, ew, x, y, w, m;
@@ -1348,24 +1348,23 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
         }
         if (!inside)
             continue;
-        /* twice the signed area in pixels (y down), and how far snapping
-         * (1/32 px) plus the tolerances can move it */
+        /* twice the signed area in pixels (y down), and how far moving each
+         * vertex by d (snapping, 1/32 px, plus the tolerance) can change it */
         area = ((pr[1].sx - pr[0].sx) * (pr[2].sy - pr[0].sy) - (pr[2].sx - pr[0].sx) * (pr[1].sy - pr[0].sy)) /
                (65536.0 * 65536.0);
-        d = 1.0 / 32.0;
         for (k = 0; k < 3; k++) {
-            double e = (pr[k].tx > pr[k].ty ? pr[k].tx : pr[k].ty) / 65536.0;
-            d = e + 1.0 / 32.0 > d ? e + 1.0 / 32.0 : d;
+            e = fmax(e, fmax(pr[k].tx, pr[k].ty) / 65536.0);
             l1 += (fabs(pr[(k + 1) % 3].sx - pr[k].sx) + fabs(pr[(k + 1) % 3].sy - pr[k].sy)) / 65536.0;
         }
-        if (p->cull == FXL_CULL_CW ? area > -(4.0 * d * l1 + 16.0 * d * d)
-                                   : p->cull == FXL_CULL_CCW && area < 4.0 * d * l1 + 16.0 * d * d)
+        d = e + 1.0 / 32.0;
+        margin = 4.0 * d * l1 + 16.0 * d * d;
+        if (p->cull == FXL_CULL_CW ? area > -margin : p->cull == FXL_CULL_CCW && area < margin)
             continue; /* culled, or too close to tell */
         /* unclipped, its attributes pass unchanged: the mesh's uv (0, 0
          * without them) when texgen is off (else those of texgen, below),
-         * the mesh colour or material when unlit. Pools repeat positions with other attributes, so
-         * another mesh triangle may be emitted at the same place: any
-         * emitted triangle with both is this one. */
+         * the mesh colour or material when unlit. Pools repeat positions
+         * with other attributes, so another mesh triangle may be emitted at
+         * the same place: any emitted triangle with both is this one. */
         for (k = 0; k < 3; k++) {
             uint32_t ix = pc->idx[3u * t + k] % pc->npool;
             want[k].u = want[k].v = 0;
@@ -1381,20 +1380,19 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
          * per triangle; pipeline.h says the two are the same) */
         if (p->texgen.mode != FXL_TEXGEN_NONE)
             tg_ok = tg_ok && fxl_texgen_triangle(&p->texgen, tpos, want) == FXL_OK;
-        for (j = 0, at = rec->n; j < rec->n; j++) {
+        for (j = 0; j < rec->n; j++) {
             const fxl_vertex_t *v = &rec->tri[3u * j];
             int attr = 1;
             if (!fzp_proj_match(&pr[0], &v[0]) || !fzp_proj_match(&pr[1], &v[1]) || !fzp_proj_match(&pr[2], &v[2]))
                 continue;
-            at = j;
+            placed = 1;
             for (k = 0; k < 3; k++)
-                if ((tg_ok && (v[k].u != want[k].u || v[k].v != want[k].v)) ||
-                    ((!p->lighting || !pc->has_normal) && v[k].color != want_col[k]))
+                if ((tg_ok && (v[k].u != want[k].u || v[k].v != want[k].v)) || (unlit && v[k].color != want_col[k]))
                     attr = 0;
             if (attr)
                 break;
         }
-        if (j == rec->n && at != rec->n)
+        if (j == rec->n && placed)
             FZ_FAIL("mesh triangle %u emitted unclipped at its place, but not with its uv (%ld, %ld) (%ld, %ld) "
                     "(%ld, %ld) or colours %04X %04X %04X",
                     (unsigned)t, (long)want[0].u, (long)want[0].v, (long)want[1].u, (long)want[1].v,
