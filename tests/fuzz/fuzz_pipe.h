@@ -54,10 +54,12 @@
  *     plane and certainly kept by the cull mode is emitted where a double
  *     projection of the core's matrix puts it (x, y, inv_w within derived
  *     bounds, fzp_project_d), with the mesh's uv (or exactly
- *     fxl_texgen_triangle's) and, unlit, its colour.
+ *     fxl_texgen_triangle's) and its colour: the mesh's unlit, lit the
+ *     double-precision shade of the core's eye normal within its rounding.
  *  P6 the parts alone: fxl_xform_clip / _eye / _project, fxl_clip_triangle
  *     (output inside the planes, projectable), fxl_texgen_triangle,
- *     fxl_light_shade (never brighter than the base colour),
+ *     fxl_light_shade (the double-precision formula within its rounding,
+ *     never brighter than the base colour),
  *     fxl_mat4_transform*, fxl_mat4_mul with aliased operands.
  */
 #ifndef FXL_FUZZ_PIPE_H
@@ -1314,6 +1316,64 @@ static int fzp_proj_match(const fzp_proj *r, const fxl_vertex_t *v)
            fabs((double)v->inv_w - r->iw) <= r->tw;
 }
 
+/* Lighting in double. fxl_light_shade rounds n . dir to q16 and clamps it
+ * to [0, 1], truncates I = (ambient + diffuse n . dir) / 255 to q16 (within
+ * 2^-16 below, 2^-17 above), clamps it to 1 and rounds base * I half up per
+ * channel. Given that the n . dir it uses lies in [ndl - tol, ndl + tol],
+ * does `got` have, in every channel, a value that chain can give? */
+static int fzp_shade_allows(const fxl_light_t *l, double ndl, double tol, uint16_t base, uint16_t got)
+{
+    static const unsigned sh[3] = {11, 5, 0}, mx[3] = {31, 63, 31};
+    double lo = fmin(1.0, fmax(0.0, ndl - tol)), hi = fmin(1.0, fmax(0.0, ndl + tol));
+    int c;
+    for (c = 0; c < 3; c++) {
+        double bc = (double)(((unsigned)base >> sh[c]) & mx[c]);
+        double ilo = fmin(1.0, (l->ambient[c] + l->diffuse[c] * lo) / 255.0 - 0x1p-16);
+        double ihi = fmin(1.0, (l->ambient[c] + l->diffuse[c] * hi) / 255.0 + 0x1p-16);
+        double oc = (double)(((unsigned)got >> sh[c]) & mx[c]);
+        if (oc < floor(bc * ilo + 0.5 - 1e-9) || oc > floor(bc * ihi + 0.5 + 1e-9))
+            return 0;
+    }
+    return 1;
+}
+
+/* n . dir of a q16 normal as fxl_light_shade forms it, exactly but for the
+ * q16 rounding (2^-17, in *tol with the double sum's error). */
+static double fzp_ndotl_d(const fxl_light_t *l, const fxl_vec3_t *n, double *tol)
+{
+    double t0 = (double)n->x * l->dir.x, t1 = (double)n->y * l->dir.y, t2 = (double)n->z * l->dir.z;
+    *tol = 0x1p-17 + (fabs(t0) + fabs(t1) + fabs(t2)) * 0x1p-52 * 0x1p-32;
+    return (t0 + t1 + t2) * 0x1p-32;
+}
+
+/* n . dir for a mesh normal taken to eye space by the core's view * model
+ * (eye_normal in pipeline.c): e = mv's 3x3 applied to n (three products
+ * rounded to q32 units, so within 1.5 of the double e per component),
+ * normalised to q30 (2^-27 relative) and rounded to q16 (2^-17), so each
+ * component of the core's unit normal is within 2^-17 + 2^-27 + 2 |de| / |e|
+ * of e / |e|. Returns 0 where that cannot be told: a product that could
+ * saturate. */
+static int fzp_eye_ndotl_d(const fxl_xform_t *xf, const fxl_light_t *l, const fxl_vec3_t *n, double *ndl,
+                           double *tol)
+{
+    double e[3], len = 0, eps;
+    int r;
+    for (r = 0; r < 3; r++) {
+        double t0 = (double)xf->mv[r][0] * n->x / 65536.0, t1 = (double)xf->mv[r][1] * n->y / 65536.0,
+               t2 = (double)xf->mv[r][2] * n->z / 65536.0;
+        if (fabs(t0) >= 0x1p61 || fabs(t1) >= 0x1p61 || fabs(t2) >= 0x1p61)
+            return 0;
+        e[r] = t0 + t1 + t2;
+        len += e[r] * e[r];
+    }
+    len = sqrt(len);
+    eps = len < 8.0 ? 2.0 : 0x1p-17 + 0x1p-27 + 2.0 * (1.5 * sqrt(3.0) + len * 0x1p-50) / len;
+    *ndl = len < 8.0 ? 0.0 : (e[0] * l->dir.x + e[1] * l->dir.y + e[2] * l->dir.z) / len / 65536.0;
+    *tol = (fabs((double)l->dir.x) + fabs((double)l->dir.y) + fabs((double)l->dir.z)) / 65536.0 * eps + 0x1p-17 +
+           0x1p-40;
+    return 1;
+}
+
 /* P5, geometry: a mesh triangle whose three vertices are certainly inside
  * near, far and the guard band (by more than the error bounds above) is
  * emitted unclipped, so unless the cull mode might drop it, some emitted
@@ -1331,6 +1391,8 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
         fxl_texcoord_t want[3];
         fxl_vec3_t tpos[3];
         uint16_t want_col[3];
+        double ndl[3], ndl_tol[3];
+        int col_check[3];           /* 0 none, 1 want_col exactly, 2 lit from want_col */
         double area, l1 = 0, e = 0, d, margin;
         int inside = 1, tg_ok = 1, placed = 0;
         for (k = 0; k < 3 && inside; k++) {
@@ -1362,7 +1424,8 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
             continue; /* culled, or too close to tell */
         /* unclipped, its attributes pass unchanged: the mesh's uv (0, 0
          * without them) when texgen is off (else those of texgen, below),
-         * the mesh colour or material when unlit. Pools repeat positions
+         * the mesh colour or material when unlit, lit within the rounding
+         * fzp_eye_ndotl_d and fzp_shade_allows derive. Pools repeat positions
          * with other attributes, so another mesh triangle may be emitted at
          * the same place: any emitted triangle with both is this one. */
         for (k = 0; k < 3; k++) {
@@ -1371,6 +1434,7 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
             if (pc->has_uv)
                 want[k] = pc->uv[ix];
             want_col[k] = pc->has_color ? pc->color[ix] : p->material;
+            col_check[k] = unlit ? 1 : 2 * fzp_eye_ndotl_d(xf, &p->light, &pc->normal[ix], &ndl[k], &ndl_tol[k]);
             tpos[k] = pc->pos[ix];
             if (p->texgen.space == FXL_TEXGEN_EYE && fxl_xform_eye(xf, &pc->pos[ix], &tpos[k]) != FXL_OK)
                 tg_ok = 0;
@@ -1387,16 +1451,19 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
                 continue;
             placed = 1;
             for (k = 0; k < 3; k++)
-                if ((tg_ok && (v[k].u != want[k].u || v[k].v != want[k].v)) || (unlit && v[k].color != want_col[k]))
+                if ((tg_ok && (v[k].u != want[k].u || v[k].v != want[k].v)) ||
+                    (col_check[k] == 1 && v[k].color != want_col[k]) ||
+                    (col_check[k] == 2 && !fzp_shade_allows(&p->light, ndl[k], ndl_tol[k], want_col[k], v[k].color)))
                     attr = 0;
             if (attr)
                 break;
         }
         if (j == rec->n && placed)
             FZ_FAIL("mesh triangle %u emitted unclipped at its place, but not with its uv (%ld, %ld) (%ld, %ld) "
-                    "(%ld, %ld) or colours %04X %04X %04X",
+                    "(%ld, %ld) or colours (%s) %04X %04X %04X",
                     (unsigned)t, (long)want[0].u, (long)want[0].v, (long)want[1].u, (long)want[1].v,
-                    (long)want[2].u, (long)want[2].v, want_col[0], want_col[1], want_col[2]);
+                    (long)want[2].u, (long)want[2].v, unlit ? "unlit" : "lit from", want_col[0], want_col[1],
+                    want_col[2]);
         if (j == rec->n)
             FZ_FAIL("mesh triangle %u lies inside every plane, projects to (%.1f, %.1f) (%.1f, %.1f) (%.1f, %.1f) px "
                     "(tolerance %.3g px), but no emitted triangle is there",
@@ -1464,7 +1531,7 @@ static int fzp_parts(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xfor
     fxl_clipvert_t cv[3], out[FXL_CLIP_MAX_VERTS];
     fxl_texcoord_t tc[3];
     fxl_status_t st;
-    uint32_t k, n, allow;
+    uint32_t k, n, allow, i;
     int ok3 = 1;
     int32_t in[4];
     const fxl_texgen_t *tg = &p->texgen;
@@ -1498,16 +1565,21 @@ static int fzp_parts(const fz_pcase *pc, const fxl_pipeline_t *p, const fxl_xfor
                 tc[k].v != (tg->offset_v == INT32_MIN ? -INT32_MAX : tg->offset_v))
                 FZ_FAIL("fxl_texgen_triangle mode none: (%ld, %ld), not the offsets", (long)tc[k].u, (long)tc[k].v);
 
-    /* lighting never brightens, and full ambient keeps the base colour */
-    {
+    /* lighting never brightens, full ambient keeps the base colour, and
+     * each channel is what the double-precision formula rounds to */
+    for (i = 0; i < pc->npool; i++) {
         static const unsigned sh[3] = {11, 5, 0}, mx[3] = {31, 63, 31};
-        uint16_t base = pc->has_color ? pc->color[0] : p->material;
-        uint16_t lit = fxl_light_shade(&p->light, &pc->normal[0], base);
+        uint16_t base = pc->has_color ? pc->color[i] : p->material;
+        uint16_t lit = fxl_light_shade(&p->light, &pc->normal[i], base);
+        double tol, ndl = fzp_ndotl_d(&p->light, &pc->normal[i], &tol);
         for (k = 0; k < 3; k++) {
             unsigned b = ((unsigned)base >> sh[k]) & mx[k], l = ((unsigned)lit >> sh[k]) & mx[k];
             if (l > b || (p->light.ambient[k] == 255 && l != b))
                 FZ_FAIL("fxl_light_shade(%04X) = %04X: channel %u %u from %u", base, lit, (unsigned)k, l, b);
         }
+        if (!fzp_shade_allows(&p->light, ndl, tol, base, lit))
+            FZ_FAIL("fxl_light_shade(%04X, normal (%ld, %ld, %ld)) = %04X, n . dir = %.9f: not the rounded formula",
+                    base, (long)pc->normal[i].x, (long)pc->normal[i].y, (long)pc->normal[i].z, lit, ndl);
     }
 
     if (!xf_ok)
