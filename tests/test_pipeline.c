@@ -110,7 +110,7 @@ static void test_atan2_error_within_half_lsb_plus_cordic(void)
         e = fabs(angle_diff(fxl_atan2_angle(y, x), want));
         if (e > max_err) max_err = e;
         /* Bound: rounding 0.5 LSB + CORDIC 2^-27 turns = 2^-11 LSB. */
-        if (e > 0.5 + ldexp(1, -10)) {
+        if (e > 0.5 + ldexp(1, -11)) {
             snprintf(msg, sizeof msg, "atan2(%d, %d) = %u, want %.4f (err %.4f LSB)", (int)y, (int)x,
                      (unsigned)fxl_atan2_angle(y, x), want, e);
             TEST_FAIL_MESSAGE(msg);

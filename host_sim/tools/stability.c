@@ -1088,8 +1088,9 @@ static void sweep_texsize(void)
     sweep_end(&s, "size");
 }
 
-/* 8. LOD extremes: 1024x1024 with a full chain, magnified 64x (u, v 0..1/16
- * over 256 px... LOD -6) and minified (u, v 0..4096 periods: LOD > 10), with
+/* 8. LOD extremes: 1024x1024 with a full chain, magnified (u, v 0..1/16
+ * periods over the quad: LOD -2.9, 7.6x, at its near edge) and minified
+ * (u, v 0..4096 and 30000 periods: LOD > 10), with
  * bias -32768 / +32767 q8; per-segment and per-triangle LOD, nearest and
  * linear. Records the level range used; levels beyond the chain would read
  * outside it (caught by ASan / canaries). */

@@ -12,9 +12,10 @@
  *   fxl_target_clear(&fb, 0); fxl_target_clear_depth(&fb);
  *   fxl_draw_triangle(&fb, &d, verts, NULL);   // verts: fxl_vertex_t[3]
  *
- * Modules: fixed.h (q16 math), target.h (buffers, bands, clipping),
- * texture.h (texels, mips, wrap), raster.h (triangles), pipeline.h (3D front
- * end), port.h (SPI panels, band rendering). Every call that can fail returns
+ * Modules, all included here: fixed.h (q16 math), target.h (buffers, bands,
+ * clipping), texture.h (texels, mips, wrap), raster.h (triangles),
+ * pipeline.h (3D front end). port.h (SPI panels, band rendering) belongs to
+ * the separate fixel_port library and is included on its own. Every call that can fail returns
  * fxl_status_t; the few that cannot return their value or nothing
  * (fxl_draw_defaults, fxl_q16_round, fxl_texture_fetch, ...).
  */
@@ -27,5 +28,6 @@
 #include "fixel/target.h"
 #include "fixel/texture.h"
 #include "fixel/raster.h"
+#include "fixel/pipeline.h"
 
 #endif

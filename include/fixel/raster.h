@@ -12,7 +12,8 @@
  * - inv_w is proportional to 1/w (u0.32: any positive uint32, larger is
  *   nearer). Interpolation only uses ratios of inv_w within a triangle; the
  *   depth buffer stores inv_w >> 16, so keep one scale per frame (the front
- *   end uses near/w * (2^32 - 1)). inv_w == 0 is FXL_ERR_RANGE.
+ *   end uses near/w * 2^32, clamped to [1, 2^32 - 1]). inv_w == 0 is
+ *   FXL_ERR_RANGE.
  * - u, v are normalised texture coordinates in q16 (65536 = one texture
  *   side), any int32 value. They are interpolated perspective-correctly:
  *   1/w, u/w, v/w are planes in screen space; u = (u/w) / (1/w) is exact at

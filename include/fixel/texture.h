@@ -65,8 +65,8 @@ typedef struct fxl_texture {
 /* Describe existing texel data: repeat wrap on both axes, no key.
  * width and height must be powers of two (else FXL_ERR_UNSUPPORTED, as
  * sides beyond 1 << FXL_TEX_MAX_LOG2); levels in 1 .. fxl_mip_levels()
- * (else FXL_ERR_RANGE); NULL, an unknown format or RGB565 texels at an odd
- * address: FXL_ERR_ARG. */
+ * (else FXL_ERR_RANGE); NULL, a zero side, an unknown format or RGB565
+ * texels at an odd address: FXL_ERR_ARG. */
 fxl_status_t fxl_texture_init(fxl_texture_t *t, const void *texels, uint32_t width,
                               uint32_t height, fxl_texfmt_t format, uint32_t levels);
 /* FXL_OK when the descriptor is usable (draws call this too): the checks
