@@ -93,11 +93,24 @@ fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel)
     return fxl_port_wire_format();
 }
 
-/* Wait until `done` has reached `seq` (transfer numbers start at 1).
- * Unsigned difference so the counters may wrap after 2^32 transfers. */
+/* Is transfer number `seq` in flight, i.e. in (done, started]? Unsigned
+ * differences, so the counters may wrap after 2^32 transfers and a number
+ * from long ago (or from before fxl_panel_init zeroed the counters) is
+ * simply not in flight: comparing seq with done alone would call anything
+ * 2^31 or more behind `done` pending and wait forever. `done` ahead of
+ * `started` (a completion with no transfer: a late interrupt after
+ * fxl_panel_init, one reported twice) means nothing is in flight. */
+static int in_flight(const fxl_panel_t *p, uint32_t seq)
+{
+    const uint32_t done = p->done;
+    const uint32_t n = p->started - done; /* transfers in flight: 0 or 1 */
+    const uint32_t age = seq - done;      /* 1..n: started, not completed */
+    return n - 1u < 0x7FFFFFFFu && age != 0u && age <= n; /* n in [1, 2^31) */
+}
+
 static fxl_status_t wait_for(fxl_panel_t *p, uint32_t seq)
 {
-    while ((int32_t)(seq - p->done) > 0) {
+    while (in_flight(p, seq)) {
         if (p->hal.wait != NULL && fxl_port_wait_hook(&p->hal) != FXL_OK) return FXL_ERR_IO;
     }
     return FXL_OK;
@@ -233,6 +246,13 @@ fxl_status_t fxl_panel_write(fxl_panel_t *panel, const void *data, size_t bytes)
     /* One DMA channel, and D/C must not change under a running transfer. */
     st = fxl_panel_wait_idle(panel);
     if (st != FXL_OK) return st;
+    {
+        /* A completion with no transfer left `done` ahead: count from it,
+         * or this transfer would look complete while on the wire and the
+         * next write would start under it. */
+        const uint32_t done = panel->done;
+        if (panel->started - done > 0x7FFFFFFFu) panel->started = done;
+    }
     panel->started++;
     if (panel->hal.pixels(panel->hal.user, data, bytes) != FXL_OK) {
         /* Nothing is in flight after a refused start: take the number back

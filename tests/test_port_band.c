@@ -2,7 +2,10 @@
  * the image on the emulated panel is bit-identical to a full-frame render of
  * the same triangles, for every band height, preset, rotation, DMA latency
  * and bin budget (fallback included); buffers are never reused before their
- * transfer completed (the emulator's DMA mock checks every transfer). */
+ * transfer completed (the emulator's DMA mock checks every transfer); the
+ * two buffers alternate, band k + 1 is drawn while band k is on the wire,
+ * and the transfer counters survive a panel re-init, wrapping, a refused
+ * transfer and a wait hook that gives up. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -695,6 +698,288 @@ void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
     fixture_free(f);
 }
 
+/* ---- the double-buffer protocol and the transfer counters ------------------ */
+
+/* A HAL in front of the emulator's: it checks which buffer each transfer
+ * sends and what the other one holds while the driver waits, can fail
+ * pixels() on one transfer, and gives up waiting after `wait_limit` calls
+ * in a row (so a driver that would wait forever fails the test instead). */
+typedef struct probe {
+    panel_emu_t *emu;
+    fxl_port_hal_t inner;
+    const uint16_t *buf[2];
+    const uint16_t *full;      /* the frame drawn at once, native RGB565 */
+    fxl_pixfmt_t fmt;
+    int w, h, rows, bands;
+    unsigned long frame_first; /* emu->transfers when the frame started */
+    unsigned long fail_transfer; /* 1-based transfer of the frame that pixels() refuses, 0 none */
+    unsigned long waits_in_a_row, wait_limit;
+    unsigned long last_checked;  /* emu->transfers at the last check */
+    int order_wrong, ahead_checked, ahead_wrong; /* ahead_checked: bands, not wait calls */
+} probe_t;
+
+static probe_t probe;
+
+static fxl_status_t probe_pixels(void *user, const void *data, size_t bytes)
+{
+    const int k = (int)(probe.emu->transfers - probe.frame_first); /* this band */
+    const int i = data == probe.buf[0] ? 0 : (data == probe.buf[1] ? 1 : -1);
+    probe.waits_in_a_row = 0;
+    if (probe.fail_transfer != 0 && (unsigned long)k + 1u == probe.fail_transfer)
+        return FXL_ERR_IO;
+    /* band k from buffer k % 2: both buffers, in turn */
+    if (i != (k & 1))
+        probe.order_wrong++;
+    return probe.inner.pixels(user, data, bytes);
+}
+
+static fxl_status_t probe_cmd(void *user, uint8_t c, const uint8_t *p, size_t n)
+{
+    probe.waits_in_a_row = 0;
+    return probe.inner.cmd(user, c, p, n);
+}
+
+/* While band k is on the wire the driver may only be waiting to send band
+ * k + 1, which must then be complete in the other buffer: proof that it was
+ * drawn during band k's transfer, into the buffer not being read. */
+static fxl_status_t probe_wait(void *user)
+{
+    if (probe.wait_limit != 0 && ++probe.waits_in_a_row > probe.wait_limit)
+        return FXL_ERR_IO;
+    if (probe.emu->in_flight && probe.full != NULL) {
+        const int k = (int)(probe.emu->transfers - probe.frame_first) - 1;
+        const int rows = probe.h - (k + 1) * probe.rows < probe.rows ? probe.h - (k + 1) * probe.rows : probe.rows;
+        if (k >= 0 && k + 1 < probe.bands) {
+            const uint16_t *other = (const uint8_t *)probe.buf[0] == probe.emu->xfer.data ? probe.buf[1] : probe.buf[0];
+            uint16_t *row = (uint16_t *)malloc((size_t)probe.w * 2u);
+            int y;
+            TEST_ASSERT_NOT_NULL(row);
+            if (probe.last_checked != probe.emu->transfers)
+                probe.ahead_checked++;
+            probe.last_checked = probe.emu->transfers;
+            for (y = 0; y < rows; y++) {
+                memcpy(row, other + (size_t)y * (size_t)probe.w, (size_t)probe.w * 2u);
+                pixels_to_native(row, (size_t)probe.w, probe.fmt);
+                if (memcmp(row, probe.full + ((size_t)(k + 1) * (size_t)probe.rows + (size_t)y) * (size_t)probe.w,
+                           (size_t)probe.w * 2u) != 0) {
+                    probe.ahead_wrong++;
+                    break;
+                }
+            }
+            free(row);
+        }
+    }
+    return probe.inner.wait(user);
+}
+
+typedef struct probed_run {
+    panel_emu_t emu;
+    fxl_port_hal_t hal;
+    fxl_panel_t panel;
+    fxl_band_t band;
+    fxl_band_tri_t store[MAX_TRIS];
+    fxl_band_bin_t bins[16 * (1 + MAX_TRIS)];
+    uint16_t *buf0, *buf1, *depth, *full, *view;
+    scene_t scene;
+    int rows;
+} probed_run_t;
+
+/* st7789 at rotation 1 (320 x 240) in `rows`-row bands, the scene of the
+ * image tests added, the probe in front of the emulator's HAL. */
+static probed_run_t *probed_setup(int rows, int dma_delay)
+{
+    probed_run_t *r = (probed_run_t *)calloc(1, sizeof(probed_run_t));
+    fxl_stats_t st;
+    int i, w = 320, h = 240;
+    need_band_draws();
+    TEST_ASSERT_NOT_NULL(r);
+    TEST_ASSERT_EQUAL_INT(0, panel_emu_init(&r->emu, panel_emu_module_find("st7789"), 0));
+    r->emu.panel = &r->panel;
+    r->emu.dma_delay = dma_delay;
+    r->emu.spi16 = panel_spi16();
+    memset(&probe, 0, sizeof(probe));
+    probe.emu = &r->emu;
+    panel_emu_hal(&r->emu, &probe.inner);
+    r->hal = probe.inner;
+    r->hal.pixels = probe_pixels;
+    r->hal.cmd = probe_cmd;
+    r->hal.wait = probe_wait;
+    probe.wait_limit = 100000;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&r->panel, &r->hal, &fxl_st7789_240x320, 1));
+    TEST_ASSERT_EQUAL_INT(w, r->panel.width);
+    r->rows = rows;
+    r->buf0 = (uint16_t *)malloc((size_t)w * (size_t)rows * 2u);
+    r->buf1 = (uint16_t *)malloc((size_t)w * (size_t)rows * 2u);
+    r->depth = (uint16_t *)malloc((size_t)w * (size_t)rows * 2u);
+    r->full = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    r->view = (uint16_t *)malloc((size_t)w * (size_t)h * 2u);
+    TEST_ASSERT_TRUE(r->buf0 && r->buf1 && r->depth && r->full && r->view);
+    build_scene(&r->scene, w, h);
+    render_full(&r->scene, w, h, r->full, &st);
+    probe.buf[0] = r->buf0;
+    probe.buf[1] = r->buf1;
+    probe.full = r->full;
+    probe.fmt = fxl_panel_pixel_format(&r->panel);
+    probe.w = w;
+    probe.h = h;
+    probe.rows = rows;
+    probe.bands = (h + rows - 1) / rows;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&r->band, &r->panel, r->buf0, r->buf1, DEPTH_BUF(r->depth), rows,
+                                                r->store, MAX_TRIS, r->bins, (uint32_t)(sizeof(r->bins) / sizeof(r->bins[0]))));
+    for (i = 0; i < r->scene.count; i++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&r->band, r->scene.v[i], r->scene.draw[i]));
+    return r;
+}
+
+/* One frame through the probe: its status, and when it is FXL_OK, the
+ * panel must show the full-frame image with no protocol error. */
+static fxl_status_t probed_frame(probed_run_t *r)
+{
+    fxl_status_t st;
+    probe.frame_first = r->emu.transfers;
+    st = fxl_band_render(&r->band, CLEAR_COLOR, NULL);
+    if (st == FXL_OK) {
+        TEST_ASSERT_EQUAL_INT_MESSAGE(0, r->emu.errors, r->emu.first_error);
+        TEST_ASSERT_EQUAL_INT(0, panel_emu_view(&r->emu, 1, r->view, NULL, NULL));
+        TEST_ASSERT_EQUAL_MEMORY(r->full, r->view, (size_t)probe.w * (size_t)probe.h * 2u);
+        TEST_ASSERT_EQUAL_UINT32(r->panel.started, r->panel.done);
+    }
+    return st;
+}
+
+static void probed_free(probed_run_t *r)
+{
+    panel_emu_free(&r->emu);
+    free(r->buf0);
+    free(r->buf1);
+    free(r->depth);
+    free(r->full);
+    free(r->view);
+    free(r);
+    memset(&probe, 0, sizeof(probe));
+}
+
+void test_bands_alternate_buffers_and_the_next_is_drawn_while_one_is_sent(void)
+{
+    /* 24-row bands (10), completions 3 HAL calls late: the driver waits in
+     * the hook before every send but the first, each time with the next
+     * band already complete in the buffer that is not on the wire. A
+     * renderer using one buffer, or drawing band k + 1 only after band k
+     * completed, fails here even though its image would be right. */
+    probed_run_t *r = probed_setup(24, 3);
+    int f;
+    for (f = 0; f < 2; f++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_INT(0, probe.order_wrong);
+    TEST_ASSERT_EQUAL_INT(0, probe.ahead_wrong);
+    TEST_ASSERT_EQUAL_INT(2 * 9, probe.ahead_checked);
+    probed_free(r);
+}
+
+void test_panel_reinit_after_frames_does_not_stall_the_band_renderer(void)
+{
+    /* fxl_panel_init zeroes the transfer counters while the band renderer
+     * holds the numbers of the transfers it last sent (here 30 and 29): the
+     * next frame must not wait for them. */
+    probed_run_t *r = probed_setup(24, 2);
+    int f;
+    for (f = 0; f < 3; f++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_UINT32(30, r->panel.started);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&r->panel, &r->hal, &fxl_st7789_240x320, 1));
+    TEST_ASSERT_EQUAL_UINT32(0, r->panel.started);
+    for (f = 0; f < 2; f++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_UINT32(20, r->panel.started);
+    TEST_ASSERT_EQUAL_INT(0, probe.order_wrong);
+    TEST_ASSERT_EQUAL_INT(0, probe.ahead_wrong);
+    probed_free(r);
+}
+
+void test_transfer_counters_wrap_and_old_numbers_are_never_pending(void)
+{
+    /* Counters as after 2^31 - 8 and 2^32 - 8 transfers (~3 days of one-row
+     * bands at 30 fps): frames across both boundaries, and a band re-init
+     * (its buffers start at transfer 0) once 0 is 2^31 behind `done`. */
+    static const uint32_t starts[] = { 0x7FFFFFF8u, 0xFFFFFFF8u };
+    size_t i;
+    for (i = 0; i < sizeof(starts) / sizeof(starts[0]); i++) {
+        probed_run_t *r = probed_setup(24, 2);
+        unsigned long waits;
+        int f;
+        r->panel.started = r->panel.done = starts[i];
+        for (f = 0; f < 2; f++)
+            TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+        TEST_ASSERT_EQUAL_UINT32(starts[i] + 20u, r->panel.started);
+        /* 0 and a number 2^31 old are not in flight: no wait at all */
+        waits = r->emu.waits;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_done(&r->panel, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_done(&r->panel, r->panel.done - 0x80000000u));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_done(&r->panel, r->panel.started + 5u));
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)waits, (uint32_t)r->emu.waits);
+        r->panel.started = r->panel.done = 0x80000010u;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&r->band, &r->panel, r->buf0, r->buf1, DEPTH_BUF(r->depth), 24,
+                                                    r->store, MAX_TRIS, r->bins,
+                                                    (uint32_t)(sizeof(r->bins) / sizeof(r->bins[0]))));
+        for (f = 0; f < r->scene.count; f++)
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&r->band, r->scene.v[f], r->scene.draw[f]));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+        TEST_ASSERT_EQUAL_INT(0, probe.order_wrong);
+        TEST_ASSERT_EQUAL_INT(0, probe.ahead_wrong);
+        probed_free(r);
+    }
+}
+
+void test_pixels_failure_mid_frame_leaves_the_panel_idle_for_the_next(void)
+{
+    /* pixels() refuses band 4's transfer: the render returns FXL_ERR_IO
+     * with nothing in flight (band 3's transfer waited for), and the next
+     * frame is whole. */
+    probed_run_t *r = probed_setup(24, 3);
+    probe.fail_transfer = 4;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, probed_frame(r));
+    TEST_ASSERT_EQUAL_UINT32(3, (uint32_t)r->emu.transfers);
+    TEST_ASSERT_EQUAL_UINT32(r->panel.started, r->panel.done);
+    TEST_ASSERT_EQUAL_INT(0, r->emu.in_flight);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, r->emu.errors, r->emu.first_error);
+    probe.fail_transfer = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_INT(0, probe.ahead_wrong);
+    probed_free(r);
+}
+
+void test_after_the_wait_hook_gives_up_the_documented_recoveries_work(void)
+{
+    /* A DMA that never completes: the hook gives up (a timeout), the render
+     * returns FXL_ERR_IO and so does every call that waits. */
+    probed_run_t *r = probed_setup(24, 1000000000);
+    probe.wait_limit = 50;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, probed_frame(r));
+    TEST_ASSERT_EQUAL_INT(1, r->emu.in_flight);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_display(&r->panel, 1));
+    /* 1: stop the DMA (here it ends), report the transfer over */
+    r->emu.dma_delay = 2;
+    r->emu.in_flight = 0;
+    fxl_port_transfer_done(&r->panel);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    /* 2: stall again; the DMA is stopped, fxl_panel_init runs, and then the
+     * stalled transfer's interrupt still arrives: `done` is one ahead of
+     * `started`. The next transfers must still wait for each other (the
+     * emulator fails a pixels() or command while one is in flight). */
+    r->emu.dma_delay = 1000000000;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, probed_frame(r));
+    r->emu.in_flight = 0;
+    r->emu.dma_delay = 2;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&r->panel, &r->hal, &fxl_st7789_240x320, 1));
+    fxl_port_transfer_done(&r->panel);
+    TEST_ASSERT_EQUAL_UINT32(1, r->panel.done - r->panel.started);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, probed_frame(r));
+    TEST_ASSERT_EQUAL_INT(0, probe.order_wrong);
+    TEST_ASSERT_EQUAL_INT(0, probe.ahead_wrong);
+    probed_free(r);
+}
+
 void test_render_scene_helper_matches_full_frame(void)
 {
     /* The one-call helper fixel-sim uses: same image as a full-frame render. */
@@ -750,5 +1035,10 @@ int main(void)
     RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);
     RUN_TEST(test_render_scene_helper_matches_full_frame);
+    RUN_TEST(test_bands_alternate_buffers_and_the_next_is_drawn_while_one_is_sent);
+    RUN_TEST(test_panel_reinit_after_frames_does_not_stall_the_band_renderer);
+    RUN_TEST(test_transfer_counters_wrap_and_old_numbers_are_never_pending);
+    RUN_TEST(test_pixels_failure_mid_frame_leaves_the_panel_idle_for_the_next);
+    RUN_TEST(test_after_the_wait_hook_gives_up_the_documented_recoveries_work);
     return UNITY_END();
 }

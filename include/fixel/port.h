@@ -20,17 +20,25 @@
  *   wait     optional idle hook called repeatedly while the driver waits for
  *            a transfer (e.g. __WFI, yield to an RTOS). Return FXL_OK to keep
  *            waiting, anything else to give up (the driver returns FXL_ERR_IO).
- *            NULL: the driver spins on the completion counter.
+ *            NULL: the driver spins on the completion counter. After a give-up
+ *            the transfer still counts as in flight, so every call that waits
+ *            gives up again. To recover, stop the DMA in the HAL, then either
+ *            report the transfer over with fxl_port_transfer_done() or call
+ *            fxl_panel_init() again; a completion that still arrives after
+ *            fxl_panel_init() is absorbed (the next write counts from it).
+ *            The band renderer needs nothing: each frame starts from the
+ *            panel's counters.
  * Callbacks return FXL_OK or a negative status; the driver turns a failure
  * into FXL_ERR_IO. The driver never calls cmd() or pixels() while a pixel
  * transfer is in flight, so the HAL needs no queue.
  *
  * DMA / ISR contract. fxl_port_transfer_done(panel) must be called exactly
  * once per pixels() call that returned FXL_OK (not with FXL_PORT_PIXELS_SYNC).
- * It only increments a volatile 32-bit counter of which it is the only
- * writer, so it is safe from an interrupt on any CPU with atomic aligned
- * 32-bit stores (every Cortex-M). One bus: transfers complete in the order
- * they were started, so a count identifies which buffers are free.
+ * It only increments a volatile 32-bit counter that the thread side reads
+ * and only fxl_panel_init() writes (to 0), so it is safe from an interrupt
+ * on any CPU with atomic aligned 32-bit stores (every Cortex-M). One bus:
+ * transfers complete in the order they were started, so a count identifies
+ * which buffers are free. The counters wrap after 2^32 transfers.
  *
  * Byte order. MIPI DCS panels take RGB565 big-endian (high byte first) with
  * COLMOD 0x55. A HAL that sends bytes (8-bit SPI frames) gets them from
@@ -179,7 +187,8 @@ typedef struct fxl_panel {
     uint8_t rotation;                  /* 0..3 = 0, 90, 180, 270 degrees */
     int32_t width, height;             /* visible pixels in this rotation */
     uint32_t started;                  /* pixel transfers started */
-    volatile uint32_t done;            /* completed: written only by fxl_port_transfer_done */
+    volatile uint32_t done;            /* completed: incremented only by fxl_port_transfer_done,
+                                        * zeroed by fxl_panel_init */
 } fxl_panel_t;
 
 /* Called by the HAL (DMA interrupt) when a pixels() transfer has ended. */
@@ -197,7 +206,10 @@ fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel);
 
 /* Reset (RESX pulse when hal->reset exists, else SWRESET), SLPOUT, the
  * preset's steps, COLMOD, MADCTL for `rotation`, INVON/INVOFF, NORON,
- * DISPON, with the datasheet delays. Errors: FXL_ERR_ARG (NULL panel, hal,
+ * DISPON, with the datasheet delays. The HAL is copied; the preset is
+ * referenced and must outlive the panel (a modified copy of a preset needs
+ * static storage too). Forgets every transfer (started = done = 0): stop
+ * any DMA of this panel first. Errors: FXL_ERR_ARG (NULL panel, hal,
  * preset, hal->cmd or hal->pixels, rotation > 3, bad preset),
  * FXL_ERR_UNSUPPORTED (hal->delay_ms NULL; nothing is sent), FXL_ERR_IO. */
 fxl_status_t fxl_panel_init(fxl_panel_t *panel, const fxl_port_hal_t *hal,
@@ -217,7 +229,9 @@ fxl_status_t fxl_panel_write(fxl_panel_t *panel, const void *data, size_t bytes)
 fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel);
 /* Wait until transfer number `seq` has completed: the value of
  * panel->started right after the fxl_panel_write that started it (for your
- * own double buffering). seq 0 returns at once. */
+ * own double buffering). A number not in flight returns at once: one that
+ * completed, however long ago, one not started yet, 0 before the first
+ * write, or one from before fxl_panel_init. */
 fxl_status_t fxl_panel_wait_done(fxl_panel_t *panel, uint32_t seq);
 /* DISPON / DISPOFF. */
 fxl_status_t fxl_panel_display(fxl_panel_t *panel, int on);
@@ -273,7 +287,8 @@ typedef struct fxl_band {
     uint32_t bin_cap, bin_used;
     uint32_t first_unbinned; /* triangles from here on use the fallback scan */
     const fxl_draw_t *checked; /* the draw fxl_band_add last found valid this frame */
-    uint32_t seq[2];         /* transfer number that last sent buf[i] (0: none) */
+    uint32_t seq[2];         /* transfer number that last sent buf[i] (each frame starts
+                              * with the panel's count: none in flight) */
 } fxl_band_t;
 
 /* Bind the band renderer to an initialised panel (frame = its current
