@@ -71,7 +71,8 @@ fxl_status_t fxl_dcs_run(const fxl_port_hal_t *hal, const fxl_dcs_step_t *steps,
 
 void fxl_port_transfer_done(fxl_panel_t *panel)
 {
-    /* The only writer of `done`: a plain read-modify-write of a volatile
+    /* The only writer of `done` while transfers run (fxl_panel_init zeroes
+     * it with the DMA stopped): a plain read-modify-write of a volatile
      * word is race-free because the thread side only reads it. */
     if (panel != NULL) panel->done = panel->done + 1u;
 }
