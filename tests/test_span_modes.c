@@ -219,6 +219,86 @@ void test_every_format_wrap_key_and_filter_matches_reference(void)
     TEST_MESSAGE(msg);
 }
 
+/* Clamp and border axes hold texel coordinates as a saturated int32 in
+ * 16.16 texels: +-32768 texels. Coordinates far beyond it on the negative
+ * side must still read the near (left or top) edge, and bilinear's half
+ * texel to the left must not wrap a saturated -32768 round to +32767.5 (the
+ * far edge). A 4096-texel axis saturates at -8 periods, a 64-texel one at
+ * -512. Each u is drawn constant, and as a ramp that crosses the saturation
+ * point inside the triangle; v likewise on a texture standing up. */
+static uint16_t edge_tex[4096];
+
+void test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter(void)
+{
+    static const int32_t periods_q16[] = {-20 * 65536, -(8 * 65536 + 32768), -1000 * 65536, 20 * 65536,
+                                          8 * 65536 + 32768, 1000 * 65536};
+    static const uint32_t sides[] = {4096, 64};
+    const uint16_t lo = 0x001Fu, hi = 0xF800u, mid = 0x07E0u, border = 0xFFFFu;
+    size_t si, pi;
+    int axis, wrap, filt, ramp, checked = 0;
+    char ctx[200];
+    for (si = 0; si < sizeof sides / sizeof sides[0]; si++) {
+        const uint32_t n = sides[si];
+        uint32_t i;
+        for (i = 0; i < n; i++)
+            edge_tex[i] = i == 0 ? lo : (i == n - 1 ? hi : mid);
+        for (axis = 0; axis < 2; axis++)
+            for (wrap = FXL_WRAP_CLAMP; wrap <= FXL_WRAP_BORDER; wrap++)
+                for (filt = 0; filt < 2; filt++)
+                    for (pi = 0; pi < sizeof periods_q16 / sizeof periods_q16[0]; pi++)
+                        for (ramp = 0; ramp < 2; ramp++) {
+                            static uint16_t px[8 * 8];
+                            fxl_target_t t;
+                            fxl_texture_t tex;
+                            fxl_draw_t d;
+                            fxl_vertex_t v[3];
+                            const int32_t c = periods_q16[pi];
+                            const int neg = c < 0;
+                            /* the ramp runs from 0.75 of c to 1.25 of c */
+                            const int32_t c0 = ramp ? c - c / 4 : c, c1 = ramp ? c + c / 4 : c;
+                            const uint16_t want = wrap == FXL_WRAP_BORDER ? border : (neg ? lo : hi);
+                            int k;
+                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, edge_tex, axis ? 1 : n, axis ? n : 1,
+                                                                            FXL_TEXFMT_RGB565, 1));
+                            tex.wrap_u = tex.wrap_v = (uint8_t)wrap;
+                            tex.border = border;
+                            fxl_draw_defaults(&d);
+                            d.texture = &tex;
+                            d.depth = 0;
+                            d.persp = FXL_PERSP_EXACT;
+                            d.mip = FXL_MIP_NONE;
+                            d.filter = (uint8_t)filt;
+                            if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
+                                continue;
+                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 8, 8, 8, FXL_PIXFMT_RGB565));
+                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
+                            memset(v, 0, sizeof v);
+                            v[0].x = FXL_Q16_INT(-1); v[0].y = FXL_Q16_INT(-1);
+                            v[1].x = FXL_Q16_INT(20); v[1].y = FXL_Q16_INT(-1);
+                            v[2].x = FXL_Q16_INT(-1); v[2].y = FXL_Q16_INT(20);
+                            for (k = 0; k < 3; k++) {
+                                const int32_t cv = k == 1 ? c1 : c0;
+                                v[k].inv_w = 0x40000000u;
+                                v[k].color = 0xFFFF;
+                                v[k].u = axis ? 32768 : cv;
+                                v[k].v = axis ? cv : 32768;
+                            }
+                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                            for (k = 0; k < 64; k++)
+                                if (px[k] != want) {
+                                    snprintf(ctx, sizeof ctx,
+                                             "side %u axis %c wrap %d filter %d coordinate %.1f periods%s: pixel %d "
+                                             "is %04X, want %04X",
+                                             (unsigned)n, axis ? 'v' : 'u', wrap, filt, c / 65536.0,
+                                             ramp ? " (ramp)" : "", k, px[k], want);
+                                    TEST_FAIL_MESSAGE(ctx);
+                                }
+                            checked++;
+                        }
+    }
+    test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC (clamp and border wraps)");
+}
+
 /* MODULATE is t * (c + 1) >> bits per channel (white keeps the texel);
  * DECAL shows the colour where the texel is keyed. Checked on the point
  * sampled texel the reference picks. */
@@ -358,6 +438,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_every_format_wrap_key_and_filter_matches_reference);
+    RUN_TEST(test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter);
     RUN_TEST(test_modulate_and_decal_follow_their_formulas);
     RUN_TEST(test_gouraud_matches_reference_within_one_step);
     RUN_TEST(test_point_and_bilinear_against_hand_computed_texels);
