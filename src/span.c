@@ -640,10 +640,17 @@ static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
     return c >> level;
 }
 
-/* Floor shift of a 64-bit step to `level`, saturated to int32. */
-static inline int32_t shift_step(int64_t d, int level)
+/* Floor shift of a 64-bit step to `level`. A clamp/border axis saturates it
+ * to int32 (its coordinates are saturated too). A repeat/mirror axis keeps
+ * it modulo 2^32, like its coordinates: the period divides 2^32, so u0 + k
+ * du is then exact modulo the period however large the step. Saturating
+ * one of 2^15 texels a pixel or more (a uv_wide triangle's far tip, where
+ * a pixel spans thousands of periods) put the pixels after a segment's
+ * first at the wrong texels. */
+static inline int32_t shift_step(int64_t d, int level, int is_signed)
 {
-    return sat_i32(d < 0 ? ~(int64_t)((uint64_t)~d >> level) : (int64_t)((uint64_t)d >> level));
+    const int64_t f = d < 0 ? ~(int64_t)((uint64_t)~d >> level) : (int64_t)((uint64_t)d >> level);
+    return is_signed ? sat_i32(f) : fxl__i32_of_bits((uint32_t)(uint64_t)f);
 }
 
 #if FXL_HAVE_MIPMAP
@@ -2002,8 +2009,8 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             }
 #endif
             seg.lvl = &tri->level[level];
-            seg.du = shift_step(du0, level);
-            seg.dv = shift_step(dv0, level);
+            seg.du = shift_step(du0, level, fxl__signed_u(tri));
+            seg.dv = shift_step(dv0, level, fxl__signed_v(tri));
             seg.ddu = seg.ddv = 0;
 #if FXL_HAVE_AUTO
             if (quad) {
@@ -2029,8 +2036,8 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             }
 #if FXL_HAVE_MIPMAP
             if (seg.lvl2) {
-                seg.du2 = shift_step(du0, level + 1);
-                seg.dv2 = shift_step(dv0, level + 1);
+                seg.du2 = shift_step(du0, level + 1, fxl__signed_u(tri));
+                seg.dv2 = shift_step(dv0, level + 1, fxl__signed_v(tri));
                 seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, fxl__signed_u(tri)) + (uint32_t)seg.du2 * (uint32_t)off;
                 seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, fxl__signed_v(tri)) + (uint32_t)seg.dv2 * (uint32_t)off;
             }

@@ -1287,6 +1287,29 @@ void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
     TEST_ASSERT_EQUAL_UINT32(2, st.drawn);
     TEST_ASSERT_EQUAL_UINT32(2, st.generic);
 
+    /* A floor-like quad (rows of one depth, near edge at the bottom) over
+     * 2000 periods of a 64-texel texture, depth ratio 1000: at its far tip
+     * u moves ~5 * 10^5 texels a pixel. Along a row u is linear, so every
+     * subdivided mode must be as exact as exact mode there: their steps
+     * were saturated to 2^15 texels a pixel, 18.8 texels off. */
+    {
+        static const int sub[4] = {8, 16, 64, FXL_PERSP_AUTO};
+        const fxl_vertex_t f0 = vtx(28, 228, 1.0, 0, 0), f1 = vtx(228, 228, 1.0, 2000, 0),
+                           f2 = vtx(228, 28, 0.001, 2000, 2000), f3 = vtx(28, 28, 0.001, 0, 2000);
+        double ex;
+        tris[0].v[0] = f0; tris[0].v[1] = f1; tris[0].v[2] = f2;
+        tris[1].v[0] = f0; tris[1].v[1] = f2; tris[1].v[2] = f3;
+        ex = scene_max_error(tris, 2, FXL_PERSP_EXACT, 64);
+        for (m = 0; m < 4; m++) {
+            if (sub[m] == FXL_PERSP_AUTO && !FXL_HAVE_AUTO)
+                continue;
+            e = scene_max_error(tris, 2, sub[m], 64);
+            snprintf(msg, sizeof msg, "floor over 2000 periods, ratio 1000, persp %d: max error %.5f texels (exact %.5f)",
+                     sub[m], e, ex);
+            TEST_ASSERT_TRUE_MESSAGE(e <= ex + 1.0 / 64, msg);
+        }
+    }
+
     if (!FXL_HAVE_AUTO)
         return;
     wide_quad(tris, 0.5, 0.25, 16384);
