@@ -708,6 +708,102 @@ void test_exact_mode_precision_holds_across_depth_ratios(void)
         }
 }
 
+/* Exact mode's precision is that of its planes: setup keeps s = u q (u
+ * rebased by whole periods, q = 1/w) as integers below 2^30 by a shift k
+ * with 2^k <= 2^-29 max_i |s_i| (setup.c fit_shift), each vertex floored
+ * (< 1 unit of 2^k), a correction point's mantissa floored to half a unit
+ * (persp.h), the 20-bit gradients' rounding ~0.01 unit across the target:
+ * < 1.51 units, i.e. 3.02 * 2^-30 max_i |s_i|. Divided by q >= q_min, plus
+ * the reciprocal's 2^-28 of |u| and the q16 rounding, per axis:
+ *   |du| <= 3.2 * 2^-30 max_i |u_i| q_i / q_min + 2^-27 max |u_i| + 2^-17
+ *           + (range of u_i) / min_i q_i   (only when some inv_w >= 2^31)
+ * texels; the last term is setup's q = inv_w >> 1 there (a floor: each
+ * vertex's weight off by < 1 / q_i relative, which moves u by at most the
+ * range times that). In all about 3.2 * 2^-30 U R for U texels of rebased
+ * range and a depth ratio R: why exact mode reaches 1/64 between U R = 2^24
+ * and 2^26 (the stability sweep range_r*). Checked on floor-like quads (rows of one depth) and
+ * quads whose depth changes along the diagonal, U from 64 texels to 2^18,
+ * R from 1 to 10^4; and the bound must be reached within a factor 10
+ * somewhere, or it would say little. */
+static double exact_plane_bound(const tri_t *tr, int tw)
+{
+    double b[2], qmin = 1e300, qtrunc = 0;
+    int axis, i;
+    for (i = 0; i < 3; i++) {
+        if (tr->v[i].inv_w < qmin)
+            qmin = tr->v[i].inv_w;
+        if (tr->v[i].inv_w >= 0x80000000u)
+            qtrunc = 1;
+    }
+    if (qtrunc)
+        qtrunc = 1.0 / floor(qmin / 2);   /* the smallest q_i = inv_w >> 1 */
+    for (axis = 0; axis < 2; axis++) {
+        double mn = 1e300, mx = -1e300, m = 0, umax = 0, base;
+        for (i = 0; i < 3; i++) {
+            const double c = (axis ? tr->v[i].v : tr->v[i].u) / 65536.0;
+            if (c < mn)
+                mn = c;
+            if (c > mx)
+                mx = c;
+        }
+        base = floor(mn);   /* repeat: whole periods */
+        for (i = 0; i < 3; i++) {
+            const double a = fabs((axis ? tr->v[i].v : tr->v[i].u) / 65536.0 - base) * tw;
+            if (a * tr->v[i].inv_w > m)
+                m = a * tr->v[i].inv_w;
+            if (a > umax)
+                umax = a;
+        }
+        b[axis] = 3.2 * ldexp(m / qmin, -30) + ldexp(umax, -27) + ldexp(1, -17) + (mx - mn) * tw * qtrunc;
+    }
+    return hypot(b[0], b[1]);
+}
+
+void test_exact_mode_error_within_its_plane_precision_bound(void)
+{
+    static const double periods[] = {1, 64, 1000, 4096};
+    static const double ratios[] = {1, 10, 100, 1000, 10000};
+    tri_t tris[2];
+    char msg[200];
+    double worst_share = 0;
+    size_t p, r;
+    int geo, k;
+    for (geo = 0; geo < 2; geo++)
+        for (p = 0; p < sizeof periods / sizeof periods[0]; p++)
+            for (r = 0; r < sizeof ratios / sizeof ratios[0]; r++) {
+                const double P = periods[p], qf = 1.0 / ratios[r], qm = (1.0 + qf) / 2;
+                fxl_vertex_t c[4];
+                if (!FXL_HAVE_GENERIC && P >= 256)
+                    continue;   /* uv_wide (256 periods of 64 texels): the generic walk's */
+                if (geo == 0) {   /* near edge at the bottom, rows of one depth */
+                    c[0] = vtx(28, 228, 1.0, 0, 0);
+                    c[1] = vtx(228, 228, 1.0, P, 0);
+                    c[2] = vtx(228, 28, qf, P, P);
+                    c[3] = vtx(28, 28, qf, 0, P);
+                } else {          /* depth along the diagonal */
+                    c[0] = vtx(28, 28, qf, 0, 0);
+                    c[1] = vtx(228, 28, qm, P, 0);
+                    c[2] = vtx(228, 228, 1.0, P, P);
+                    c[3] = vtx(28, 228, qm, 0, P);
+                }
+                tris[0].v[0] = c[0]; tris[0].v[1] = c[1]; tris[0].v[2] = c[2];
+                tris[1].v[0] = c[0]; tris[1].v[1] = c[2]; tris[1].v[2] = c[3];
+                for (k = 0; k < 2; k++) {
+                    const double e = scene_max_error(&tris[k], 1, FXL_PERSP_EXACT, 64);
+                    const double bound = exact_plane_bound(&tris[k], 64);
+                    snprintf(msg, sizeof msg,
+                             "%s quad, %g periods of 64 texels, depth ratio %g, triangle %d: error %.3g > bound %.3g",
+                             geo ? "diagonal" : "floor", P, ratios[r], k, e, bound);
+                    TEST_ASSERT_TRUE_MESSAGE(e <= bound, msg);
+                    if (e / bound > worst_share)
+                        worst_share = e / bound;
+                }
+            }
+    snprintf(msg, sizeof msg, "largest error / bound: %.3f", worst_share);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(worst_share >= 0.1, msg);
+}
+
 /* Subdivision error bound. Along a span u(x) = s(x) / q(x) with s, q linear,
  * u'' = -2 u' q' / q, so linear interpolation over L pixels errs by at most
  * L^2/8 max|u''| = L^2 max|u' q'| / (4 q). u' = (s' q - s q') / q^2 where
@@ -2415,6 +2511,7 @@ int main(void)
     RUN_TEST(test_band_and_clip_renders_are_bit_identical_to_full_frame);
     RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
     RUN_TEST(test_exact_mode_precision_holds_across_depth_ratios);
+    RUN_TEST(test_exact_mode_error_within_its_plane_precision_bound);
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);

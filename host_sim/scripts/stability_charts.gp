@@ -35,6 +35,12 @@ do for [w in "repeat mirror clamp"] {
   eval plotsweep("texcoord_wide_".w, "u, v from -B to +B periods across the quad, wrap ".w, "B (periods)")
   plot for [i=1:6] dir.'/texcoord_wide_'.w.'_max.dat' using 1:(column(2*i)) with linespoints title word(names, i)
 }
+eval plotsweep("range", "Texel range U across a floor-like quad times its depth ratio R (64-texel texture, u, v over U / 64 periods)", "U * R (texels)")
+set xrange [1e3:3e10]
+plot for [r in "10 100 1000 10000"] dir.'/range_r'.r.'_max.dat' using 1:10 with linespoints title 'exact, R = '.r, \
+     for [r in "10 100 1000 10000"] dir.'/range_r'.r.'_max.dat' using 1:12 with lines dt 2 title 'auto, R = '.r, \
+     3.2 * x / 2**30 + 2**-16 with lines lc rgb "#000000" title "bound 3.2 * 2^-30 U R + 2^-16"
+set xrange [*:*]
 unset logscale x
 eval plotsweep("grazing", "Plane turned away from the viewer (2x2 at distance 3, 8 periods)", "angle (degrees)")
 plot for [i=1:6] dir.'/grazing_max.dat' using 1:(column(2*i)) with linespoints title word(names, i)

@@ -1017,6 +1017,44 @@ static void sweep_texcoord(void)
     }
 }
 
+/* 5b. Texel range times depth ratio. Exact mode keeps u/w and v/w as 30-bit
+ * mantissas of their largest vertex value (setup.c, persp.h: one 32 x 32
+ * product a correction), so its error at a pixel of depth q grows as
+ * 2^-30 * max_i(|u_i| q_i) / q: about 2^-30 U R for U texels of (rebased)
+ * coordinate range across a triangle and a depth ratio R. The depth sweep
+ * holds U at 256 texels, the wide sweep R at 4; this one moves both. A
+ * 64x64 texture on a floor-like quad (rows of one depth), near edge at the
+ * bottom, u and v from 0 to B periods; one sweep per R, param U * R. */
+static void sweep_range_ratio(void)
+{
+    static const double ratios[] = {10, 100, 1000, 10000};
+    sweep_out_t s;
+    fxl_texture_t tex;
+    size_t i;
+    int k, step = quick ? 2 : 1;
+    make_tex(&tex, 6, 6, FXL_WRAP_REPEAT, 0);
+    for (i = 0; i < sizeof ratios / sizeof ratios[0]; i++) {
+        const double R = ratios[i];
+        char name[32];
+        snprintf(name, sizeof name, "range_r%g", R);
+        sweep_begin(&s, name, "texels_times_ratio");
+        for (k = 10; k <= 38; k += step) {
+            const double UR = ldexp(1.0, k), B = UR / R / 64.0;
+            dvert c[4];
+            result_t r[NMETH];
+            if (B < 1.0 || B > 32000.0)
+                continue;
+            c[0] = dv(28, 228, 1.0, 0, 0);
+            c[1] = dv(228, 228, 1.0, B, 0);
+            c[2] = dv(228, 28, 1.0 / R, B, B);
+            c[3] = dv(28, 28, 1.0 / R, 0, B);
+            quad_all_methods(&s, "floor", UR, c, &tex, 0, r);
+            dat_row(&s, UR, r);
+        }
+        sweep_end(&s, "floor");
+    }
+}
+
 /* 6. Slivers: 200 px long, 200 / aspect px wide, at 30 degrees; u along,
  * v across (1 period each: the steepest gradient is across). */
 static void sweep_sliver(void)
@@ -1162,7 +1200,8 @@ int main(int argc, char **argv)
                     "usage: fixel-stability [--out DIR] [--quick]\n"
                     "  Sweeps every method past its breaking point against the reference\n"
                     "  renderer (depth ratio, grazing angle, eye plane, screen extent and\n"
-                    "  limits, texture offsets and ranges, slivers, texture sizes, LOD) and\n"
+                    "  limits, texture offsets and ranges, range times depth ratio,\n"
+                    "  slivers, texture sizes, LOD) and\n"
                     "  writes CSVs and gnuplot data to DIR (default docs/stability; charts:\n"
                     "  make stability). --quick: fewer points per sweep.\n");
             return help ? 0 : 2;
@@ -1182,6 +1221,7 @@ int main(int argc, char **argv)
     sweep_eyeplane();
     sweep_screen();
     sweep_texcoord();
+    sweep_range_ratio();
     sweep_sliver();
     sweep_texsize();
     sweep_lod();
