@@ -393,25 +393,14 @@ static uint32_t fetch(const fxl__tri_t *tri, const fxl__level_t *lv, int32_t x, 
     return fxl__texel_rgb565(t, lv->texels, ((uint32_t)wy << lv->log2_w) + (uint32_t)wx, key);
 }
 
-#if FXL_HAVE_BILINEAR
-/* c - 1/2 texel, the footprint's left or top tap. A clamp/border axis holds
- * a saturated int32: there the subtraction saturates too, or -32768 texels
- * (any coordinate below it) would wrap round to +32767.5, the far edge. */
-static inline uint32_t half_texel_back(uint32_t c, int is_signed)
-{
-    if (is_signed && c - 0x80000000u < 0x8000u)
-        return 0x80000000u;
-    return c - 0x8000u;
-}
-#endif
-
 /* Filtered texel of one level; returns 0x10000 for "transparent". */
 static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u, uint32_t v)
 {
     int key;
 #if FXL_HAVE_BILINEAR
     if (tri->draw->filter == FXL_FILTER_BILINEAR) {
-        uint32_t uu = half_texel_back(u, fxl__signed_u(tri)), vv = half_texel_back(v, fxl__signed_v(tri));
+        /* (no wrap on clamp/border axes: correct() keeps them >= INT32_MIN + 1/2 texel) */
+        uint32_t uu = u - 0x8000u, vv = v - 0x8000u;
         int32_t x0 = texel_coord(uu, fxl__signed_u(tri)), y0 = texel_coord(vv, fxl__signed_v(tri));
         uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
         uint32_t c[4];
@@ -523,13 +512,19 @@ static inline uint32_t sat_u32(int64_t x)
     return x < 0 ? 0u : (x > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)x);
 }
 
-/* The saturated int32 range, stored as its two's-complement bit pattern. */
+/* A clamp/border axis's coordinate saturated to [INT32_MIN + 2^15, INT32_MAX]
+ * (q16 texels: -32767.5 .. 32768), as its two's-complement bit pattern.
+ * Bilinear takes half a texel off for its left tap: from INT32_MIN that
+ * wrapped to +32767.5 texels, the far edge (any u below -8 periods of a
+ * 4096-texel texture). Steps between two such values stay inside them
+ * (truncated toward zero), and every coordinate below -1 texel clamps to
+ * the same edge texel or border. */
 static inline uint32_t sat_i32_bits(int64_t x)
 {
     if (x > INT32_MAX)
         x = INT32_MAX;
-    if (x < INT32_MIN)
-        x = INT32_MIN;
+    if (x < (int64_t)INT32_MIN + 0x8000)
+        x = (int64_t)INT32_MIN + 0x8000;
     return (uint32_t)(x < 0 ? (uint64_t)x + ((uint64_t)1 << 32) : (uint64_t)x);
 }
 
