@@ -228,8 +228,16 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     {
         const int32_t ba = budget_less_margins(tri->draw, FXL_Q16_ONE / 128);
         const int32_t bq = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
+        /* Affine segments: the budget (above 256 texels it acts as 256,
+         * raster.h) less the drift of their truncated q16 steps, under one
+         * unit a pixel on each axis: under 1.5 2^cap units for the longest
+         * (6 2^-16 texel at 4 pixels, 0.006 at 256: nothing against the
+         * default 1/4, what keeps a budget of 1/256 on a 256-pixel span). */
+        const int32_t bc = (tri->draw->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : tri->draw->auto_budget) -
+                           (int32_t)((3u << cap) + 1u) / 2;
         lba = ba > 0 ? fxl__log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
         lbq = bq > 0 ? fxl__log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
+        lb = bc > 0 ? fxl__log2_q8_32((uint32_t)bc) - 16 * 256 : INT32_MIN / 4;
         /* quadratic steps take a segment's change as int32: not where it
          * may exceed 2^15 texels (uv_wide) */
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0 &&
@@ -294,7 +302,6 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
     if (lnmax == INT32_MIN / 4)
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
-    lb = fxl__log2_q8_32((uint32_t)tri->draw->auto_budget) - 16 * 256;
     lqx = fxl__sf_log2_q8(qx);
     k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
     tri->seg_log2 = k;

@@ -14,6 +14,15 @@
  */
 #include "raster_int.h"
 #include "persp.h"
+#include "sfloat.h"
+
+#if defined(__OPTIMIZE_SIZE__)
+/* sfloat.h: the one out-of-line copy of size-optimised builds */
+fxl__sf_t fxl__sf_make(int64_t m, int e)
+{
+    return fxl__sf_make_body(m, e);
+}
+#endif
 
 #if FXL__DIV_TABLE || UINTPTR_MAX > 0xFFFFFFFFu
 /* floor((2^32 - 1) / ((i + 257) * 128)) - 65535, i = 0..255: the

@@ -1943,7 +1943,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     while (x < cr) {
         int32_t n, div, a, b, off;
         int64_t du0 = 0, dv0 = 0;
-        int level = 0, full, ki = k, quad = 0;
+        int level = 0, lsu = 0, lsv = 0, full, ki = k, quad = 0;
         (void)quad;   /* without FXL_HAVE_AUTO */
 #if FXL_HAVE_AUTO
         if (tri->auto_seg == 1) {
@@ -2004,8 +2004,15 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             }
 #endif
             seg.lvl = &tri->level[level];
-            seg.du = shift_step(du0, level, fxl__signed_u(tri));
-            seg.dv = shift_step(dv0, level, fxl__signed_v(tri));
+            /* level n is max(1, w >> n) x max(1, h >> n): an axis that
+             * reached one texel stops halving (its coordinates with it;
+             * visible on border axes, where the shift decides inside or
+             * out; repeat, mirror and clamp read texel 0 either way, so
+             * the fast walks, repeat only, shift by the level alone) */
+            lsu = level < (int)tri->tex->log2_w ? level : (int)tri->tex->log2_w;
+            lsv = level < (int)tri->tex->log2_h ? level : (int)tri->tex->log2_h;
+            seg.du = shift_step(du0, lsu, fxl__signed_u(tri));
+            seg.dv = shift_step(dv0, lsv, fxl__signed_v(tri));
             seg.ddu = seg.ddv = 0;
 #if FXL_HAVE_AUTO
             if (quad) {
@@ -2026,15 +2033,17 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
             } else
 #endif
             {
-                seg.u = shift_coord(p0.a[FXL__AU], level, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
-                seg.v = shift_coord(p0.a[FXL__AV], level, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
+                seg.u = shift_coord(p0.a[FXL__AU], lsu, fxl__signed_u(tri)) + (uint32_t)seg.du * (uint32_t)off;
+                seg.v = shift_coord(p0.a[FXL__AV], lsv, fxl__signed_v(tri)) + (uint32_t)seg.dv * (uint32_t)off;
             }
 #if FXL_HAVE_MIPMAP
             if (seg.lvl2) {
-                seg.du2 = shift_step(du0, level + 1, fxl__signed_u(tri));
-                seg.dv2 = shift_step(dv0, level + 1, fxl__signed_v(tri));
-                seg.u2 = shift_coord(p0.a[FXL__AU], level + 1, fxl__signed_u(tri)) + (uint32_t)seg.du2 * (uint32_t)off;
-                seg.v2 = shift_coord(p0.a[FXL__AV], level + 1, fxl__signed_v(tri)) + (uint32_t)seg.dv2 * (uint32_t)off;
+                const int lsu2 = lsu < (int)tri->tex->log2_w ? lsu + 1 : lsu;
+                const int lsv2 = lsv < (int)tri->tex->log2_h ? lsv + 1 : lsv;
+                seg.du2 = shift_step(du0, lsu2, fxl__signed_u(tri));
+                seg.dv2 = shift_step(dv0, lsv2, fxl__signed_v(tri));
+                seg.u2 = shift_coord(p0.a[FXL__AU], lsu2, fxl__signed_u(tri)) + (uint32_t)seg.du2 * (uint32_t)off;
+                seg.v2 = shift_coord(p0.a[FXL__AV], lsv2, fxl__signed_v(tri)) + (uint32_t)seg.dv2 * (uint32_t)off;
             }
 #endif
         }

@@ -1302,6 +1302,87 @@ void test_auto_quadratic_segments_stay_within_budget(void)
  * receding strip whose ~200-pixel spans cross the depth change: the bound
  * holds with its margins, and a test twice as loose drew it over budget
  * (0.356 texel; found by a mutation audit: no other scene reaches it). */
+/* AUTO's budget in two corners a review found:
+ * - small budgets on long segments: an affine segment's q16 steps are
+ *   truncated, so its pixels drift by up to one unit (2^-16 texel) a pixel
+ *   and axis; the chord bound left no room for it, and a 256-pixel segment
+ *   of this long sliver (a 4096-pixel target) erred 0.0046 texel against a
+ *   budget of 95 q16 (0.0014). The chooser now spends the budget less
+ *   1.5 * 2^-16 L on the chord.
+ * - budgets above 256 texels act as 256 (raster.h): the chord bound took
+ *   the raw budget, and 16384 or 32768 texels drew other pixels.
+ * Each pixel's error is held to the budget plus exact mode's own error at
+ * that pixel (a 128-texel texture, one level). */
+void test_auto_budget_holds_for_small_and_huge_budgets(void)
+{
+    static const int32_t budgets[] = {95, 256, 1024, 256 * 65536, 16384 * 65536, INT32_MAX};
+    static uint16_t buf[4096 * 64], texels[128 * 128], ref[4096 * 64];
+    static double exact_err[4096 * 64];
+    fxl_vertex_t v[3];
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    fxl_target_t t;
+    char msg[200];
+    size_t b;
+    int x, y, k;
+    const int32_t X[3] = {249886150, 179360979, 265773593}, Y[3] = {3899407, 2107052, 30407},
+                  U[3] = {-6364, 19003, -9305}, Vv[3] = {-1229, -14849, 16223};
+    const uint32_t Q[3] = {1871715952u, 1851342u, 1533459u};
+    if (!FXL_HAVE_AUTO)
+        TEST_NEEDS(FXL_HAVE_AUTO);
+    for (k = 0; k < 3; k++) {
+        memset(&v[k], 0, sizeof v[k]);
+        v[k].x = X[k]; v[k].y = Y[k]; v[k].inv_w = Q[k]; v[k].u = U[k]; v[k].v = Vv[k]; v[k].color = 0xFFFF;
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 128, 128, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.mip = FXL_MIP_NONE;
+    d.persp = FXL_PERSP_EXACT;
+    probe_target(&t, buf, 4096, 64);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+    for (y = 0; y < 64; y++)
+        for (x = 0; x < 4096; x++)
+            if (probe_count[y * 4096 + x]) {
+                double eu, ev;
+                exact_uv(v, 128, 128, 0, x, y, &eu, &ev);
+                exact_err[y * 4096 + x] = hypot(wrap_err(probe_u[y * 4096 + x], eu, 128),
+                                                wrap_err(probe_v[y * 4096 + x], ev, 128));
+            }
+    d.persp = FXL_PERSP_AUTO;
+    for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
+        const double budget = (budgets[b] > 256 * 65536 ? 256 * 65536 : budgets[b]) / 65536.0;
+        double worst = 0;
+        d.auto_budget = budgets[b];
+        probe_target(&t, buf, 4096, 64);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+        for (y = 0; y < 64; y++)
+            for (x = 0; x < 4096; x++)
+                if (probe_count[y * 4096 + x]) {
+                    double eu, ev, e;
+                    exact_uv(v, 128, 128, 0, x, y, &eu, &ev);
+                    e = hypot(wrap_err(probe_u[y * 4096 + x], eu, 128), wrap_err(probe_v[y * 4096 + x], ev, 128)) -
+                        exact_err[y * 4096 + x];
+                    if (e > worst)
+                        worst = e;
+                }
+        snprintf(msg, sizeof msg, "budget %.6g texels: error beyond exact mode's %.6g texels", budget, worst);
+        TEST_MESSAGE(msg);
+        TEST_ASSERT_TRUE_MESSAGE(worst <= budget + 1e-6, msg);
+        /* every budget from 256 texels up draws the 256-texel image */
+        if (budgets[b] == 256 * 65536) {
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, 0));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            memcpy(ref, buf, sizeof ref);
+        } else if (budgets[b] > 256 * 65536) {
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, 0));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            TEST_ASSERT_EQUAL_MEMORY(ref, buf, sizeof ref);
+        }
+    }
+}
+
 void test_auto_whole_span_test_keeps_receding_strips_within_budget(void)
 {
     tri_t tris[1];
@@ -2518,6 +2599,7 @@ int main(void)
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
+    RUN_TEST(test_auto_budget_holds_for_small_and_huge_budgets);
     RUN_TEST(test_quad_steps_follow_their_parabola);
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);

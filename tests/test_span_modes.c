@@ -299,6 +299,85 @@ void test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter(void
     test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC (clamp and border wraps)");
 }
 
+/* Level n of a w x h chain is max(1, w >> n) x max(1, h >> n): once an axis
+ * is one texel it stops halving, and so must its coordinates. A border
+ * axis shows it: v from 1.55 to 1.9 heights is outside the texture on every
+ * level, bilinear's left tap too (half a texel back: still past the edge on
+ * a 1-texel level), so every pixel is the border colour, on the 1x1 level
+ * too (it was white there: v was halved past the short side, to 0.78 ..
+ * 0.95). Both
+ * axes (4x2 and 2x4), point and bilinear, nearest and linear mips, LOD per
+ * segment and per triangle, biased to the top and to the bottom level. */
+void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
+{
+    static uint16_t texels[16];
+    const uint16_t white = 0xFFFFu, red = 0xF800u;
+    int axis, filt, mip, lodm, bias, checked = 0;
+    char ctx[200];
+    int i;
+    for (i = 0; i < 16; i++)
+        texels[i] = white;
+    for (axis = 0; axis < 2; axis++)
+        for (filt = 0; filt < 2; filt++)
+            for (mip = FXL_MIP_NEAREST; mip <= FXL_MIP_LINEAR; mip++)
+                for (lodm = 0; lodm < 2; lodm++)
+                    for (bias = 0; bias < 2; bias++) {
+                        static uint16_t px[8 * 8];
+                        fxl_target_t t;
+                        fxl_texture_t tex;
+                        fxl_draw_t d;
+                        fxl_vertex_t v[3];
+                        int k;
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, axis ? 4 : 2, axis ? 2 : 4,
+                                                                        FXL_TEXFMT_RGB565, 3));
+                        tex.border = red;
+                        if (axis) { /* the border axis is the short one: v on 4x2 */
+                            tex.wrap_u = FXL_WRAP_REPEAT;
+                            tex.wrap_v = FXL_WRAP_BORDER;
+                        } else {    /* u on 2x4 */
+                            tex.wrap_u = FXL_WRAP_BORDER;
+                            tex.wrap_v = FXL_WRAP_REPEAT;
+                        }
+                        fxl_draw_defaults(&d);
+                        d.texture = &tex;
+                        d.depth = 0;
+                        d.persp = FXL_PERSP_EXACT;
+                        d.mip = (uint8_t)mip;
+                        d.filter = (uint8_t)filt;
+                        d.lod = (uint8_t)lodm;
+                        d.lod_bias_q8 = (int16_t)(bias ? 10 * 256 : -10 * 256);
+                        if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
+                            continue;
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 8, 8, 8, FXL_PIXFMT_RGB565));
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
+                        memset(v, 0, sizeof v);
+                        v[0].x = FXL_Q16_INT(-1); v[0].y = FXL_Q16_INT(-1);
+                        v[1].x = FXL_Q16_INT(20); v[1].y = FXL_Q16_INT(-1);
+                        v[2].x = FXL_Q16_INT(-1); v[2].y = FXL_Q16_INT(20);
+                        for (k = 0; k < 3; k++) {
+                            /* the border axis from 1.55 to 1.9, the other from
+                             * 0 to 0.8 */
+                            const int32_t b = k == 0 ? 101581 : 124518, o = k == 0 ? 0 : 52429;
+                            v[k].inv_w = 0x40000000u;
+                            v[k].color = 0xFFFF;
+                            v[k].u = axis ? o : b;
+                            v[k].v = axis ? b : o;
+                        }
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                        for (k = 0; k < 64; k++)
+                            if (px[k] != red) {
+                                snprintf(ctx, sizeof ctx,
+                                         "%s texture, border on %c, filter %d, mip %d, lod %d, bias %s: pixel %d is "
+                                         "%04X, want the border %04X",
+                                         axis ? "4x2" : "2x4", axis ? 'v' : 'u', filt, mip, lodm,
+                                         bias ? "+10 (the 1x1 level)" : "-10 (level 0)", k, px[k], red);
+                                TEST_FAIL_MESSAGE(ctx);
+                            }
+                        checked++;
+                    }
+    test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC and FXL_HAVE_MIPMAP (border wrap on mip levels)");
+}
+
 /* MODULATE is t * (c + 1) >> bits per channel (white keeps the texel);
  * DECAL shows the colour where the texel is keyed. Checked on the point
  * sampled texel the reference picks. */
@@ -439,6 +518,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_every_format_wrap_key_and_filter_matches_reference);
     RUN_TEST(test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter);
+    RUN_TEST(test_border_axis_stays_outside_on_levels_past_the_short_side);
     RUN_TEST(test_modulate_and_decal_follow_their_formulas);
     RUN_TEST(test_gouraud_matches_reference_within_one_step);
     RUN_TEST(test_point_and_bilinear_against_hand_computed_texels);

@@ -103,7 +103,11 @@ typedef struct fxl_draw {
     int16_t lod_bias_q8;          /* added to the LOD, 1/256 level units (any int16; the
                                    * level is then clamped to the chain) */
     fxl_q16_t auto_budget;        /* FXL_PERSP_AUTO: max texel error, q16; > 0, else
-                                   * FXL_ERR_RANGE; budgets above 256 texels act as 256 */
+                                   * FXL_ERR_RANGE; budgets above 256 texels act as 256.
+                                   * Level-0 texels, on top of exact mode's own error;
+                                   * on mip level n a segment's q16 steps of that level
+                                   * may drift by up to L 2^(n-16) more (L 2^-16 of the
+                                   * level's own texels) */
 } fxl_draw_t;
 
 /* Counters a draw adds to (pass NULL when not wanted). */
