@@ -72,7 +72,7 @@
  * the rest always takes the generic walk). Each combination of target format,
  * depth and filter has its own pixel loop, and in speed-optimised builds its
  * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 226 KB for all
- * (docs/bench/footprint.txt: 231,164 B linked; 85,898 B with
+ * (docs/bench/footprint.txt: 231,386 B linked; 86,142 B with
  * FXL_FAST_NATIVE 0 and FXL_FAST_NO_DEPTH 0); at -Os a pixel loop of
  * ~0.2 KB. A product that drives one panel format, or always draws with
  * depth, leaves the rest out.
