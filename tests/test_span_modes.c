@@ -149,6 +149,17 @@ static void check_refused(const fxl_draw_t *d, const fxl_vertex_t v[3], const ch
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, drawn, ctx);
 }
 
+/* Exact perspective, no depth test, the given mip mode and filter. */
+static void exact_draw(fxl_draw_t *d, const fxl_texture_t *tex, int mip, int filter)
+{
+    fxl_draw_defaults(d);
+    d->texture = tex;
+    d->depth = 0;
+    d->persp = FXL_PERSP_EXACT;
+    d->mip = (uint8_t)mip;
+    d->filter = (uint8_t)filter;
+}
+
 void test_every_format_wrap_key_and_filter_matches_reference(void)
 {
     static const fxl_texfmt_t fmts[3] = {FXL_TEXFMT_RGB565, FXL_TEXFMT_L8, FXL_TEXFMT_I8};
@@ -173,12 +184,7 @@ void test_every_format_wrap_key_and_filter_matches_reference(void)
                             tex.flags = FXL_TEXF_KEY;
                             tex.key = f == 0 ? 0x1234 : 77;
                         }
-                        fxl_draw_defaults(&d);
-                        d.texture = &tex;
-                        d.depth = 0;
-                        d.persp = FXL_PERSP_EXACT;
-                        d.mip = FXL_MIP_NONE;
-                        d.filter = (uint8_t)filt;
+                        exact_draw(&d, &tex, FXL_MIP_NONE, filt);
                         /* Left out of this build: other formats, wraps and the
                          * key without FXL_HAVE_GENERIC, bilinear without
                          * FXL_HAVE_BILINEAR. Refused; its random triangles are
@@ -219,6 +225,28 @@ void test_every_format_wrap_key_and_filter_matches_reference(void)
     TEST_MESSAGE(msg);
 }
 
+/* Draw a triangle that covers all of an 8 x 8 RGB565 target (cleared to
+ * SENTINEL first) with the vertex texture coordinates u[k], v[k] (q16). */
+static void draw_over_8x8(const fxl_draw_t *d, const int32_t u[3], const int32_t v[3], uint16_t px[64])
+{
+    fxl_target_t t;
+    fxl_vertex_t vx[3];
+    int k;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 8, 8, 8, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
+    memset(vx, 0, sizeof vx);
+    vx[0].x = FXL_Q16_INT(-1); vx[0].y = FXL_Q16_INT(-1);
+    vx[1].x = FXL_Q16_INT(20); vx[1].y = FXL_Q16_INT(-1);
+    vx[2].x = FXL_Q16_INT(-1); vx[2].y = FXL_Q16_INT(20);
+    for (k = 0; k < 3; k++) {
+        vx[k].inv_w = 0x40000000u;
+        vx[k].color = 0xFFFF;
+        vx[k].u = u[k];
+        vx[k].v = v[k];
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, d, vx, NULL));
+}
+
 /* Clamp and border axes hold texel coordinates as a saturated int32 in
  * 16.16 texels: +-32768 texels. Coordinates far beyond it on the negative
  * side must still read the near (left or top) edge, and bilinear's half
@@ -248,10 +276,9 @@ void test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter(void
                     for (pi = 0; pi < sizeof periods_q16 / sizeof periods_q16[0]; pi++)
                         for (ramp = 0; ramp < 2; ramp++) {
                             static uint16_t px[8 * 8];
-                            fxl_target_t t;
                             fxl_texture_t tex;
                             fxl_draw_t d;
-                            fxl_vertex_t v[3];
+                            int32_t cu[3], cv[3];
                             const int32_t c = periods_q16[pi];
                             const int neg = c < 0;
                             /* the ramp runs from 0.75 of c to 1.25 of c */
@@ -262,28 +289,14 @@ void test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter(void
                                                                             FXL_TEXFMT_RGB565, 1));
                             tex.wrap_u = tex.wrap_v = (uint8_t)wrap;
                             tex.border = border;
-                            fxl_draw_defaults(&d);
-                            d.texture = &tex;
-                            d.depth = 0;
-                            d.persp = FXL_PERSP_EXACT;
-                            d.mip = FXL_MIP_NONE;
-                            d.filter = (uint8_t)filt;
+                            exact_draw(&d, &tex, FXL_MIP_NONE, filt);
                             if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
                                 continue;
-                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 8, 8, 8, FXL_PIXFMT_RGB565));
-                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
-                            memset(v, 0, sizeof v);
-                            v[0].x = FXL_Q16_INT(-1); v[0].y = FXL_Q16_INT(-1);
-                            v[1].x = FXL_Q16_INT(20); v[1].y = FXL_Q16_INT(-1);
-                            v[2].x = FXL_Q16_INT(-1); v[2].y = FXL_Q16_INT(20);
                             for (k = 0; k < 3; k++) {
-                                const int32_t cv = k == 1 ? c1 : c0;
-                                v[k].inv_w = 0x40000000u;
-                                v[k].color = 0xFFFF;
-                                v[k].u = axis ? 32768 : cv;
-                                v[k].v = axis ? cv : 32768;
+                                cu[k] = axis ? 32768 : (k == 1 ? c1 : c0);
+                                cv[k] = axis ? (k == 1 ? c1 : c0) : 32768;
                             }
-                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                            draw_over_8x8(&d, cu, cv, px);
                             for (k = 0; k < 64; k++)
                                 if (px[k] != want) {
                                     snprintf(ctx, sizeof ctx,
@@ -323,10 +336,9 @@ void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
                 for (lodm = 0; lodm < 2; lodm++)
                     for (bias = 0; bias < 2; bias++) {
                         static uint16_t px[8 * 8];
-                        fxl_target_t t;
                         fxl_texture_t tex;
                         fxl_draw_t d;
-                        fxl_vertex_t v[3];
+                        int32_t cu[3], cv[3];
                         int k;
                         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, axis ? 4 : 2, axis ? 2 : 4,
                                                                         FXL_TEXFMT_RGB565, 3));
@@ -338,32 +350,19 @@ void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
                             tex.wrap_u = FXL_WRAP_BORDER;
                             tex.wrap_v = FXL_WRAP_REPEAT;
                         }
-                        fxl_draw_defaults(&d);
-                        d.texture = &tex;
-                        d.depth = 0;
-                        d.persp = FXL_PERSP_EXACT;
-                        d.mip = (uint8_t)mip;
-                        d.filter = (uint8_t)filt;
+                        exact_draw(&d, &tex, mip, filt);
                         d.lod = (uint8_t)lodm;
                         d.lod_bias_q8 = (int16_t)(bias ? 10 * 256 : -10 * 256);
                         if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
                             continue;
-                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 8, 8, 8, FXL_PIXFMT_RGB565));
-                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
-                        memset(v, 0, sizeof v);
-                        v[0].x = FXL_Q16_INT(-1); v[0].y = FXL_Q16_INT(-1);
-                        v[1].x = FXL_Q16_INT(20); v[1].y = FXL_Q16_INT(-1);
-                        v[2].x = FXL_Q16_INT(-1); v[2].y = FXL_Q16_INT(20);
                         for (k = 0; k < 3; k++) {
                             /* the border axis from 1.55 to 1.9, the other from
                              * 0 to 0.8 */
                             const int32_t b = k == 0 ? 101581 : 124518, o = k == 0 ? 0 : 52429;
-                            v[k].inv_w = 0x40000000u;
-                            v[k].color = 0xFFFF;
-                            v[k].u = axis ? o : b;
-                            v[k].v = axis ? b : o;
+                            cu[k] = axis ? o : b;
+                            cv[k] = axis ? b : o;
                         }
-                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                        draw_over_8x8(&d, cu, cv, px);
                         for (k = 0; k < 64; k++)
                             if (px[k] != red) {
                                 snprintf(ctx, sizeof ctx,
