@@ -192,10 +192,6 @@ fxl_status_t fxl_band_render(fxl_band_t *b, uint16_t clear_rgb565, fxl_stats_t *
     if (b->panel->width != b->width || b->panel->height != b->height) return FXL_ERR_ARG;
     st = fxl_panel_set_window(b->panel, 0, 0, b->width, b->height);
     if (st != FXL_OK) return st;
-    /* set_window waited until nothing is in flight: both buffers are free,
-     * whatever happened to the panel's counters since the last frame
-     * (fxl_panel_init zeroes them). */
-    b->seq[0] = b->seq[1] = b->panel->started;
 
     for (k = 0; k < b->band_count; k++) {
         const int i = (int)(k & 1);

@@ -151,12 +151,25 @@ static uint32_t range3(int32_t a, int32_t b, int32_t c)
     return (uint32_t)hi - (uint32_t)lo;
 }
 
-/* The budget (> 0, check_draw) capped at 256 texels, less 1/16 of itself
- * and `texels` (q16) for the walk's rounding; <= 0 when nothing is left. */
+/* The budget (> 0, check_draw) capped at 256 texels (raster.h), q16. */
+static inline int32_t budget_capped(const fxl_draw_t *d)
+{
+    return d->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : d->auto_budget;
+}
+
+/* The capped budget less 1/16 of itself and `texels` (q16) for the walk's
+ * rounding; <= 0 when nothing is left. */
 static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
 {
-    const int32_t b = d->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : d->auto_budget;
+    const int32_t b = budget_capped(d);
     return b - (b >> 4) - texels;
+}
+
+/* q8 log2 in texels of a budget of b q16; for b <= 0 a value that lets no
+ * segment through. */
+static inline int32_t log2_budget_q8(int32_t b)
+{
+    return b > 0 ? fxl__log2_q8_32((uint32_t)b) - 16 * 256 : INT32_MIN / 4;
 }
 
 /* The vertex test: perspective interpolation at a point with screen-space
@@ -233,11 +246,10 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * unit a pixel on each axis: under 1.5 2^cap units for the longest
          * (6 2^-16 texel at 4 pixels, 0.006 at 256: nothing against the
          * default 1/4, what keeps a budget of 1/256 on a 256-pixel span). */
-        const int32_t bc = (tri->draw->auto_budget > ((int32_t)1 << 24) ? (int32_t)1 << 24 : tri->draw->auto_budget) -
-                           (int32_t)((3u << cap) + 1u) / 2;
-        lba = ba > 0 ? fxl__log2_q8_32((uint32_t)ba) - 16 * 256 : INT32_MIN / 4;
-        lbq = bq > 0 ? fxl__log2_q8_32((uint32_t)bq) - 16 * 256 : INT32_MIN / 4;
-        lb = bc > 0 ? fxl__log2_q8_32((uint32_t)bc) - 16 * 256 : INT32_MIN / 4;
+        const int32_t bc = budget_capped(tri->draw) - (int32_t)((3u << cap) + 1u) / 2;
+        lba = log2_budget_q8(ba);
+        lbq = log2_budget_q8(bq);
+        lb = log2_budget_q8(bc);
         /* quadratic steps take a segment's change as int32: not where it
          * may exceed 2^15 texels (uv_wide) */
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0 &&

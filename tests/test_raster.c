@@ -524,6 +524,15 @@ static double wrap_err(double got, double want, double period)
     return e > period / 2 ? period - e : e;
 }
 
+/* |(u, v) - exact| in level-0 texels at pixel (x, y), as the probe recorded
+ * it for a target `stride` pixels wide, of a tw x tw texture. */
+static double probe_error_at(const fxl_vertex_t v[3], int tw, int affine, int stride, int x, int y)
+{
+    double eu, ev;
+    exact_uv(v, tw, tw, affine, x, y, &eu, &ev);
+    return hypot(wrap_err(probe_u[y * stride + x], eu, tw), wrap_err(probe_v[y * stride + x], ev, tw));
+}
+
 /* An FXL_PERSP_AUTO draw (default budget, no depth) of a 64 x 64 RGB565
  * texture with one level, over the caller's texels. */
 static void auto_draw_64(fxl_draw_t *d, fxl_texture_t *tex, uint16_t *texels)
@@ -544,9 +553,7 @@ static double probed_max_error(const fxl_vertex_t v[3])
     for (y = 0; y < 240; y++)
         for (x = 0; x < 320; x++)
             if (probe_count[y * 320 + x]) {
-                double eu, ev, e;
-                exact_uv(v, 64, 64, 0, x, y, &eu, &ev);
-                e = hypot(wrap_err(probe_u[y * 320 + x], eu, 64), wrap_err(probe_v[y * 320 + x], ev, 64));
+                const double e = probe_error_at(v, 64, 0, 320, x, y);
                 e_max = e > e_max ? e : e_max;
             }
     return e_max;
@@ -620,9 +627,7 @@ static double draw_max_error(const tri_t *tris, int n, const fxl_draw_t *d, int 
         for (y = 0; y < 240; y++)
             for (x = 0; x < 320; x++)
                 if (probe_count[y * 320 + x]) {
-                    double eu, ev, e;
-                    exact_uv(tris[k].v, tw, tw, affine_ref, x, y, &eu, &ev);
-                    e = hypot(wrap_err(probe_u[y * 320 + x], eu, tw), wrap_err(probe_v[y * 320 + x], ev, tw));
+                    const double e = probe_error_at(tris[k].v, tw, affine_ref, 320, x, y);
                     if (e > maxe)
                         maxe = e;
                 }
@@ -1344,12 +1349,8 @@ void test_auto_budget_holds_for_small_and_huge_budgets(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
     for (y = 0; y < 64; y++)
         for (x = 0; x < 4096; x++)
-            if (probe_count[y * 4096 + x]) {
-                double eu, ev;
-                exact_uv(v, 128, 128, 0, x, y, &eu, &ev);
-                exact_err[y * 4096 + x] = hypot(wrap_err(probe_u[y * 4096 + x], eu, 128),
-                                                wrap_err(probe_v[y * 4096 + x], ev, 128));
-            }
+            if (probe_count[y * 4096 + x])
+                exact_err[y * 4096 + x] = probe_error_at(v, 128, 0, 4096, x, y);
     d.persp = FXL_PERSP_AUTO;
     for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
         const double budget = (budgets[b] > 256 * 65536 ? 256 * 65536 : budgets[b]) / 65536.0;
@@ -1360,10 +1361,7 @@ void test_auto_budget_holds_for_small_and_huge_budgets(void)
         for (y = 0; y < 64; y++)
             for (x = 0; x < 4096; x++)
                 if (probe_count[y * 4096 + x]) {
-                    double eu, ev, e;
-                    exact_uv(v, 128, 128, 0, x, y, &eu, &ev);
-                    e = hypot(wrap_err(probe_u[y * 4096 + x], eu, 128), wrap_err(probe_v[y * 4096 + x], ev, 128)) -
-                        exact_err[y * 4096 + x];
+                    const double e = probe_error_at(v, 128, 0, 4096, x, y) - exact_err[y * 4096 + x];
                     if (e > worst)
                         worst = e;
                 }

@@ -26,8 +26,8 @@
  *            report the transfer over with fxl_port_transfer_done() or call
  *            fxl_panel_init() again; a completion that still arrives after
  *            fxl_panel_init() is absorbed (the next write counts from it).
- *            The band renderer needs nothing: each frame starts from the
- *            panel's counters.
+ *            The band renderer needs nothing: it waits only for numbers
+ *            in flight.
  * Callbacks return FXL_OK or a negative status; the driver turns a failure
  * into FXL_ERR_IO. The driver never calls cmd() or pixels() while a pixel
  * transfer is in flight, so the HAL needs no queue.
@@ -287,8 +287,8 @@ typedef struct fxl_band {
     uint32_t bin_cap, bin_used;
     uint32_t first_unbinned; /* triangles from here on use the fallback scan */
     const fxl_draw_t *checked; /* the draw fxl_band_add last found valid this frame */
-    uint32_t seq[2];         /* transfer number that last sent buf[i] (each frame starts
-                              * with the panel's count: none in flight) */
+    uint32_t seq[2];         /* transfer number that last sent buf[i]; one not in flight
+                              * (0, completed, from before a panel re-init) is not waited for */
 } fxl_band_t;
 
 /* Bind the band renderer to an initialised panel (frame = its current
