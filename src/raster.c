@@ -345,6 +345,14 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
         tri.seg_log2 = FXL__AUTO_LOD_LOG2;   /* the affine and q_x = 0 cases */
 #endif
 #endif
+    /* A clamp/border coordinate saturates far outside (span.c): stepped
+     * towards a saturated end, it would cross the texture too late. Rare
+     * (|u| of 2^15 texels at a vertex), so such a triangle divides at
+     * every pixel, in every mode. */
+    if (FXL_HAVE_GENERIC && (tri.uv_wide & 2u)) {
+        tri.seg_log2 = 0;
+        tri.auto_seg = 0;
+    }
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);
     if (!fn)   /* check_build refused these already; kept against a NULL call */

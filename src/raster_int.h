@@ -100,7 +100,7 @@ typedef struct fxl__tri {
     void (*lean_next)(const struct fxl__tri *tri, struct fxl__lean *s, uint32_t mult);
     fxl__recip_t rc_qmin;        /* fxl__recip(q_min), with q_const */
 
-    int seg_log2;                /* log2 of the segment length; -1: whole span */
+    int seg_log2;                /* log2 of the segment length, 0..8 */
     /* FXL_PERSP_AUTO (auto.c, auto.h): auto_seg 1, each segment's length
      * comes from the error bound at its correction point; 2, every segment
      * is quadratic, of length 2^seg_log2 (0: one fixed length, as other modes) */
@@ -153,7 +153,10 @@ typedef struct fxl__tri {
      * 2^15 texels or more apart, beyond what the q16 coordinates' 32 bits
      * tell apart (they hold u modulo 2^16 texels, and a segment's change
      * is taken the short way round). Such triangles take the generic walk,
-     * which steps from the 64-bit values, with affine segments only. */
+     * which steps from the 64-bit values, with affine segments only (bit 0).
+     * Bit 1: a clamp or border axis with a vertex near or past the 2^15
+     * texels its saturated int32 coordinates hold; every pixel is then a
+     * correction point (raster.c). */
     uint8_t uv_wide;
 
     /* derived once per triangle for the span walk (fxl__span_setup) */

@@ -140,16 +140,18 @@ static inline int fit_shift(const int64_t a[3], int bits)
 
 /* Rebase three normalised q16 coordinates by whole periods (repeat) or
  * pairs of periods (mirror) so the smallest lies in [0, 1) or [0, 2).
- * Returns whether the axis is wide (raster_int.h, uv_wide): repeat or
- * mirror, and the largest rebased value at 2^30 q16 texels or more of a
+ * Returns how the axis is wide (raster_int.h, uv_wide): 1 for repeat or
+ * mirror with the largest rebased value at 2^30 q16 texels or more of a
  * level 0 2^lg texels across - normalised, 2^(30 - lg). Any two points of
  * the triangle lie less than 2^30 apart otherwise (u over it is between
- * its vertex values): half the 2^31 of the short way. Clamp axes step
- * from saturated int32 values: never wide. */
+ * its vertex values): half the 2^31 of the short way. 2 for clamp and
+ * border with a vertex at 2^31 - 2^16 q16 texels or more from 0: its
+ * correction points may saturate (span.c, sat_i32_bits), and a step
+ * towards a saturated value crosses the texture at the wrong pixel. */
 static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[3])
 {
-    int32_t mn = c[0], mx = c[0];
-    int64_t base = 0;
+    int32_t mn = c[0], mx = c[0], base = 0;
+    uint32_t lim = 0x7FFF0000u;   /* clamp/border: 2^31 - 2^16 */
     int i;
 
     for (i = 1; i < 3; i++) {
@@ -158,13 +160,18 @@ static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[
         if (c[i] > mx)
             mx = c[i];
     }
-    if (wrap == FXL_WRAP_REPEAT)
-        base = (int64_t)fxl__asr32(mn, 16) * 65536;
-    else if (wrap == FXL_WRAP_MIRROR)
-        base = (int64_t)fxl__asr32(mn, 17) * 131072;
+    if (wrap <= FXL_WRAP_MIRROR) {
+        /* whole periods (repeat) or pairs of them (mirror), floored */
+        const int sh = wrap == FXL_WRAP_REPEAT ? 16 : 17;
+        base = fxl__i32_of_bits((uint32_t)fxl__asr32(mn, sh) << sh);
+        lim = 1u << 30;
+    }
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
-    return wrap <= FXL_WRAP_MIRROR && (int64_t)mx - base >= (int32_t)((1u << 30) >> lg);
+    lim >>= lg;
+    if ((int64_t)mx - base >= (int64_t)lim || (FXL_HAVE_GENERIC && mn - base <= -(int64_t)lim))
+        return 1 + (wrap > FXL_WRAP_MIRROR);
+    return 0;
 }
 
 /* Build the plane of attribute a_i * q_i, scaled below 2^30. */

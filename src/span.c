@@ -1854,7 +1854,7 @@ fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
 
 void fxl__span_setup(fxl__tri_t *tri)
 {
-    int i, k = tri->seg_log2 < 0 ? 0 : tri->seg_log2;
+    int i, k = tri->seg_log2;
     tri->pl[PQ] = &tri->q;
     tri->pl[PZ] = &tri->z;
     for (i = 0; i < FXL__NATTR; i++)

@@ -312,6 +312,89 @@ void test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter(void
     test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC (clamp and border wraps)");
 }
 
+/* A clamp axis's coordinate that runs from inside the +-32768-texel window
+ * of its int32 values to far outside it within one segment must still
+ * cross the texture where the map does. Stepped from the saturated end
+ * value, the chord crossed it too late: with v falling 2000 texels a pixel
+ * through 0 at x = 16, an affine (or AUTO) span from +31000 to a saturated
+ * -32768 crossed 0 at x = 31, and pixels 16..30 read the far edge. A 32 x 32
+ * texture of distinct texels, 64 x 4 target, u constant (texel 16), v
+ * linear in x (q constant, so every mode's map is the affine one); both
+ * axes, both clamp-type wraps, every persp mode, point and bilinear; each
+ * pixel must be the edge texel (or border) on its side of the crossing. */
+static uint16_t cross_tex[32 * 32];
+
+static void draw_cross_quad(const fxl_draw_t *d, int axis, double c0, double c64, uint16_t px[64 * 4])
+{
+    fxl_target_t t;
+    fxl_vertex_t q[4];
+    int k;
+    const double xs[4] = {0, 64, 64, 0}, ys[4] = {0, 0, 4, 4};
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, 64, 4, 64, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear(&t, SENTINEL));
+    for (k = 0; k < 4; k++) {
+        const double c = xs[k] > 0 ? c64 : c0;   /* periods */
+        q[k] = test_vertex(xs[k], ys[k], 0.5, axis ? 16.5 / 32 : c, axis ? c : 16.5 / 32, 0xFFFF);
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, d, q, NULL));
+    {
+        const fxl_vertex_t q2[3] = {q[0], q[2], q[3]};
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, d, q2, NULL));
+    }
+}
+
+void test_clamp_ramps_out_of_the_int32_window_cross_the_texture_where_the_map_does(void)
+{
+    /* texels a pixel (falling) and the x where the coordinate is 0 */
+    static const double slopes[] = {2000, 16000, 300};
+    static const double zeros[] = {16, 5, 40};
+    static const int16_t modes[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, FXL_PERSP_AUTO, 4, 8, 16, 32, 256};
+    const uint16_t border = 0xFFFFu;
+    size_t si, mi;
+    int axis, wrap, filt, k, checked = 0;
+    char ctx[220];
+    for (k = 0; k < 32 * 32; k++)
+        cross_tex[k] = (uint16_t)(0x0400u + (uint32_t)k);   /* distinct, never SENTINEL or white */
+    for (si = 0; si < sizeof slopes / sizeof slopes[0]; si++)
+        for (axis = 0; axis < 2; axis++)
+            for (wrap = FXL_WRAP_CLAMP; wrap <= FXL_WRAP_BORDER; wrap++)
+                for (filt = 0; filt < 2; filt++)
+                    for (mi = 0; mi < sizeof modes / sizeof modes[0]; mi++) {
+                        static uint16_t px[64 * 4];
+                        fxl_texture_t tex;
+                        fxl_draw_t d;
+                        /* in periods of 32 texels: v(x) = (zero - x) slope */
+                        const double c0 = zeros[si] * slopes[si] / 32, c64 = (zeros[si] - 64) * slopes[si] / 32;
+                        int x, y;
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, cross_tex, 32, 32, FXL_TEXFMT_RGB565, 1));
+                        tex.wrap_u = tex.wrap_v = (uint8_t)wrap;
+                        tex.border = border;
+                        exact_draw(&d, &tex, FXL_MIP_NONE, filt);
+                        d.persp = modes[mi];
+                        if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
+                            continue;
+                        draw_cross_quad(&d, axis, c0, c64, px);
+                        for (y = 0; y < 4; y++)
+                            for (x = 0; x < 64; x++) {
+                                /* the far side is texel 31 (before the zero), the near one 0 */
+                                const int edge = x + 0.5 < zeros[si] ? 31 : 0;
+                                const uint16_t want = wrap == FXL_WRAP_BORDER
+                                                          ? border
+                                                          : cross_tex[axis ? edge * 32 + 16 : 16 * 32 + edge];
+                                if (px[y * 64 + x] != want) {
+                                    snprintf(ctx, sizeof ctx,
+                                             "axis %c wrap %d filter %d persp %d, %.0f texels a pixel through 0 at "
+                                             "x = %.0f: pixel (%d,%d) is %04X, want %04X",
+                                             axis ? 'v' : 'u', wrap, filt, modes[mi], slopes[si], zeros[si], x, y,
+                                             px[y * 64 + x], want);
+                                    TEST_FAIL_MESSAGE(ctx);
+                                }
+                            }
+                        checked++;
+                    }
+    test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC (clamp and border wraps)");
+}
+
 /* Level n of a w x h chain is max(1, w >> n) x max(1, h >> n): once an axis
  * is one texel it stops halving, and so must its coordinates. A border
  * axis shows it: v from 1.55 to 1.9 heights is outside the texture on every
@@ -517,6 +600,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_every_format_wrap_key_and_filter_matches_reference);
     RUN_TEST(test_clamp_and_border_far_outside_read_the_near_edge_with_every_filter);
+    RUN_TEST(test_clamp_ramps_out_of_the_int32_window_cross_the_texture_where_the_map_does);
     RUN_TEST(test_border_axis_stays_outside_on_levels_past_the_short_side);
     RUN_TEST(test_modulate_and_decal_follow_their_formulas);
     RUN_TEST(test_gouraud_matches_reference_within_one_step);

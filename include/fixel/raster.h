@@ -24,7 +24,10 @@
  *   periods, in texels), plus 2^-27 |u| and 2^-17: about 3.2 * 2^-30 U R for
  *   U texels of range across a triangle and a depth ratio R (measured 0.15
  *   to 0.55 of it). 1/64 texel needs U R below ~10^7: split triangles that
- *   span many periods far into the distance.
+ *   span many periods far into the distance. A triangle with a clamp or
+ *   border vertex coordinate 32767 texels (of level 0) or more from 0 is
+ *   divided at every pixel whatever `persp` says: such coordinates
+ *   saturate, and cannot be stepped between.
  * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
  *   any u, v. Values outside never cause undefined behaviour: planes are
  *   evaluated in 64-bit modular arithmetic and clamped to the vertex range.
