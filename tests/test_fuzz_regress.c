@@ -4,11 +4,14 @@
  * checked by tests/fuzz/fuzz_case.h: status codes, canaries and guard
  * pages, clip, determinism, exact coverage, stats). Each entry also fixes the
  * exact status and the number of pixels written, measured when it was added.
- * So far the fuzzers (10^6 cases per CI run, 2 x 10^7 under ASan+UBSan, 10^5
- * libFuzzer runs) have found nothing in the core, so the table holds the
- * seed inputs below (edge byte patterns and random cases covering the error
- * paths) plus hand-made extreme cases; add every future finding here with the
- * bytes printed by fixel-fuzz ("FINDING ... bytes <hex>"). A change to the
+ * The checks of memory, status, clip and coverage (10^6 cases per CI run,
+ * 2 x 10^7 under ASan+UBSan, 10^5 libFuzzer runs) have found nothing in the
+ * core, so the table holds the seed inputs below (edge byte patterns and
+ * random cases covering the error paths) plus hand-made extreme cases. Check
+ * 7 (texel values against exact mode's and AUTO's error bounds) found one
+ * core defect in its first 10^5 cases: the last entry. Add every future
+ * finding here with the bytes printed by fixel-fuzz ("FINDING ... bytes
+ * <hex>"). A change to the
  * decoder must keep every input here decoding as before (the level-row
  * vertex layout, for one, skips the layout bytes these inputs use).
  *
@@ -111,7 +114,21 @@ static const replay_t replays[] = {
     {"f532f7229b1759d2e4a900611b5390ea9d8a2453a1e0e490606d6efa397e4a7a"
          "f8b56162f6dae928989842bdfb4d7f406a0551f1fb4e7ded49247a061fa89ff5"
          "713e4b0ac822d364037a888f463eef79c8093e7d44d827b8fd494b7e9bfe7984",
-     FXL_ERR_RANGE, 0}
+     FXL_ERR_RANGE, 0},
+    /* The first finding of check 7 (texel values; seed 1 case 96012): AUTO,
+     * bilinear, a 1 x 32 L8 texture clamped on v, v from -32768 periods at
+     * a vertex: the correction points saturated at -32768 texels, and the
+     * 13-pixel span stepped from +16599 towards that, reading texel 31
+     * where v crosses 0 at pixel 28 and the map reads texel 0. Fixed by
+     * dividing at every pixel where a clamp/border vertex reaches the
+     * saturation (setup.c rebase, raster.c). */
+    {"b24b3e0d7824fd1e48ecdf6f41ffc2f3dea126187558c99c1995e22a18e554f6"
+         "41c2a65f91df70bfe176471d13f961a4de64229b325752531a4ecafea769ad3d"
+         "a1c46951b68107652becae01f3b78c8ed98af276bfaa1c59bcb490406c56bb81"
+         "3d7fb3ac3426a1037d612859f66e905eb8349ea40a3fc30a9e2c8d20f1523a77"
+         "c35c0f7d543b6779b755dc6248148ed6c8056f2fabc15c7a1a44a0a8a3dcd5b6"
+         "d24c2455d9bb54e678f99bd930cb15f9ab6e94ce68831ca25de2aacdc3c29e26",
+     FXL_OK, 35}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

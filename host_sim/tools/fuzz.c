@@ -86,7 +86,7 @@ static void usage(void)
 int main(int argc, char **argv)
 {
     uint64_t cases = 100000, seed = 1, start = 0, i, findings = 0, stop_after = 10;
-    uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0, n_pipe = 0, n_pipe_ok = 0, n_tris = 0, n_placed = 0;
+    uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0, n_pipe = 0, n_pipe_ok = 0, n_tris = 0, n_placed = 0, n_texel = 0, n_texel_wide = 0;
     size_t nbytes = 192;
     const char *replay = NULL;
     int quiet = 0, a;
@@ -179,6 +179,8 @@ int main(int argc, char **argv)
         n_pipe_ok += (uint64_t)(o.pipe && o.status == FXL_OK);
         n_tris += o.emitted;
         n_placed += o.placed;
+        n_texel += o.texel_checked;
+        n_texel_wide += o.texel_wide;
         if (!quiet && (i - start + 1) % 1000000u == 0) {
             fprintf(stderr, "fixel-fuzz: %llu cases, %.0f cases/s\n", (unsigned long long)(i - start + 1),
                     (double)(i - start + 1) / (now_s() - t0));
@@ -188,12 +190,14 @@ int main(int argc, char **argv)
         double dt = now_s() - t0;
         uint64_t done = i - start;
         printf("fixel-fuzz: seed %llu, cases %llu..%llu: %llu run in %.1f s (%.0f cases/s), %llu valid "
-               "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written; "
+               "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written "
+               "(%llu held to their exact or AUTO texel footprint, %llu too wide to check); "
                "%llu front-end cases (%llu valid, %llu screen triangles, %llu mesh triangles placed against a "
                "double projection); %llu finding(s)\n",
                (unsigned long long)seed, (unsigned long long)start, (unsigned long long)(start + done),
                (unsigned long long)done, dt, dt > 0 ? (double)done / dt : 0.0, (unsigned long long)n_ok,
                (unsigned long long)n_equal, (unsigned long long)n_err, (unsigned long long)n_px,
+               (unsigned long long)n_texel, (unsigned long long)n_texel_wide,
                (unsigned long long)n_pipe, (unsigned long long)n_pipe_ok, (unsigned long long)n_tris,
                (unsigned long long)n_placed, (unsigned long long)findings);
     }

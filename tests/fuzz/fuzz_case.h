@@ -41,11 +41,21 @@
  *    nothing else, with segments inside the clip rectangle.
  *  6 stats: pixels written == stats.pixels; a zero-area triangle is counted
  *    as culled_degenerate.
+ *  7 texels: where a draw promises an error bound - FXL_PERSP_EXACT its
+ *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget
+ *    - on level 0 (one level or FXL_MIP_NONE), texenv REPLACE, flat shade:
+ *    every written pixel holds a texel (point) or lies channel by channel
+ *    within the texels (bilinear) of the texture footprint of the exact
+ *    (u, v) widened by the bound. The texels are random, so a wrong texel
+ *    is caught, and a bound a core path breaks is found. Pixels whose
+ *    widened footprint spans more than FZ_TEXEL_SPAN texels an axis are
+ *    left unchecked (counted apart).
  */
 #ifndef FXL_FUZZ_CASE_H
 #define FXL_FUZZ_CASE_H
 
 #include <fcntl.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -633,6 +643,8 @@ typedef struct fz_outcome {
     int pipe;               /* a front-end case (fuzz_pipe.h) */
     uint32_t emitted;       /* front end: screen triangles emitted */
     uint32_t placed;        /* front end: mesh triangles found where the double projection puts them */
+    uint32_t texel_checked; /* check 7: pixels held to their texel footprint */
+    uint32_t texel_wide;    /* check 7: pixels whose footprint was too wide to check */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */
@@ -869,6 +881,144 @@ static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *
     return 0;
 }
 
+/* ---- check 7: texel values --------------------------------------------------- */
+
+#define FZ_TEXEL_SPAN 16   /* widest footprint (texels an axis) check 7 examines */
+
+/* Exact mode's error bound, per axis in level-0 texels, at the pixel centre
+ * (X, Y) (sub-pixel units) of the case's triangle: test_raster's
+ * exact_plane_bound - the planes of s = u q kept below 2^30 (< 1.51 units of
+ * 2^-29 max |s_i| at a vertex: 3.2 2^-30 max |u_i| q_i / q_min texels), the
+ * reciprocal's 2^-28 of |u|, the q16 rounding, setup's q = inv_w >> 1 when
+ * some inv_w >= 2^31 - plus what that test's targets do not reach: the
+ * 2^-21-unit rounding of each plane's gradients (FXL__PF = 20), times the
+ * distance D (sub-pixels) from vertex 0 where the planes are anchored. It
+ * moves s by D 2^-21 units and q by D 2^-21 of q's units (q_max scaled to
+ * >= 2^30), i.e. D 2^-51 q_max / q_min relative. u is rebased as setup does
+ * (whole periods for repeat, pairs for mirror). */
+static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, double b[2])
+{
+    double qmin = 4294967296.0, qmax = 0, qtrunc = 0, D;
+    int axis, i;
+    for (i = 0; i < 3; i++) {
+        const double q = (double)c->v[i].inv_w;
+        if (q < qmin)
+            qmin = q;
+        if (q > qmax)
+            qmax = q;
+        if (c->v[i].inv_w >= 0x80000000u)
+            qtrunc = 1;
+    }
+    if (qtrunc)
+        qtrunc = 1.0 / floor(qmin / 2);
+    D = fabs((double)(X - ref_snap(c->v[0].x))) + fabs((double)(Y - ref_snap(c->v[0].y)));
+    for (axis = 0; axis < 2; axis++) {
+        const uint8_t wrap = axis ? c->tex.wrap_v : c->tex.wrap_u;
+        const double side = ldexp(1.0, axis ? c->tex.log2_h : c->tex.log2_w);
+        double mn = 1e300, mx = -1e300, base = 0, m = 0, umax = 0;
+        for (i = 0; i < 3; i++) {
+            const double u = (axis ? c->v[i].v : c->v[i].u) / 65536.0;
+            mn = u < mn ? u : mn;
+            mx = u > mx ? u : mx;
+        }
+        if (wrap == FXL_WRAP_REPEAT)
+            base = floor(mn);
+        else if (wrap == FXL_WRAP_MIRROR)
+            base = 2 * floor(mn / 2);
+        for (i = 0; i < 3; i++) {
+            const double a = fabs((axis ? c->v[i].v : c->v[i].u) / 65536.0 - base) * side;
+            m = a * c->v[i].inv_w > m ? a * c->v[i].inv_w : m;
+            umax = a > umax ? a : umax;
+        }
+        b[axis] = (3.2 * ldexp(1, -30) + D * ldexp(1, -50)) * m / qmin + ldexp(umax, -27) + ldexp(1, -17) +
+                  (mx - mn) * side * qtrunc + umax * D * ldexp(1, -51) * qmax / qmin;
+    }
+}
+
+/* The level-0 texels [lo, hi] an axis whose values (point) or blend
+ * (bilinear: the taps at floor(t - 1/2) and one more) a coordinate within
+ * t +- e can read. Returns 0 when that is more than FZ_TEXEL_SPAN. */
+static int fz_footprint(double t, double e, int bilinear, int64_t *lo, int64_t *hi)
+{
+    const double c = bilinear ? t - 0.5 : t;
+    if (!(e < FZ_TEXEL_SPAN) || fabs(t) > 1e15)
+        return 0;
+    *lo = (int64_t)floor(c - e);
+    *hi = (int64_t)floor(c + e) + (bilinear ? 1 : 0);
+    return *hi - *lo < FZ_TEXEL_SPAN;
+}
+
+/* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
+static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
+{
+    const fxl_draw_t *d = &c->draw;
+    const int bil = d->filter == FXL_FILTER_BILINEAR;
+    int32_t row, col;
+
+    if (!d->texture || d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT ||
+        (d->persp != FXL_PERSP_EXACT && d->persp != FXL_PERSP_AUTO) ||
+        (c->tex.levels > 1 && d->mip != FXL_MIP_NONE))
+        return 0;
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->w; col++) {
+            const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+            const uint16_t a = s->pix_a[k], bb = s->pix_b[k];
+            const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
+            uint16_t px;
+            double u, v, e[2], tu, tv;
+            int64_t x0, x1, y0, y1, x, y;
+            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, ch;
+            if (a == 0x0000u && bb == 0xFFFFu)
+                continue;   /* not written */
+            px = bb != 0xFFFFu ? bb : a;
+            if (c->format == FXL_PIXFMT_RGB565_SWAP)
+                px = (uint16_t)((px >> 8) | (px << 8));
+            if (ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, 0, &u, &v, NULL, NULL) != 0)
+                FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
+            fz_exact_bound(c, fx * 16 + 8, fy * 16 + 8, e);
+            if (d->persp == FXL_PERSP_AUTO) {
+                const double budget = (d->auto_budget > (1 << 24) ? (1 << 24) : d->auto_budget) / 65536.0;
+                e[0] += budget;
+                e[1] += budget;
+            }
+            tu = u * ldexp(1.0, c->tex.log2_w);
+            tv = v * ldexp(1.0, c->tex.log2_h);
+            if (!fz_footprint(tu, e[0], bil, &x0, &x1) || !fz_footprint(tv, e[1], bil, &y0, &y1)) {
+                out->texel_wide++;
+                continue;
+            }
+            for (y = y0; y <= y1 && !hit; y++)
+                for (x = x0; x <= x1 && !hit; x++) {
+                    int key = 0;
+                    const uint16_t t = fxl_texture_fetch(&c->tex, 0, (int32_t)x, (int32_t)y, &key);
+                    const int tc[3] = {t >> 11, (t >> 5) & 63, t & 31};
+                    if (key)
+                        continue;   /* never drawn (point); a keyed tap takes the nearest's colour */
+                    if (!bil) {
+                        hit = t == px;
+                        continue;
+                    }
+                    for (ch = 0; ch < 3; ch++) {
+                        lo[ch] = tc[ch] < lo[ch] ? tc[ch] : lo[ch];
+                        hi[ch] = tc[ch] > hi[ch] ? tc[ch] : hi[ch];
+                    }
+                }
+            if (bil) {
+                const int pc[3] = {px >> 11, (px >> 5) & 63, px & 31};
+                hit = 1;
+                for (ch = 0; ch < 3; ch++)
+                    hit &= pc[ch] >= lo[ch] && pc[ch] <= hi[ch];
+            }
+            if (!hit)
+                FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X, no %s of texels [%lld,%lld]x[%lld,%lld] around the "
+                        "exact (%.6f, %.6f) +- (%.3g, %.3g)",
+                        col, row, (long long)fx, (long long)fy, px, bil ? "blend" : "one", (long long)x0,
+                        (long long)x1, (long long)y0, (long long)y1, tu, tv, e[0], e[1]);
+            out->texel_checked++;
+        }
+    return 0;
+}
+
 /* Run one decoded case. Returns 0 when every check holds, 1 with a message
  * in msg (FZ_MSG bytes) otherwise. */
 static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
@@ -977,6 +1127,10 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
                 FZ_FAIL("pixel (%d,%d) (frame %d,%d) covered by the exact rule but not drawn", col, row,
                         col + c->origin_x, row + c->origin_y);
         }
+
+    /* 7: texel values (before 5b redraws pix_a) */
+    if (fz_check_texels(c, s, out, msg))
+        return 1;
 
     /* 5b: the probe sees every covered pixel once */
     fz_fill(c, s, s->pix_a, 0x0000u, c->has_depth ? s->dep_a : NULL);
