@@ -42,7 +42,9 @@
  *  6 stats: pixels written == stats.pixels; a zero-area triangle is counted
  *    as culled_degenerate.
  *  7 texels: where a draw promises an error bound - FXL_PERSP_EXACT its
- *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget
+ *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget,
+ *    a fixed segment length L that plus the chord bound (fz_chord_bound),
+ *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
  *    - on level 0 (one level or FXL_MIP_NONE), texenv REPLACE, flat shade:
  *    every written pixel holds a texel (point) or lies channel by channel
  *    within the texels (bilinear) of the texture footprint of the exact
@@ -886,7 +888,8 @@ static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *
 #define FZ_TEXEL_SPAN 16   /* widest footprint (texels an axis) check 7 examines */
 
 /* Exact mode's error bound, per axis in level-0 texels, at the pixel centre
- * (X, Y) (sub-pixel units) of the case's triangle: test_raster's
+ * (X, Y) (sub-pixel units, slack more from vertex 0: a segment's ends)
+ * of the case's triangle: test_raster's
  * exact_plane_bound - the planes of s = u q kept below 2^30 (< 1.51 units of
  * 2^-29 max |s_i| at a vertex: 3.2 2^-30 max |u_i| q_i / q_min texels), the
  * reciprocal's 2^-28 of |u|, the q16 rounding, setup's q = inv_w >> 1 when
@@ -896,22 +899,22 @@ static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *
  * moves s by D 2^-21 units and q by D 2^-21 of q's units (q_max scaled to
  * >= 2^30), i.e. D 2^-51 q_max / q_min relative. u is rebased as setup does
  * (whole periods for repeat, pairs for mirror). */
-static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, double b[2])
+static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack, int affine, double b[2])
 {
     double qmin = 4294967296.0, qmax = 0, qtrunc = 0, D;
     int axis, i;
     for (i = 0; i < 3; i++) {
-        const double q = (double)c->v[i].inv_w;
+        const double q = affine ? 1.0 : (double)c->v[i].inv_w;   /* affine: one constant q */
         if (q < qmin)
             qmin = q;
         if (q > qmax)
             qmax = q;
-        if (c->v[i].inv_w >= 0x80000000u)
+        if (!affine && c->v[i].inv_w >= 0x80000000u)
             qtrunc = 1;
     }
     if (qtrunc)
         qtrunc = 1.0 / floor(qmin / 2);
-    D = fabs((double)(X - ref_snap(c->v[0].x))) + fabs((double)(Y - ref_snap(c->v[0].y)));
+    D = fabs((double)(X - ref_snap(c->v[0].x))) + fabs((double)(Y - ref_snap(c->v[0].y))) + (double)slack;
     for (axis = 0; axis < 2; axis++) {
         const uint8_t wrap = axis ? c->tex.wrap_v : c->tex.wrap_u;
         const double side = ldexp(1.0, axis ? c->tex.log2_h : c->tex.log2_w);
@@ -927,12 +930,45 @@ static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, double b[2])
             base = 2 * floor(mn / 2);
         for (i = 0; i < 3; i++) {
             const double a = fabs((axis ? c->v[i].v : c->v[i].u) / 65536.0 - base) * side;
-            m = a * c->v[i].inv_w > m ? a * c->v[i].inv_w : m;
+            const double aq = a * (affine ? 1.0 : (double)c->v[i].inv_w);
+            m = aq > m ? aq : m;
             umax = a > umax ? a : umax;
         }
         b[axis] = (3.2 * ldexp(1, -30) + D * ldexp(1, -50)) * m / qmin + ldexp(umax, -27) + ldexp(1, -17) +
                   (mx - mn) * side * qtrunc + umax * D * ldexp(1, -51) * qmax / qmin;
     }
+}
+
+/* What stepping L pixels between exact points adds (test_raster's
+ * subdiv_bound): along a span u = s / q with s, q linear, so a chord over L
+ * pixels errs by at most L^2 max |u' q'| / (4 q) = L^2 |q_x| |N| / (4 q^3)
+ * with N = s_x q - s q_x linear over the triangle (bounded by its vertex
+ * values, q by its smallest), plus one q16 unit a pixel of truncated
+ * steps. Level-0 texels, both axes together. */
+static double fz_chord_bound(const fz_case *c, int L)
+{
+    double X[3], Y[3], q[3], su[3], sv[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = ref_snap(c->v[i].x) / 16.0;
+        Y[i] = ref_snap(c->v[i].y) / 16.0;
+        q[i] = (double)c->v[i].inv_w;
+        su[i] = c->v[i].u / 65536.0 * ldexp(1.0, c->tex.log2_w) * q[i];
+        sv[i] = c->v[i].v / 65536.0 * ldexp(1.0, c->tex.log2_h) * q[i];
+        qmin = q[i] < qmin ? q[i] : qmin;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+#define FZ_GX(a) (((a[1] - a[0]) * (Y[2] - Y[0]) - (a[2] - a[0]) * (Y[1] - Y[0])) / det)
+    qx = FZ_GX(q);
+    sux = FZ_GX(su);
+    svx = FZ_GX(sv);
+#undef FZ_GX
+    for (i = 0; i < 3; i++) {
+        const double a = fabs(sux * q[i] - su[i] * qx), b = fabs(svx * q[i] - sv[i] * qx);
+        nu = a > nu ? a : nu;
+        nv = b > nv ? b : nv;
+    }
+    return (double)L * L / 4.0 * fabs(qx) * hypot(nu, nv) / (qmin * qmin * qmin) + L / 65536.0;
 }
 
 /* The level-0 texels [lo, hi] an axis whose values (point) or blend
@@ -955,10 +991,18 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int bil = d->filter == FXL_FILTER_BILINEAR;
     int32_t row, col;
 
+    /* segment length of a fixed mode (affine re-anchors every 256 pixels) */
+    const int L = d->persp == FXL_PERSP_AFFINE ? FXL_PERSP_MAX : (d->persp > 1 ? d->persp : 0);
+    const int affine = d->persp == FXL_PERSP_AFFINE;
+    double chord = 0;
+
     if (!d->texture || d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT ||
-        (d->persp != FXL_PERSP_EXACT && d->persp != FXL_PERSP_AUTO) ||
         (c->tex.levels > 1 && d->mip != FXL_MIP_NONE))
         return 0;
+    /* affine: against the screen-linear map, to which it is exact but for
+     * its steps' truncation */
+    if (L)
+        chord = affine ? L / 65536.0 : fz_chord_bound(c, L);
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
@@ -973,9 +1017,13 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
             px = bb != 0xFFFFu ? bb : a;
             if (c->format == FXL_PIXFMT_RGB565_SWAP)
                 px = (uint16_t)((px >> 8) | (px << 8));
-            if (ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, 0, &u, &v, NULL, NULL) != 0)
+            if (ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, &u, &v, NULL, NULL) != 0)
                 FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
-            fz_exact_bound(c, fx * 16 + 8, fy * 16 + 8, e);
+            /* a segment's ends are up to L pixels from the pixel: the
+             * planes' rounding grows with the distance from their anchor */
+            fz_exact_bound(c, fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)L, affine, e);
+            e[0] += chord;
+            e[1] += chord;
             if (d->persp == FXL_PERSP_AUTO) {
                 const double budget = (d->auto_budget > (1 << 24) ? (1 << 24) : d->auto_budget) / 65536.0;
                 e[0] += budget;
