@@ -45,9 +45,10 @@
  *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget,
  *    a fixed segment length L that plus the chord bound (fz_chord_bound),
  *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
- *    - on level 0 (one level or FXL_MIP_NONE), texenv REPLACE, flat shade:
+ *    - on level 0 (one level or FXL_MIP_NONE), flat shade, any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
- *    within the texels (bilinear) of the texture footprint of the exact
+ *    within the texels (bilinear), modulated or decalled as the draw says,
+ *    of the texture footprint of the exact
  *    (u, v) widened by the bound. The texels are random, so a wrong texel
  *    is caught, and a bound a core path breaks is found. Pixels whose
  *    widened footprint spans more than FZ_TEXEL_SPAN texels an axis are
@@ -996,8 +997,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int affine = d->persp == FXL_PERSP_AFFINE;
     double chord = 0;
 
-    if (!d->texture || d->texenv != FXL_TEXENV_REPLACE || d->shade != FXL_SHADE_FLAT ||
-        (c->tex.levels > 1 && d->mip != FXL_MIP_NONE))
+    /* the flat colour's channels, for modulate (raster.h: t (c + 1) >> bits) and decal */
+    const int cc[3] = {d->color >> 11, (d->color >> 5) & 63, d->color & 31};
+    const int modulate = d->texenv == FXL_TEXENV_MODULATE, decal = d->texenv == FXL_TEXENV_DECAL;
+
+    if (!d->texture || d->shade != FXL_SHADE_FLAT || (c->tex.levels > 1 && d->mip != FXL_MIP_NONE))
         return 0;
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
@@ -1011,7 +1015,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
             uint16_t px;
             double u, v, e[2], tu, tv;
             int64_t x0, x1, y0, y1, x, y;
-            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, ch;
+            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch;
             if (a == 0x0000u && bb == 0xFFFFu)
                 continue;   /* not written */
             px = bb != 0xFFFFu ? bb : a;
@@ -1040,10 +1044,16 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     int key = 0;
                     const uint16_t t = fxl_texture_fetch(&c->tex, 0, (int32_t)x, (int32_t)y, &key);
                     const int tc[3] = {t >> 11, (t >> 5) & 63, t & 31};
-                    if (key)
-                        continue;   /* never drawn (point); a keyed tap takes the nearest's colour */
+                    if (key) {
+                        /* never drawn but with decal, which draws the colour;
+                         * a keyed bilinear tap takes the nearest's colour */
+                        keyed = 1;
+                        continue;
+                    }
                     if (!bil) {
-                        hit = t == px;
+                        hit = (modulate ? (uint16_t)(((tc[0] * (cc[0] + 1)) >> 5) << 11 |
+                                                     ((tc[1] * (cc[1] + 1)) >> 6) << 5 | ((tc[2] * (cc[2] + 1)) >> 5))
+                                        : t) == px;
                         continue;
                     }
                     for (ch = 0; ch < 3; ch++) {
@@ -1052,11 +1062,17 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     }
                 }
             if (bil) {
+                /* modulate scales the blend, per channel and monotonically */
                 const int pc[3] = {px >> 11, (px >> 5) & 63, px & 31};
                 hit = 1;
-                for (ch = 0; ch < 3; ch++)
-                    hit &= pc[ch] >= lo[ch] && pc[ch] <= hi[ch];
+                for (ch = 0; ch < 3; ch++) {
+                    const int sh = ch == 1 ? 6 : 5;
+                    const int l = modulate ? (lo[ch] * (cc[ch] + 1)) >> sh : lo[ch];
+                    const int h = modulate ? (hi[ch] * (cc[ch] + 1)) >> sh : hi[ch];
+                    hit &= pc[ch] >= l && pc[ch] <= h;
+                }
             }
+            hit |= decal && keyed && px == d->color;
             if (!hit)
                 FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X, no %s of texels [%lld,%lld]x[%lld,%lld] around the "
                         "exact (%.6f, %.6f) +- (%.3g, %.3g)",
