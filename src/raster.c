@@ -138,8 +138,8 @@ static int32_t seg_log2_for(int32_t p)
 int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
 {
 #if FXL_HAVE_MIPMAP
-    int32_t X[3], Y[3], i;
-    int64_t du1, dv1, du2, dv2, uv, det;
+    int32_t X[3], Y[3], i, k = 0;
+    int64_t d[4], uv, det;
     int32_t l;
 
     if (!t || !v)
@@ -149,12 +149,21 @@ int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
         Y[i] = fxl_snap_subpx(v[i].y);
     }
     det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
-    /* Halve the q16 differences (< 2^32) so each product stays below 2^62. */
-    du1 = ((int64_t)v[1].u - v[0].u) / 2;
-    dv1 = ((int64_t)v[1].v - v[0].v) / 2;
-    du2 = ((int64_t)v[2].u - v[0].u) / 2;
-    dv2 = ((int64_t)v[2].v - v[0].v) / 2;
-    uv = du1 * dv2 - du2 * dv1;
+    /* u1 - u0, v1 - v0, u2 - u0, v2 - v0 in q16 (|d| < 2^32), halved (floor)
+     * only when one reaches 2^31, so each product stays below 2^62: exact
+     * otherwise. (Halving always, toward zero, lost up to half a unit a
+     * difference: a one-unit v change read as no texel area at all, and
+     * a sliver in texture space - large differences, a small cross
+     * product - had its LOD off by 0.2 level.) */
+    for (i = 0; i < 4; i++) {
+        const fxl_vertex_t *p = &v[1 + (i >> 1)];
+        d[i] = (i & 1) ? (int64_t)p->v - v[0].v : (int64_t)p->u - v[0].u;
+        if (d[i] != fxl__i32_of_bits((uint32_t)(uint64_t)d[i]))   /* outside int32 */
+            k = 1;
+    }
+    for (i = 0; k && i < 4; i++)
+        d[i] = fxl__asr64(d[i], 1);
+    uv = d[0] * d[3] - d[2] * d[1];
     if (uv < 0)
         uv = -uv;
     if (det < 0)
@@ -163,10 +172,10 @@ int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
         return -128 * 256;
     if (det == 0)
         return 255 * 256;
-    /* texel area = uv * 4 / 2^32 * 2^(lw + lh); pixel area = det / 2^(2S):
-     * log4(ratio) = (log2 uv + 2 - 32 + lw + lh - log2 det + 2S) / 2. */
+    /* texel area = uv * 4^k / 2^32 * 2^(lw + lh); pixel area = det / 2^(2S):
+     * log4(ratio) = (log2 uv + 2k - 32 + lw + lh - log2 det + 2S) / 2. */
     l = (fxl__log2_q8((uint64_t)uv) - fxl__log2_q8((uint64_t)det) +
-         (2 - 32 + (int32_t)t->log2_w + (int32_t)t->log2_h + 2 * FXL__S) * 256) / 2;
+         (2 * k - 32 + (int32_t)t->log2_w + (int32_t)t->log2_h + 2 * FXL__S) * 256) / 2;
     if (l < -128 * 256)
         l = -128 * 256;
     if (l > 255 * 256)

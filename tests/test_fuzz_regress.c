@@ -8,11 +8,10 @@
  * 2 x 10^7 under ASan+UBSan, 10^5 libFuzzer runs) have found nothing in the
  * core, so the table holds the seed inputs below (edge byte patterns and
  * random cases covering the error paths) plus hand-made extreme cases. Check
- * 7 (texel values against exact mode's and AUTO's error bounds) found one
- * core defect in its first 10^5 cases: the last entry. Add every future
- * finding here with the bytes printed by fixel-fuzz ("FINDING ... bytes
- * <hex>"). A change to the
- * decoder must keep every input here decoding as before (the level-row
+ * 7 (texel values against each mode's error bound) found two core defects,
+ * one on level 0 and one in the per-triangle LOD: the last two entries. Add
+ * every future finding here with the bytes printed by fixel-fuzz ("FINDING
+ * ... bytes <hex>"). A change to the decoder must keep every input here decoding as before (the level-row
  * vertex layout, for one, skips the layout bytes these inputs use).
  *
  * Front-end inputs (fuzz/fuzz_pipe.h: bits 3..5 of the last byte 0) have
@@ -128,7 +127,19 @@ static const replay_t replays[] = {
          "3d7fb3ac3426a1037d612859f66e905eb8349ea40a3fc30a9e2c8d20f1523a77"
          "c35c0f7d543b6779b755dc6248148ed6c8056f2fabc15c7a1a44a0a8a3dcd5b6"
          "d24c2455d9bb54e678f99bd930cb15f9ab6e94ce68831ca25de2aacdc3c29e26",
-     FXL_OK, 35}
+     FXL_OK, 35},
+    /* Check 7 with mip levels (seed 1 case 24367): a per-triangle LOD with
+     * v changing by one q16 unit; fxl_lod_triangle_q8 halved the
+     * differences toward zero, read no texel area (-128 levels) and, with a
+     * bias of +128 levels, drew level 0 where the LOD picks level 2. Fixed:
+     * differences are exact while they fit int32 (raster.c). */
+    {"f57ed4f563d6594052e4143b66a07dc19a9b02f50919508f8b8ddb152960d5cc"
+         "02bddf0735647e0506e177884b00c69e909ccea54d3d211e17f84994b904895c"
+         "2b0be642e23a9bf6f187f6b9ba43f7f64083b427d33a9243115d454499f4295f"
+         "ebe8e1fffbcf7be62f0ba9faa7e019da02123d3e01feff7191151399cf2d6709"
+         "bb46b6897d40fca5a9551bf7ba5018ada28ba39b9dbf7e46ecbacec7f463db06"
+         "979298cb88247227b9c184b65cadbd7398d97b873ddcb1417a24a43772d7c7f4",
+     FXL_OK, 255}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

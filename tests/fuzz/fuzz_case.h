@@ -45,7 +45,8 @@
  *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget,
  *    a fixed segment length L that plus the chord bound (fz_chord_bound),
  *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
- *    - on level 0 (one level or FXL_MIP_NONE), flat shade, any texenv:
+ *    - on level 0, or on the levels a per-triangle LOD can pick (within
+ *    4/256 level of the reference's), flat shade, any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
  *    within the texels (bilinear), modulated or decalled as the draw says,
  *    of the texture footprint of the exact
@@ -995,27 +996,55 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     /* segment length of a fixed mode (affine re-anchors every 256 pixels) */
     const int L = d->persp == FXL_PERSP_AFFINE ? FXL_PERSP_MAX : (d->persp > 1 ? d->persp : 0);
     const int affine = d->persp == FXL_PERSP_AFFINE;
-    double chord = 0;
-
     /* the flat colour's channels, for modulate (raster.h: t (c + 1) >> bits) and decal */
     const int cc[3] = {d->color >> 11, (d->color >> 5) & 63, d->color & 31};
     const int modulate = d->texenv == FXL_TEXENV_MODULATE, decal = d->texenv == FXL_TEXENV_DECAL;
+    /* Mip levels: with one LOD for the triangle, the levels its LOD can
+     * round to (the reference's, within 4/256 level: test_lod holds the
+     * core to 2/256), clamped to the chain; a pixel on level n reads it
+     * with its coordinates shifted (floored) by min(n, log2 side) an axis,
+     * and steps of that level drift by up to 2^-16 of its texels a pixel
+     * over a segment (raster.h, auto_budget). A blend of levels (LINEAR)
+     * lies within the union of their texels. */
+    const int mips = c->tex.levels > 1 && d->mip != FXL_MIP_NONE;
+    const int linear = mips && d->mip == FXL_MIP_LINEAR;
+    const int blend = bil || linear;
+    double chord = 0, drift = 0;
+    int n_lo = 0, n_hi = 0;
 
-    if (!d->texture || d->shade != FXL_SHADE_FLAT || (c->tex.levels > 1 && d->mip != FXL_MIP_NONE))
+    if (!d->texture || d->shade != FXL_SHADE_FLAT || (mips && d->lod != FXL_LOD_TRIANGLE))
         return 0;
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
     if (L)
         chord = affine ? L / 65536.0 : fz_chord_bound(c, L);
+    if (mips) {
+        const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
+        double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
+        /* raster.h: coordinate differences of 2^31 units (32768 periods)
+         * or more are halved, and the area of a texture-space sliver then
+         * loses its precision: not checked */
+        for (n_lo = 1; n_lo < 3; n_lo++)
+            if (fabs((double)c->v[n_lo].u - c->v[0].u) >= 2147483648.0 ||
+                fabs((double)c->v[n_lo].v - c->v[0].v) >= 2147483648.0)
+                return 0;
+        lod = lod < 0 ? 0 : (lod > top ? top : lod);   /* also -HUGE_VAL (no texel area) */
+        lo = lod - tol < 0 ? 0 : lod - tol;
+        hi = lod + tol > top ? top : lod + tol;
+        n_lo = (int)floor(linear ? lo : lo + 0.5);
+        n_hi = (int)floor(linear ? hi : hi + 0.5) + linear;
+        n_hi = n_hi > (int)top ? (int)top : n_hi;
+        drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
+    }
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
             const uint16_t a = s->pix_a[k], bb = s->pix_b[k];
             const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
             uint16_t px;
-            double u, v, e[2], tu, tv;
-            int64_t x0, x1, y0, y1, x, y;
-            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch;
+            double u, v, e[2];
+            int64_t box[4] = {0, 0, 0, 0}, x, y;
+            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch, n, wide = 0;
             if (a == 0x0000u && bb == 0xFFFFu)
                 continue;   /* not written */
             px = bb != 0xFFFFu ? bb : a;
@@ -1033,35 +1062,47 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 e[0] += budget;
                 e[1] += budget;
             }
-            tu = u * ldexp(1.0, c->tex.log2_w);
-            tv = v * ldexp(1.0, c->tex.log2_h);
-            if (!fz_footprint(tu, e[0], bil, &x0, &x1) || !fz_footprint(tv, e[1], bil, &y0, &y1)) {
+            for (n = n_lo; n <= n_hi && !wide; n++) {
+                /* level n: an axis stops halving at one texel */
+                const int su = n < (int)c->tex.log2_w ? n : (int)c->tex.log2_w;
+                const int sv = n < (int)c->tex.log2_h ? n : (int)c->tex.log2_h;
+                const double tu = u * ldexp(1.0, (int)c->tex.log2_w - su);
+                const double tv = v * ldexp(1.0, (int)c->tex.log2_h - sv);
+                const double extra = n > 0 ? drift + 1.0 / 65536 : 0;   /* + the shift's floor */
+                if (!fz_footprint(tu, ldexp(e[0], -su) + extra, bil, &box[0], &box[1]) ||
+                    !fz_footprint(tv, ldexp(e[1], -sv) + extra, bil, &box[2], &box[3])) {
+                    wide = 1;
+                    break;
+                }
+                for (y = box[2]; y <= box[3] && !hit; y++)
+                    for (x = box[0]; x <= box[1] && !hit; x++) {
+                        int key = 0;
+                        const uint16_t t = fxl_texture_fetch(&c->tex, (uint32_t)n, (int32_t)x, (int32_t)y, &key);
+                        const int tc[3] = {t >> 11, (t >> 5) & 63, t & 31};
+                        if (key) {
+                            /* never drawn but with decal, which draws the colour;
+                             * a keyed bilinear tap takes the nearest's colour */
+                            keyed = 1;
+                            continue;
+                        }
+                        if (!blend) {
+                            hit = (modulate ? (uint16_t)(((tc[0] * (cc[0] + 1)) >> 5) << 11 |
+                                                         ((tc[1] * (cc[1] + 1)) >> 6) << 5 |
+                                                         ((tc[2] * (cc[2] + 1)) >> 5))
+                                            : t) == px;
+                            continue;
+                        }
+                        for (ch = 0; ch < 3; ch++) {
+                            lo[ch] = tc[ch] < lo[ch] ? tc[ch] : lo[ch];
+                            hi[ch] = tc[ch] > hi[ch] ? tc[ch] : hi[ch];
+                        }
+                    }
+            }
+            if (wide) {
                 out->texel_wide++;
                 continue;
             }
-            for (y = y0; y <= y1 && !hit; y++)
-                for (x = x0; x <= x1 && !hit; x++) {
-                    int key = 0;
-                    const uint16_t t = fxl_texture_fetch(&c->tex, 0, (int32_t)x, (int32_t)y, &key);
-                    const int tc[3] = {t >> 11, (t >> 5) & 63, t & 31};
-                    if (key) {
-                        /* never drawn but with decal, which draws the colour;
-                         * a keyed bilinear tap takes the nearest's colour */
-                        keyed = 1;
-                        continue;
-                    }
-                    if (!bil) {
-                        hit = (modulate ? (uint16_t)(((tc[0] * (cc[0] + 1)) >> 5) << 11 |
-                                                     ((tc[1] * (cc[1] + 1)) >> 6) << 5 | ((tc[2] * (cc[2] + 1)) >> 5))
-                                        : t) == px;
-                        continue;
-                    }
-                    for (ch = 0; ch < 3; ch++) {
-                        lo[ch] = tc[ch] < lo[ch] ? tc[ch] : lo[ch];
-                        hi[ch] = tc[ch] > hi[ch] ? tc[ch] : hi[ch];
-                    }
-                }
-            if (bil) {
+            if (blend) {
                 /* modulate scales the blend, per channel and monotonically */
                 const int pc[3] = {px >> 11, (px >> 5) & 63, px & 31};
                 hit = 1;
@@ -1074,10 +1115,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
             }
             hit |= decal && keyed && px == d->color;
             if (!hit)
-                FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X, no %s of texels [%lld,%lld]x[%lld,%lld] around the "
-                        "exact (%.6f, %.6f) +- (%.3g, %.3g)",
-                        col, row, (long long)fx, (long long)fy, px, bil ? "blend" : "one", (long long)x0,
-                        (long long)x1, (long long)y0, (long long)y1, tu, tv, e[0], e[1]);
+                FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X, no %s of texels [%lld,%lld]x[%lld,%lld] (levels "
+                        "%d..%d) around the exact level-0 (%.6f, %.6f) +- (%.3g, %.3g)",
+                        col, row, (long long)fx, (long long)fy, px, blend ? "blend" : "one", (long long)box[0],
+                        (long long)box[1], (long long)box[2], (long long)box[3], n_lo, n_hi,
+                        u * ldexp(1.0, c->tex.log2_w), v * ldexp(1.0, c->tex.log2_h), e[0], e[1]);
             out->texel_checked++;
         }
     return 0;
