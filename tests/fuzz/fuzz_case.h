@@ -45,8 +45,9 @@
  *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget,
  *    a fixed segment length L that plus the chord bound (fz_chord_bound),
  *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
- *    - on level 0, or on the levels a per-triangle LOD can pick (within
- *    4/256 level of the reference's), flat shade, any texenv:
+ *    - on level 0, or on the levels the LOD can pick (within 4/256 level
+ *    of the reference's: per triangle, or per segment at any pixel that can
+ *    be the segment's correction point), flat shade, any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
  *    within the texels (bilinear), modulated or decalled as the draw says,
  *    of the texture footprint of the exact
@@ -1009,16 +1010,24 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int mips = c->tex.levels > 1 && d->mip != FXL_MIP_NONE;
     const int linear = mips && d->mip == FXL_MIP_LINEAR;
     const int blend = bil || linear;
+    /* A per-segment LOD is taken at the segment's first pixel (AUTO: at
+     * the 16-pixel grid point): one of the W pixels up to this one. */
+    const int per_seg = mips && d->lod == FXL_LOD_SEGMENT;
+    const int W = d->persp == FXL_PERSP_AUTO ? 16 : (d->persp == FXL_PERSP_EXACT ? 1 : L);
     double chord = 0, drift = 0;
     int n_lo = 0, n_hi = 0;
+    /* the exact LOD (bias added) at columns col - 15 .. of the current row */
+    double lod_at[FZ_MAX_DIM + 16];
+    uint8_t lod_known[FZ_MAX_DIM + 16];
+    int32_t lod_row = -1;
 
-    if (!d->texture || d->shade != FXL_SHADE_FLAT || (mips && d->lod != FXL_LOD_TRIANGLE))
+    if (!d->texture || d->shade != FXL_SHADE_FLAT || (per_seg && W > 16))
         return 0;
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
     if (L)
         chord = affine ? L / 65536.0 : fz_chord_bound(c, L);
-    if (mips) {
+    if (mips && !per_seg) {
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
         /* raster.h: coordinate differences of 2^31 units (32768 periods)
@@ -1034,8 +1043,9 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
         n_lo = (int)floor(linear ? lo : lo + 0.5);
         n_hi = (int)floor(linear ? hi : hi + 0.5) + linear;
         n_hi = n_hi > (int)top ? (int)top : n_hi;
-        drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
     }
+    if (mips)
+        drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
@@ -1061,6 +1071,34 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 const double budget = (d->auto_budget > (1 << 24) ? (1 << 24) : d->auto_budget) / 65536.0;
                 e[0] += budget;
                 e[1] += budget;
+            }
+            if (per_seg) {
+                /* the levels the exact LOD (within 4/256: test_lod) at any
+                 * of the W candidate correction points rounds to */
+                const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
+                double lmin = 1e300, lmax = -1e300, du[2], dv[2];
+                int j;
+                if (lod_row != row) {
+                    lod_row = row;
+                    for (j = 0; j < FZ_MAX_DIM + 16; j++)
+                        lod_known[j] = 0;
+                }
+                for (j = 0; j < W; j++) {
+                    /* cached by column: pixels of a row share candidates */
+                    const int ci = col - j + 15;
+                    if (!lod_known[ci]) {
+                        (void)ref_uv_at(c->v, (double)(fx - j) + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
+                        lod_at[ci] = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        lod_known[ci] = 1;
+                    }
+                    lmin = lod_at[ci] < lmin ? lod_at[ci] : lmin;
+                    lmax = lod_at[ci] > lmax ? lod_at[ci] : lmax;
+                }
+                lmin = lmin - tol < 0 ? 0 : (lmin - tol > top ? top : lmin - tol);   /* NaN-free: -inf clamps */
+                lmax = lmax + tol < 0 ? 0 : (lmax + tol > top ? top : lmax + tol);
+                n_lo = (int)floor(linear ? lmin : lmin + 0.5);
+                n_hi = (int)floor(linear ? lmax : lmax + 0.5) + linear;
+                n_hi = n_hi > (int)top ? (int)top : n_hi;
             }
             for (n = n_lo; n <= n_hi && !wide; n++) {
                 /* level n: an axis stops halving at one texel */
