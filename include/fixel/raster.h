@@ -110,7 +110,10 @@ typedef struct fxl_draw {
                                    * Level-0 texels, on top of exact mode's own error;
                                    * on mip level n a segment's q16 steps of that level
                                    * may drift by up to L 2^(n-16) more (L 2^-16 of the
-                                   * level's own texels) */
+                                   * level's own texels). It bounds texture
+                                   * coordinates only: Gouraud colours are stepped
+                                   * on the segments it picks, and an untextured
+                                   * draw uses FXL_PERSP_SPAN segments */
 } fxl_draw_t;
 
 /* Counters a draw adds to (pass NULL when not wanted). */

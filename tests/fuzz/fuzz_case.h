@@ -52,7 +52,9 @@
  *    within the texels (bilinear), modulated or decalled as the draw says,
  *    of the texture footprint of the exact
  *    (u, v) widened by the bound. The texels are random, so a wrong texel
- *    is caught, and a bound a core path breaks is found. Pixels whose
+ *    is caught, and a bound a core path breaks is found. Untextured: the
+ *    flat colour exactly, Gouraud channels within their interpolation's
+ *    bound (fz_check_colors). Pixels whose
  *    widened footprint spans more than FZ_TEXEL_SPAN texels an axis are
  *    left unchecked (counted apart).
  */
@@ -648,7 +650,7 @@ typedef struct fz_outcome {
     int pipe;               /* a front-end case (fuzz_pipe.h) */
     uint32_t emitted;       /* front end: screen triangles emitted */
     uint32_t placed;        /* front end: mesh triangles found where the double projection puts them */
-    uint32_t texel_checked; /* check 7: pixels held to their texel footprint */
+    uint32_t texel_checked; /* check 7: pixels held to their texel footprint or colour */
     uint32_t texel_wide;    /* check 7: pixels whose footprint was too wide to check */
 } fz_outcome;
 
@@ -1021,7 +1023,8 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     uint8_t lod_known[FZ_MAX_DIM + 16];
     int32_t lod_row = -1;
 
-    if (!d->texture || d->shade != FXL_SHADE_FLAT || (per_seg && W > 16))
+    /* replace ignores the colour; modulate and decal take the flat one */
+    if (!d->texture || (d->shade != FXL_SHADE_FLAT && d->texenv != FXL_TEXENV_REPLACE) || (per_seg && W > 16))
         return 0;
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
@@ -1163,6 +1166,81 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     return 0;
 }
 
+/* Check 7 for untextured draws: a flat one writes its colour exactly; a
+ * Gouraud one each channel within the bound of its perspective (affine:
+ * screen-linear) interpolation, as u on a one-texel clamp axis: the core
+ * interpolates the channels (r5, g6, b5 in q16) like u, v, clamps them to
+ * the channel and floors. */
+static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
+{
+    const fxl_draw_t *d = &c->draw;
+    /* AUTO chooses lengths for texture coordinates: untextured, it draws
+     * FXL_PERSP_SPAN segments (raster.h, auto_budget) */
+    const int L = d->persp == FXL_PERSP_AFFINE ? FXL_PERSP_MAX
+                  : d->persp == FXL_PERSP_AUTO ? FXL_PERSP_SPAN : (d->persp > 1 ? d->persp : 0);
+    const int affine = d->persp == FXL_PERSP_AFFINE;
+    static const int sh[3] = {11, 5, 0}, top[3] = {31, 63, 31};
+    fz_case cs[2];   /* channels (r, g) and (b, -) as the u, v of a 1 x 1 clamp texture */
+    double chord[2] = {0, 0};
+    int32_t row, col;
+    int i, k;
+
+    if (d->texture)
+        return 0;
+    for (k = 0; k < 2; k++) {
+        cs[k] = *c;
+        cs[k].tex.log2_w = cs[k].tex.log2_h = 0;
+        cs[k].tex.wrap_u = cs[k].tex.wrap_v = FXL_WRAP_CLAMP;
+        for (i = 0; i < 3; i++) {
+            const uint16_t col565 = c->v[i].color;
+            cs[k].v[i].u = (fxl_q16_t)(((col565 >> sh[2 * k]) & (uint32_t)top[2 * k]) << 16);
+            cs[k].v[i].v = k ? 0 : (fxl_q16_t)(((col565 >> sh[1]) & 63u) << 16);
+        }
+        if (L)
+            chord[k] = affine ? L / 65536.0 : fz_chord_bound(&cs[k], L);
+    }
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->w; col++) {
+            const size_t idx = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+            const uint16_t a = s->pix_a[idx], bb = s->pix_b[idx];
+            const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
+            uint16_t px;
+            int ch;
+            if (a == 0x0000u && bb == 0xFFFFu)
+                continue;
+            px = bb != 0xFFFFu ? bb : a;
+            if (c->format == FXL_PIXFMT_RGB565_SWAP)
+                px = (uint16_t)((px >> 8) | (px << 8));
+            if (d->shade == FXL_SHADE_FLAT) {
+                if (px != d->color)
+                    FZ_FAIL("pixel (%d,%d) is %04X, the flat colour %04X", col, row, px, d->color);
+                out->texel_checked++;
+                continue;
+            }
+            for (ch = 0; ch < 3; ch++) {
+                const int kk = ch >> 1;
+                double val[2], e[2], lo, hi;
+                const int p = (px >> sh[ch]) & top[ch];
+                if (ref_uv_at(cs[kk].v, (double)fx + 0.5, (double)fy + 0.5, affine, &val[0], &val[1], NULL, NULL) != 0)
+                    FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
+                fz_exact_bound(&cs[kk], fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)L, affine, e);
+                {
+                    const double x = ch == 1 ? val[1] : val[0], b = (ch == 1 ? e[1] : e[0]) + chord[kk];
+                    lo = floor(x - b);
+                    hi = floor(x + b);
+                }
+                lo = lo < 0 ? 0 : (lo > top[ch] ? top[ch] : lo);
+                hi = hi < 0 ? 0 : (hi > top[ch] ? top[ch] : hi);
+                if (p < lo || p > hi)
+                    FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X: channel %d is %d, the interpolation allows "
+                            "%.0f..%.0f",
+                            col, row, (long long)fx, (long long)fy, px, ch, p, lo, hi);
+            }
+            out->texel_checked++;
+        }
+    return 0;
+}
+
 /* Run one decoded case. Returns 0 when every check holds, 1 with a message
  * in msg (FZ_MSG bytes) otherwise. */
 static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
@@ -1273,7 +1351,7 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
         }
 
     /* 7: texel values (before 5b redraws pix_a) */
-    if (fz_check_texels(c, s, out, msg))
+    if (fz_check_texels(c, s, out, msg) || fz_check_colors(c, s, out, msg))
         return 1;
 
     /* 5b: the probe sees every covered pixel once */
