@@ -1022,6 +1022,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     double lod_at[FZ_MAX_DIM + 16];
     uint8_t lod_known[FZ_MAX_DIM + 16];
     int32_t lod_row = -1;
+    double lod_noise = -1e300;   /* per segment: the LOD of rounding-noise derivatives, bias added */
 
     /* replace ignores the colour; modulate and decal take the flat one */
     if (!d->texture || (d->shade != FXL_SHADE_FLAT && d->texenv != FXL_TEXENV_REPLACE) || (per_seg && W > 16))
@@ -1049,6 +1050,20 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     }
     if (mips)
         drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
+    if (per_seg) {
+        double qmin = 4294967296.0, qmax = 0, umax = 0;
+        int i, ax;
+        for (i = 0; i < 3; i++) {
+            qmin = c->v[i].inv_w < qmin ? c->v[i].inv_w : qmin;
+            qmax = c->v[i].inv_w > qmax ? c->v[i].inv_w : qmax;
+            for (ax = 0; ax < 2; ax++) {
+                const double t = fabs((ax ? c->v[i].v : c->v[i].u) / 65536.0) *
+                                 ldexp(1.0, ax ? c->tex.log2_h : c->tex.log2_w);
+                umax = t > umax ? t : umax;
+            }
+        }
+        lod_noise = log2(ldexp(umax + 1, -20) * (affine ? 1 : qmax / qmin)) + d->lod_bias_q8 / 256.0;
+    }
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
@@ -1097,6 +1112,12 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     lmin = lod_at[ci] < lmin ? lod_at[ci] : lmin;
                     lmax = lod_at[ci] > lmax ? lod_at[ci] : lmax;
                 }
+                /* Derivatives near zero (u, v nearly constant) are rounding
+                 * noise of the planes, ~2^-30 of their values: the core's
+                 * LOD is then anything up to log2 of that (generously
+                 * 2^-20 (U + 1) R texels a pixel), which a bias can lift
+                 * into the chain while the exact LOD is -inf. */
+                lmax = lmax > lod_noise ? lmax : lod_noise;
                 lmin = lmin - tol < 0 ? 0 : (lmin - tol > top ? top : lmin - tol);   /* NaN-free: -inf clamps */
                 lmax = lmax + tol < 0 ? 0 : (lmax + tol > top ? top : lmax + tol);
                 n_lo = (int)floor(linear ? lmin : lmin + 0.5);
