@@ -989,6 +989,20 @@ static int fz_footprint(double t, double e, int bilinear, int64_t *lo, int64_t *
     return *hi - *lo < FZ_TEXEL_SPAN;
 }
 
+/* The native RGB565 value render a (background 0x0000) and b (0xFFFF)
+ * wrote at buffer pixel (col, row); 0 when neither wrote it. */
+static int fz_written_pixel(const fz_case *c, const fz_state *s, int32_t row, int32_t col, uint16_t *px)
+{
+    const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
+    const uint16_t a = s->pix_a[k], b = s->pix_b[k];
+    if (a == 0x0000u && b == 0xFFFFu)
+        return 0;
+    *px = b != 0xFFFFu ? b : a;   /* one render kept its background: the value is the other's */
+    if (c->format == FXL_PIXFMT_RGB565_SWAP)
+        *px = (uint16_t)((*px >> 8) | (*px << 8));
+    return 1;
+}
+
 /* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
 static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
@@ -1066,18 +1080,13 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     }
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
-            const size_t k = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
-            const uint16_t a = s->pix_a[k], bb = s->pix_b[k];
             const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
             uint16_t px;
             double u, v, e[2];
             int64_t box[4] = {0, 0, 0, 0}, x, y;
             int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch, n, wide = 0;
-            if (a == 0x0000u && bb == 0xFFFFu)
-                continue;   /* not written */
-            px = bb != 0xFFFFu ? bb : a;
-            if (c->format == FXL_PIXFMT_RGB565_SWAP)
-                px = (uint16_t)((px >> 8) | (px << 8));
+            if (!fz_written_pixel(c, s, row, col, &px))
+                continue;
             if (ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, &u, &v, NULL, NULL) != 0)
                 FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
             /* a segment's ends are up to L pixels from the pixel: the
@@ -1222,16 +1231,11 @@ static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out,
     }
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
-            const size_t idx = FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col;
-            const uint16_t a = s->pix_a[idx], bb = s->pix_b[idx];
             const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
             uint16_t px;
             int ch;
-            if (a == 0x0000u && bb == 0xFFFFu)
+            if (!fz_written_pixel(c, s, row, col, &px))
                 continue;
-            px = bb != 0xFFFFu ? bb : a;
-            if (c->format == FXL_PIXFMT_RGB565_SWAP)
-                px = (uint16_t)((px >> 8) | (px << 8));
             if (d->shade == FXL_SHADE_FLAT) {
                 if (px != d->color)
                     FZ_FAIL("pixel (%d,%d) is %04X, the flat colour %04X", col, row, px, d->color);
