@@ -112,8 +112,10 @@ typedef struct fxl_draw {
                                    * may drift by up to L 2^(n-16) more (L 2^-16 of the
                                    * level's own texels). It bounds texture
                                    * coordinates only: Gouraud colours are stepped
-                                   * on the segments it picks, and an untextured
-                                   * draw uses FXL_PERSP_SPAN segments */
+                                   * on the segments it picks, an untextured draw
+                                   * uses FXL_PERSP_SPAN segments, and a triangle
+                                   * it draws affine (its vertex test) takes a
+                                   * per-segment LOD from that affine map */
 } fxl_draw_t;
 
 /* Counters a draw adds to (pass NULL when not wanted). */

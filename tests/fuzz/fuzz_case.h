@@ -49,7 +49,8 @@
  *    of the reference's: per triangle, or per segment at any pixel that can
  *    be the segment's correction point), flat shade, any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
- *    within the texels (bilinear), modulated or decalled as the draw says,
+ *    within the texels (bilinear), modulated or decalled by the flat colour
+ *    or the Gouraud interval (fz_gouraud),
  *    of the texture footprint of the exact
  *    (u, v) widened by the bound. The texels are random, so a wrong texel
  *    is caught, and a bound a core path breaks is found. Untextured: the
@@ -1003,6 +1004,53 @@ static int fz_written_pixel(const fz_case *c, const fz_state *s, int32_t row, in
     return 1;
 }
 
+/* Gouraud channels (r5, g6, b5) are interpolated like u on a one-texel
+ * clamp axis (q16 channel values, perspective-correct, clamped, floored),
+ * so they have the same bounds: exact mode's plane precision, plus a
+ * chord over L pixels (L 0: none; affine: against the screen-linear map). */
+typedef struct fz_gouraud {
+    fz_case cs[2];   /* channels (r, g) and (b, -) as the u, v of a 1 x 1 clamp texture */
+    double chord[2];
+    int L, affine;
+} fz_gouraud;
+
+static const int fz_ch_shift[3] = {11, 5, 0}, fz_ch_top[3] = {31, 63, 31};
+
+static void fz_gouraud_init(fz_gouraud *g, const fz_case *c, int L, int affine)
+{
+    int i, k;
+    g->L = L;
+    g->affine = affine;
+    for (k = 0; k < 2; k++) {
+        g->cs[k] = *c;
+        g->cs[k].tex.log2_w = g->cs[k].tex.log2_h = 0;
+        g->cs[k].tex.wrap_u = g->cs[k].tex.wrap_v = FXL_WRAP_CLAMP;
+        for (i = 0; i < 3; i++) {
+            const uint32_t col565 = c->v[i].color;
+            g->cs[k].v[i].u = (fxl_q16_t)(((col565 >> fz_ch_shift[2 * k]) & (uint32_t)fz_ch_top[2 * k]) << 16);
+            g->cs[k].v[i].v = k ? 0 : (fxl_q16_t)(((col565 >> 5) & 63u) << 16);
+        }
+        g->chord[k] = !L ? 0 : (affine ? L / 65536.0 : fz_chord_bound(&g->cs[k], L));
+    }
+}
+
+/* The channel values [lo, hi] the draw may show at frame pixel (fx, fy). */
+static void fz_gouraud_range(const fz_gouraud *g, int64_t fx, int64_t fy, int lo[3], int hi[3])
+{
+    int ch;
+    for (ch = 0; ch < 3; ch++) {
+        const fz_case *cs = &g->cs[ch >> 1];
+        double val[2] = {0, 0}, e[2], l, h;
+        (void)ref_uv_at(cs->v, (double)fx + 0.5, (double)fy + 0.5, g->affine, &val[0], &val[1], NULL, NULL);
+        fz_exact_bound(cs, fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)g->L, g->affine, e);
+        l = floor(val[ch == 1] - e[ch == 1] - g->chord[ch >> 1]);
+        h = floor(val[ch == 1] + e[ch == 1] + g->chord[ch >> 1]);
+        /* (a bound that is not finite allows the whole channel) */
+        lo[ch] = !(l > 0) ? 0 : (l > fz_ch_top[ch] ? fz_ch_top[ch] : (int)l);
+        hi[ch] = !(h < fz_ch_top[ch]) ? fz_ch_top[ch] : (h < 0 ? 0 : (int)h);
+    }
+}
+
 /* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
 static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
@@ -1013,9 +1061,14 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     /* segment length of a fixed mode (affine re-anchors every 256 pixels) */
     const int L = d->persp == FXL_PERSP_AFFINE ? FXL_PERSP_MAX : (d->persp > 1 ? d->persp : 0);
     const int affine = d->persp == FXL_PERSP_AFFINE;
-    /* the flat colour's channels, for modulate (raster.h: t (c + 1) >> bits) and decal */
-    const int cc[3] = {d->color >> 11, (d->color >> 5) & 63, d->color & 31};
+    /* the colour's channels, for modulate (raster.h: t (c + 1) >> bits) and
+     * decal: the flat one, or per pixel a Gouraud interval (AUTO picks its
+     * lengths for u, v: up to 256 pixels for the colours) */
     const int modulate = d->texenv == FXL_TEXENV_MODULATE, decal = d->texenv == FXL_TEXENV_DECAL;
+    const int gouraud = d->shade == FXL_SHADE_GOURAUD && d->texenv != FXL_TEXENV_REPLACE;
+    int clo[3] = {d->color >> 11, (d->color >> 5) & 63, d->color & 31};
+    int chi[3] = {d->color >> 11, (d->color >> 5) & 63, d->color & 31};
+    fz_gouraud g;
     /* Mip levels: with one LOD for the triangle, the levels its LOD can
      * round to (the reference's, within 4/256 level: test_lod holds the
      * core to 2/256), clamped to the chain; a pixel on level n reads it
@@ -1032,15 +1085,17 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int W = d->persp == FXL_PERSP_AUTO ? 16 : (d->persp == FXL_PERSP_EXACT ? 1 : L);
     double chord = 0, drift = 0;
     int n_lo = 0, n_hi = 0;
-    /* the exact LOD (bias added) at columns col - 15 .. of the current row */
-    double lod_at[FZ_MAX_DIM + 16];
+    /* the exact LOD (bias added; AUTO: perspective and affine) at columns
+     * col - 15 .. of the current row */
+    double lod_lo[FZ_MAX_DIM + 16], lod_hi[FZ_MAX_DIM + 16];
     uint8_t lod_known[FZ_MAX_DIM + 16];
     int32_t lod_row = -1;
     double lod_noise = -1e300;   /* per segment: the LOD of rounding-noise derivatives, bias added */
 
-    /* replace ignores the colour; modulate and decal take the flat one */
-    if (!d->texture || (d->shade != FXL_SHADE_FLAT && d->texenv != FXL_TEXENV_REPLACE) || (per_seg && W > 16))
+    if (!d->texture || (per_seg && W > 16))
         return 0;
+    if (gouraud)
+        fz_gouraud_init(&g, c, d->persp == FXL_PERSP_AUTO ? FXL_PERSP_MAX : L, affine);
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
     if (L)
@@ -1087,6 +1142,8 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
             int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch, n, wide = 0;
             if (!fz_written_pixel(c, s, row, col, &px))
                 continue;
+            if (gouraud)
+                fz_gouraud_range(&g, fx, fy, clo, chi);
             if (ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, &u, &v, NULL, NULL) != 0)
                 FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
             /* a segment's ends are up to L pixels from the pixel: the
@@ -1115,18 +1172,31 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     const int ci = col - j + 15;
                     if (!lod_known[ci]) {
                         (void)ref_uv_at(c->v, (double)(fx - j) + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
-                        lod_at[ci] = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        lod_lo[ci] = lod_hi[ci] = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        if (d->persp == FXL_PERSP_AUTO) {
+                            /* a triangle AUTO draws affine (its vertex test)
+                             * takes the LOD of the affine map it draws */
+                            double la;
+                            (void)ref_uv_at(c->v, (double)(fx - j) + 0.5, (double)fy + 0.5, 1, NULL, NULL, du, dv);
+                            la = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                            lod_lo[ci] = la < lod_lo[ci] ? la : lod_lo[ci];
+                            lod_hi[ci] = la > lod_hi[ci] ? la : lod_hi[ci];
+                        }
                         lod_known[ci] = 1;
                     }
-                    lmin = lod_at[ci] < lmin ? lod_at[ci] : lmin;
-                    lmax = lod_at[ci] > lmax ? lod_at[ci] : lmax;
+                    lmin = lod_lo[ci] < lmin ? lod_lo[ci] : lmin;
+                    lmax = lod_hi[ci] > lmax ? lod_hi[ci] : lmax;
                 }
                 /* Derivatives near zero (u, v nearly constant) are rounding
                  * noise of the planes, ~2^-30 of their values: the core's
                  * LOD is then anything up to log2 of that (generously
                  * 2^-20 (U + 1) R texels a pixel), which a bias can lift
-                 * into the chain while the exact LOD is -inf. */
+                 * into the chain while the exact LOD is -inf; and where the
+                 * reference's LOD is below that, its own long-double rounding
+                 * (~2^-44 texels a pixel) may stand for a -inf the core sees. */
                 lmax = lmax > lod_noise ? lmax : lod_noise;
+                if (lmin < lod_noise)
+                    lmin = -1e300;   /* below the noise the reference's own rounding is no better */
                 lmin = lmin - tol < 0 ? 0 : (lmin - tol > top ? top : lmin - tol);   /* NaN-free: -inf clamps */
                 lmax = lmax + tol < 0 ? 0 : (lmax + tol > top ? top : lmax + tol);
                 n_lo = (int)floor(linear ? lmin : lmin + 0.5);
@@ -1157,10 +1227,14 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                             continue;
                         }
                         if (!blend) {
-                            hit = (modulate ? (uint16_t)(((tc[0] * (cc[0] + 1)) >> 5) << 11 |
-                                                         ((tc[1] * (cc[1] + 1)) >> 6) << 5 |
-                                                         ((tc[2] * (cc[2] + 1)) >> 5))
-                                            : t) == px;
+                            /* modulate is monotonic in the colour */
+                            hit = 1;
+                            for (ch = 0; ch < 3; ch++) {
+                                const int sh = ch == 1 ? 6 : 5, p = (px >> fz_ch_shift[ch]) & fz_ch_top[ch];
+                                hit &= modulate ? p >= (tc[ch] * (clo[ch] + 1)) >> sh &&
+                                                      p <= (tc[ch] * (chi[ch] + 1)) >> sh
+                                                : p == tc[ch];
+                            }
                             continue;
                         }
                         for (ch = 0; ch < 3; ch++) {
@@ -1179,12 +1253,19 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 hit = 1;
                 for (ch = 0; ch < 3; ch++) {
                     const int sh = ch == 1 ? 6 : 5;
-                    const int l = modulate ? (lo[ch] * (cc[ch] + 1)) >> sh : lo[ch];
-                    const int h = modulate ? (hi[ch] * (cc[ch] + 1)) >> sh : hi[ch];
+                    const int l = modulate ? (lo[ch] * (clo[ch] + 1)) >> sh : lo[ch];
+                    const int h = modulate ? (hi[ch] * (chi[ch] + 1)) >> sh : hi[ch];
                     hit &= pc[ch] >= l && pc[ch] <= h;
                 }
             }
-            hit |= decal && keyed && px == d->color;
+            if (decal && keyed && !hit) {
+                /* the colour where the texel is keyed */
+                hit = 1;
+                for (ch = 0; ch < 3; ch++) {
+                    const int p = (px >> fz_ch_shift[ch]) & fz_ch_top[ch];
+                    hit &= p >= clo[ch] && p <= chi[ch];
+                }
+            }
             if (!hit)
                 FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X, no %s of texels [%lld,%lld]x[%lld,%lld] (levels "
                         "%d..%d) around the exact level-0 (%.6f, %.6f) +- (%.3g, %.3g)",
@@ -1197,10 +1278,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
 }
 
 /* Check 7 for untextured draws: a flat one writes its colour exactly; a
- * Gouraud one each channel within the bound of its perspective (affine:
- * screen-linear) interpolation, as u on a one-texel clamp axis: the core
- * interpolates the channels (r5, g6, b5 in q16) like u, v, clamps them to
- * the channel and floors. */
+ * Gouraud one each channel within its interpolation's bound (fz_gouraud). */
 static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
     const fxl_draw_t *d = &c->draw;
@@ -1208,32 +1286,17 @@ static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out,
      * FXL_PERSP_SPAN segments (raster.h, auto_budget) */
     const int L = d->persp == FXL_PERSP_AFFINE ? FXL_PERSP_MAX
                   : d->persp == FXL_PERSP_AUTO ? FXL_PERSP_SPAN : (d->persp > 1 ? d->persp : 0);
-    const int affine = d->persp == FXL_PERSP_AFFINE;
-    static const int sh[3] = {11, 5, 0}, top[3] = {31, 63, 31};
-    fz_case cs[2];   /* channels (r, g) and (b, -) as the u, v of a 1 x 1 clamp texture */
-    double chord[2] = {0, 0};
+    fz_gouraud g;
     int32_t row, col;
-    int i, k;
 
     if (d->texture)
         return 0;
-    for (k = 0; k < 2; k++) {
-        cs[k] = *c;
-        cs[k].tex.log2_w = cs[k].tex.log2_h = 0;
-        cs[k].tex.wrap_u = cs[k].tex.wrap_v = FXL_WRAP_CLAMP;
-        for (i = 0; i < 3; i++) {
-            const uint16_t col565 = c->v[i].color;
-            cs[k].v[i].u = (fxl_q16_t)(((col565 >> sh[2 * k]) & (uint32_t)top[2 * k]) << 16);
-            cs[k].v[i].v = k ? 0 : (fxl_q16_t)(((col565 >> sh[1]) & 63u) << 16);
-        }
-        if (L)
-            chord[k] = affine ? L / 65536.0 : fz_chord_bound(&cs[k], L);
-    }
+    fz_gouraud_init(&g, c, L, d->persp == FXL_PERSP_AFFINE);
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const int64_t fx = (int64_t)col + c->origin_x, fy = (int64_t)row + c->origin_y;
             uint16_t px;
-            int ch;
+            int ch, lo[3], hi[3];
             if (!fz_written_pixel(c, s, row, col, &px))
                 continue;
             if (d->shade == FXL_SHADE_FLAT) {
@@ -1242,24 +1305,13 @@ static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out,
                 out->texel_checked++;
                 continue;
             }
+            fz_gouraud_range(&g, fx, fy, lo, hi);
             for (ch = 0; ch < 3; ch++) {
-                const int kk = ch >> 1;
-                double val[2], e[2], lo, hi;
-                const int p = (px >> sh[ch]) & top[ch];
-                if (ref_uv_at(cs[kk].v, (double)fx + 0.5, (double)fy + 0.5, affine, &val[0], &val[1], NULL, NULL) != 0)
-                    FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
-                fz_exact_bound(&cs[kk], fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)L, affine, e);
-                {
-                    const double x = ch == 1 ? val[1] : val[0], b = (ch == 1 ? e[1] : e[0]) + chord[kk];
-                    lo = floor(x - b);
-                    hi = floor(x + b);
-                }
-                lo = lo < 0 ? 0 : (lo > top[ch] ? top[ch] : lo);
-                hi = hi < 0 ? 0 : (hi > top[ch] ? top[ch] : hi);
-                if (p < lo || p > hi)
+                const int p = (px >> fz_ch_shift[ch]) & fz_ch_top[ch];
+                if (p < lo[ch] || p > hi[ch])
                     FZ_FAIL("pixel (%d,%d) (frame %lld,%lld) is %04X: channel %d is %d, the interpolation allows "
-                            "%.0f..%.0f",
-                            col, row, (long long)fx, (long long)fy, px, ch, p, lo, hi);
+                            "%d..%d",
+                            col, row, (long long)fx, (long long)fy, px, ch, p, lo[ch], hi[ch]);
             }
             out->texel_checked++;
         }
