@@ -10,6 +10,7 @@
 #include "test_features.h"
 #include "left_out.h"
 #include "fixel/fixel.h"
+#include "reference.h"
 #include "../src/raster_int.h"
 #include "../src/auto.h"
 
@@ -813,33 +814,15 @@ void test_exact_mode_error_within_its_plane_precision_bound(void)
  * u'' = -2 u' q' / q, so linear interpolation over L pixels errs by at most
  * L^2/8 max|u''| = L^2 max|u' q'| / (4 q). u' = (s' q - s q') / q^2 where
  * the numerator is linear over the triangle, so bounding |numerator| by its
- * vertex maximum and q by its vertex minimum gives a per-triangle bound;
- * plus the exact-mode tolerance and one q16 step per pixel of truncation. */
+ * vertex maximum and q by its vertex minimum gives a per-triangle bound
+ * (ref_chord_bound, which the fuzz's check 7 uses too); plus the exact-mode
+ * tolerance and one q16 step per pixel of truncation. */
 static double subdiv_bound(const tri_t *tr, int L, int tw)
 {
-    double X[3], Y[3], q[3], u[3], v[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
-    int i;
-    for (i = 0; i < 3; i++) {
-        X[i] = fxl_snap_subpx(tr->v[i].x) / (double)FXL__ONE;
-        Y[i] = fxl_snap_subpx(tr->v[i].y) / (double)FXL__ONE;
-        q[i] = tr->v[i].inv_w;
-        u[i] = tr->v[i].u / 65536.0 * tw * q[i];
-        v[i] = tr->v[i].v / 65536.0 * tw * q[i];
-        if (q[i] < qmin)
-            qmin = q[i];
-    }
-    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-#define GX(a) (((a[1] - a[0]) * (Y[2] - Y[0]) - (a[2] - a[0]) * (Y[1] - Y[0])) / det)
-    qx = GX(q);
-    sux = GX(u);
-    svx = GX(v);
-#undef GX
-    for (i = 0; i < 3; i++) {
-        double a = fabs(sux * q[i] - u[i] * qx), b = fabs(svx * q[i] - v[i] * qx);
-        if (a > nu) nu = a;
-        if (b > nv) nv = b;
-    }
-    return (double)L * L / 4.0 * fabs(qx) * hypot(nu, nv) / (qmin * qmin * qmin) + 1.0 / 64 + L / 65536.0;
+    uint32_t lg = 0;
+    while ((1 << lg) < tw)
+        lg++;
+    return ref_chord_bound(tr->v, lg, lg, L) + 1.0 / 64;   /* (ref_chord_bound's derivation) */
 }
 
 void test_subdivided_modes_within_derived_bound_and_affine_is_worse(void)

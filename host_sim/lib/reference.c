@@ -402,6 +402,32 @@ double ref_lod_triangle(const fxl_texture_t *t, const fxl_vertex_t tri[3])
     return log2(texel_area / pixel_area) / 2;
 }
 
+double ref_chord_bound(const fxl_vertex_t tri[3], uint32_t log2_w, uint32_t log2_h, int L)
+{
+    double X[3], Y[3], q[3], su[3], sv[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = ref_snap(tri[i].x) / 16.0;
+        Y[i] = ref_snap(tri[i].y) / 16.0;
+        q[i] = (double)tri[i].inv_w;
+        su[i] = tri[i].u / 65536.0 * ldexp(1.0, (int)log2_w) * q[i];
+        sv[i] = tri[i].v / 65536.0 * ldexp(1.0, (int)log2_h) * q[i];
+        qmin = q[i] < qmin ? q[i] : qmin;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+#define REF_GX(a) (((a[1] - a[0]) * (Y[2] - Y[0]) - (a[2] - a[0]) * (Y[1] - Y[0])) / det)
+    qx = REF_GX(q);
+    sux = REF_GX(su);
+    svx = REF_GX(sv);
+#undef REF_GX
+    for (i = 0; i < 3; i++) {
+        const double a = fabs(sux * q[i] - su[i] * qx), b = fabs(svx * q[i] - sv[i] * qx);
+        nu = a > nu ? a : nu;
+        nv = b > nv ? b : nv;
+    }
+    return (double)L * L / 4.0 * fabs(qx) * hypot(nu, nv) / (qmin * qmin * qmin) + L / 65536.0;
+}
+
 double ref_lod_pixel(const fxl_texture_t *t, const double du[2], const double dv[2])
 {
     double w0 = (double)(1u << t->log2_w), h0 = (double)(1u << t->log2_h);

@@ -128,6 +128,14 @@ int ref_texel(const fxl_texture_t *t, uint32_t level, int64_t x, int64_t y, doub
  * as above, key handling included). Returns 1 if transparent, else 0. */
 int ref_sample_level(const fxl_texture_t *t, uint32_t level, fxl_filter_t filter, double ut,
                      double vt, double rgb[3]);
+/* The error that stepping u, v linearly over L pixels between exact points
+ * adds to the perspective map of tri, in level-0 texels of a 2^log2_w x
+ * 2^log2_h texture (both axes together): along a span u = s / q with s, q
+ * linear, so a chord over L pixels errs by at most L^2 max |u' q'| / (4 q)
+ * = L^2 |q_x| |N| / (4 q^3), N = s_x q - s q_x linear over the triangle
+ * (bounded by its vertex values, q by its smallest), plus one q16 unit a
+ * pixel of truncated steps. For the snapped vertices. */
+double ref_chord_bound(const fxl_vertex_t tri[3], uint32_t log2_w, uint32_t log2_h, int L);
 /* RGB565 word -> 0..255 channels (linear expansion). */
 void ref_rgb565_to_rgb(uint16_t c, double rgb[3]);
 

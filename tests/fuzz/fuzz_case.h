@@ -43,7 +43,7 @@
  *    as culled_degenerate.
  *  7 texels: where a draw promises an error bound - FXL_PERSP_EXACT its
  *    plane precision (fz_exact_bound), FXL_PERSP_AUTO that plus its budget,
- *    a fixed segment length L that plus the chord bound (fz_chord_bound),
+ *    a fixed segment length L that plus the chord bound (ref_chord_bound),
  *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
  *    - on level 0, or on the levels the LOD can pick (within 4/256 level
  *    of the reference's: per triangle, or per segment at any pixel that can
@@ -945,38 +945,6 @@ static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack
     }
 }
 
-/* What stepping L pixels between exact points adds (test_raster's
- * subdiv_bound): along a span u = s / q with s, q linear, so a chord over L
- * pixels errs by at most L^2 max |u' q'| / (4 q) = L^2 |q_x| |N| / (4 q^3)
- * with N = s_x q - s q_x linear over the triangle (bounded by its vertex
- * values, q by its smallest), plus one q16 unit a pixel of truncated
- * steps. Level-0 texels, both axes together. */
-static double fz_chord_bound(const fz_case *c, int L)
-{
-    double X[3], Y[3], q[3], su[3], sv[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
-    int i;
-    for (i = 0; i < 3; i++) {
-        X[i] = ref_snap(c->v[i].x) / 16.0;
-        Y[i] = ref_snap(c->v[i].y) / 16.0;
-        q[i] = (double)c->v[i].inv_w;
-        su[i] = c->v[i].u / 65536.0 * ldexp(1.0, c->tex.log2_w) * q[i];
-        sv[i] = c->v[i].v / 65536.0 * ldexp(1.0, c->tex.log2_h) * q[i];
-        qmin = q[i] < qmin ? q[i] : qmin;
-    }
-    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-#define FZ_GX(a) (((a[1] - a[0]) * (Y[2] - Y[0]) - (a[2] - a[0]) * (Y[1] - Y[0])) / det)
-    qx = FZ_GX(q);
-    sux = FZ_GX(su);
-    svx = FZ_GX(sv);
-#undef FZ_GX
-    for (i = 0; i < 3; i++) {
-        const double a = fabs(sux * q[i] - su[i] * qx), b = fabs(svx * q[i] - sv[i] * qx);
-        nu = a > nu ? a : nu;
-        nv = b > nv ? b : nv;
-    }
-    return (double)L * L / 4.0 * fabs(qx) * hypot(nu, nv) / (qmin * qmin * qmin) + L / 65536.0;
-}
-
 /* The level-0 texels [lo, hi] an axis whose values (point) or blend
  * (bilinear: the taps at floor(t - 1/2) and one more) a coordinate within
  * t +- e can read. Returns 0 when that is more than FZ_TEXEL_SPAN. */
@@ -1030,7 +998,7 @@ static void fz_gouraud_init(fz_gouraud *g, const fz_case *c, int L, int affine)
             g->cs[k].v[i].u = (fxl_q16_t)(((col565 >> fz_ch_shift[2 * k]) & (uint32_t)fz_ch_top[2 * k]) << 16);
             g->cs[k].v[i].v = k ? 0 : (fxl_q16_t)(((col565 >> 5) & 63u) << 16);
         }
-        g->chord[k] = !L ? 0 : (affine ? L / 65536.0 : fz_chord_bound(&g->cs[k], L));
+        g->chord[k] = !L ? 0 : (affine ? L / 65536.0 : ref_chord_bound(g->cs[k].v, 0, 0, L));
     }
 }
 
@@ -1099,16 +1067,17 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     /* affine: against the screen-linear map, to which it is exact but for
      * its steps' truncation */
     if (L)
-        chord = affine ? L / 65536.0 : fz_chord_bound(c, L);
+        chord = affine ? L / 65536.0 : ref_chord_bound(c->v, c->tex.log2_w, c->tex.log2_h, L);
     if (mips && !per_seg) {
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
         /* raster.h: coordinate differences of 2^31 units (32768 periods)
          * or more are halved, and the area of a texture-space sliver then
          * loses its precision: not checked */
-        for (n_lo = 1; n_lo < 3; n_lo++)
-            if (fabs((double)c->v[n_lo].u - c->v[0].u) >= 2147483648.0 ||
-                fabs((double)c->v[n_lo].v - c->v[0].v) >= 2147483648.0)
+        int i;
+        for (i = 1; i < 3; i++)
+            if (fabs((double)c->v[i].u - c->v[0].u) >= 2147483648.0 ||
+                fabs((double)c->v[i].v - c->v[0].v) >= 2147483648.0)
                 return 0;
         lod = lod < 0 ? 0 : (lod > top ? top : lod);   /* also -HUGE_VAL (no texel area) */
         lo = lod - tol < 0 ? 0 : lod - tol;
