@@ -191,7 +191,7 @@ int main(int argc, char **argv)
         uint64_t done = i - start;
         printf("fixel-fuzz: seed %llu, cases %llu..%llu: %llu run in %.1f s (%.0f cases/s), %llu valid "
                "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written "
-               "(%llu held to the texels or colour their mode's bound allows, %llu too wide to check); "
+               "(%llu held to the texels or colour their mode's bound allows, %llu of them through level indexes); "
                "%llu front-end cases (%llu valid, %llu screen triangles, %llu mesh triangles placed against a "
                "double projection); %llu finding(s)\n",
                (unsigned long long)seed, (unsigned long long)start, (unsigned long long)(start + done),

@@ -46,8 +46,11 @@
  *    a fixed segment length L that plus the chord bound (ref_chord_bound),
  *    FXL_PERSP_AFFINE the plane precision against the screen-linear map
  *    - on level 0, or on the levels the LOD can pick (within 4/256 level
- *    of the reference's: per triangle, or per segment at any pixel that can
- *    be the segment's correction point), flat shade, any texenv:
+ *    of the reference's: per triangle, or per segment at the segment's
+ *    correction point - a fixed length L's segments start at the span's
+ *    first pixel and every L-th (every pixel where a clamp coordinate
+ *    saturates), AUTO's LOD at any of its 16 grid candidates), flat shade,
+ *    any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
  *    within the texels (bilinear), modulated or decalled by the flat colour
  *    or the Gouraud interval (fz_gouraud),
@@ -55,9 +58,13 @@
  *    (u, v) widened by the bound. The texels are random, so a wrong texel
  *    is caught, and a bound a core path breaks is found. Untextured: the
  *    flat colour exactly, Gouraud channels within their interpolation's
- *    bound (fz_check_colors). Pixels whose
- *    widened footprint spans more than FZ_TEXEL_SPAN texels an axis are
- *    left unchecked (counted apart).
+ *    bound (fz_check_colors). Where the widened footprint spans more than
+ *    FZ_TEXEL_SPAN texels an axis, the pixel is checked through the level's
+ *    index (fz_texidx; counted apart): a point sample exactly against the
+ *    texels of its colour, a blend against the channel range of the blocks
+ *    covering the footprint. Where the level cannot be known (a
+ *    per-triangle LOD from coordinate differences of 2^31 units or more)
+ *    every level counts.
  */
 #ifndef FXL_FUZZ_CASE_H
 #define FXL_FUZZ_CASE_H
@@ -634,11 +641,267 @@ static uint32_t fz_status_bit(fxl_status_t st)
 
 /* ---- running a case ----------------------------------------------------------- */
 
+/* ---- check 7's level indexes -------------------------------------------------
+ * A footprint wider than FZ_TEXEL_SPAN texels an axis (minified draws, large
+ * bounds) is too many texels to read one by one at every pixel. For those
+ * pixels each texture level gets, once per case and when first needed:
+ * - its texels sorted by colour (keyed ones left out), so that a point
+ *   sample (replace, decal) is held exactly to "some texel of this colour
+ *   lies in the footprint";
+ * - a min/max pyramid of its channels over aligned blocks, so that a blend
+ *   (or a modulated point sample) is held to the channel range of the blocks
+ *   that cover the footprint: a superset of its texels, never more than 8
+ *   blocks an axis, so a little looser than the texels themselves.
+ * Wrapped, a footprint is up to three intervals of the level an axis
+ * (fz_axis), plus the border colour where it leaves a border axis. */
+#define FZ_IDX_LEVELS (FXL_TEX_MAX_LOG2 + 1)
+#define FZ_IDX_TEXELS (2u * FZ_TEX_MAX_TEXELS0 + 64u)   /* any chain of <= 2^16 level-0 texels */
+
+typedef struct fz_block {
+    uint8_t lo[3], hi[3];   /* channel range of its unkeyed texels (lo > hi: none) */
+    uint8_t keyed;          /* it holds a keyed texel */
+} fz_block;
+
+typedef struct fz_level_idx {
+    int built, sorted;
+    uint32_t lw, lh, count;      /* log2 size; unkeyed texels */
+    uint64_t *by_colour;         /* colour << 32 | (y << lw | x), sorted */
+    fz_block *blocks;            /* pyramid: step k has blocks of 2^min(k,lw) x 2^min(k,lh) */
+    size_t step_at[FXL_TEX_MAX_LOG2 + 2];
+} fz_level_idx;
+
+typedef struct fz_texidx {
+    fz_level_idx lv[FZ_IDX_LEVELS];
+    uint64_t *colour_mem, *sort_tmp;
+    fz_block *block_mem;
+    size_t colour_used, block_used;
+} fz_texidx;
+
+static struct fz_texidx *fz_texidx_new(void)
+{
+    fz_texidx *x = (fz_texidx *)calloc(1, sizeof *x);
+    if (!x)
+        return NULL;
+    x->colour_mem = (uint64_t *)malloc(FZ_IDX_TEXELS * sizeof *x->colour_mem);
+    x->sort_tmp = (uint64_t *)malloc((FZ_TEX_MAX_TEXELS0 + 64u) * sizeof *x->sort_tmp);
+    /* a pyramid holds at most twice its level's texels (a 1-texel-high level) */
+    x->block_mem = (fz_block *)malloc(2u * FZ_IDX_TEXELS * sizeof *x->block_mem);
+    if (!x->colour_mem || !x->sort_tmp || !x->block_mem)
+        return NULL;
+    return x;
+}
+
+/* Forget the previous case's texture. */
+static void fz_texidx_reset(fz_texidx *x)
+{
+    int n;
+    for (n = 0; n < FZ_IDX_LEVELS; n++)
+        x->lv[n].built = 0;
+    x->colour_used = x->block_used = 0;
+}
+
+/* Sort a level's entries by colour: two stable counting passes over the
+ * colour's bytes (entries are made in index order, so ties stay sorted). */
+static void fz_sort_by_colour(uint64_t *e, uint64_t *tmp, uint32_t n)
+{
+    int pass;
+    for (pass = 0; pass < 2; pass++) {
+        uint32_t at[257] = {0}, i;
+        const int sh = 32 + 8 * pass;
+        for (i = 0; i < n; i++)
+            at[((e[i] >> sh) & 255u) + 1]++;
+        for (i = 1; i < 257; i++)
+            at[i] += at[i - 1];
+        for (i = 0; i < n; i++)
+            tmp[at[(e[i] >> sh) & 255u]++] = e[i];
+        memcpy(e, tmp, (size_t)n * sizeof *e);
+    }
+}
+
+static void fz_block_add(fz_block *b, const fz_block *o)
+{
+    int ch;
+    for (ch = 0; ch < 3; ch++) {
+        b->lo[ch] = o->lo[ch] < b->lo[ch] ? o->lo[ch] : b->lo[ch];
+        b->hi[ch] = o->hi[ch] > b->hi[ch] ? o->hi[ch] : b->hi[ch];
+    }
+    b->keyed |= o->keyed;
+}
+
+static const fz_block fz_block_empty = {{255, 255, 255}, {0, 0, 0}, 0};
+
+static fz_level_idx *fz_level(fz_texidx *x, const fxl_texture_t *t, uint32_t n)
+{
+    fz_level_idx *L = &x->lv[n];
+    uint32_t xx, yy, k, kmax;
+    if (L->built)
+        return L;
+    L->lw = t->log2_w > n ? t->log2_w - n : 0;
+    L->lh = t->log2_h > n ? t->log2_h - n : 0;
+    L->by_colour = x->colour_mem + x->colour_used;
+    L->blocks = x->block_mem + x->block_used;
+    L->count = 0;
+    for (yy = 0; yy < 1u << L->lh; yy++)
+        for (xx = 0; xx < 1u << L->lw; xx++) {
+            int key = 0;
+            const uint16_t c = fxl_texture_fetch(t, n, (int32_t)xx, (int32_t)yy, &key);
+            fz_block *b = &L->blocks[(yy << L->lw) + xx];
+            *b = fz_block_empty;
+            if (key) {
+                b->keyed = 1;
+                continue;
+            }
+            b->lo[0] = b->hi[0] = (uint8_t)(c >> 11);
+            b->lo[1] = b->hi[1] = (uint8_t)((c >> 5) & 63u);
+            b->lo[2] = b->hi[2] = (uint8_t)(c & 31u);
+            L->by_colour[L->count++] = (uint64_t)c << 32 | ((uint64_t)yy << L->lw | xx);
+        }
+    L->sorted = 0;   /* sorted when first asked for a colour */
+    x->colour_used += L->count;
+    /* step k from step k - 1: an axis stops halving at one block */
+    kmax = L->lw > L->lh ? L->lw : L->lh;
+    L->step_at[0] = 0;
+    L->step_at[1] = (size_t)1 << (L->lw + L->lh);
+    for (k = 1; k <= kmax; k++) {
+        const uint32_t pw = L->lw - (k - 1 < L->lw ? k - 1 : L->lw), ph = L->lh - (k - 1 < L->lh ? k - 1 : L->lh);
+        const uint32_t w = L->lw - (k < L->lw ? k : L->lw), h = L->lh - (k < L->lh ? k : L->lh);
+        const fz_block *prev = L->blocks + L->step_at[k - 1];
+        fz_block *cur = L->blocks + L->step_at[k];
+        for (yy = 0; yy < 1u << h; yy++)
+            for (xx = 0; xx < 1u << w; xx++) {
+                /* the previous step's blocks this one covers: 1 or 2 an axis */
+                const uint32_t fx = w < pw ? 2u : 1u, fy = h < ph ? 2u : 1u;
+                uint32_t i, j;
+                fz_block *b = &cur[(yy << w) + xx];
+                *b = fz_block_empty;
+                for (j = 0; j < fy; j++)
+                    for (i = 0; i < fx; i++)
+                        fz_block_add(b, &prev[((yy * fy + j) << pw) + xx * fx + i]);
+            }
+        L->step_at[k + 1] = L->step_at[k] + ((size_t)1 << (w + h));
+    }
+    x->block_used += L->step_at[kmax + 1];
+    L->built = 1;
+    return L;
+}
+
+/* An axis of a level: the in-range texel intervals a footprint reaches. */
+typedef struct fz_axis {
+    int32_t lo[3], hi[3];
+    int n;
+    int border;   /* it reads the border colour too */
+} fz_axis;
+
+static void fz_axis_add(fz_axis *a, int64_t lo, int64_t hi)
+{
+    a->lo[a->n] = (int32_t)lo;
+    a->hi[a->n] = (int32_t)hi;
+    a->n++;
+}
+
+/* The texels an axis of 2^lg texels reads under wrap for level coordinates
+ * [lo, hi] (whole, unwrapped); whole = 0 when they are too far out to hold
+ * (all of the axis, and its border). */
+static void fz_axis_make(double lo, double hi, uint32_t lg, uint8_t wrap, fz_axis *a)
+{
+    const int64_t n = (int64_t)1 << lg, period = wrap == FXL_WRAP_MIRROR ? 2 * n : n;
+    int64_t l, h, s, e;
+    a->n = 0;
+    a->border = 0;
+    if (!(lo > -1e15 && hi < 1e15 && hi - lo < 1e15)) {   /* NaN-safe */
+        fz_axis_add(a, 0, n - 1);
+        a->border = wrap == FXL_WRAP_BORDER;
+        return;
+    }
+    l = (int64_t)lo;
+    h = (int64_t)hi;
+    if (wrap == FXL_WRAP_CLAMP || wrap == FXL_WRAP_BORDER) {
+        a->border = wrap == FXL_WRAP_BORDER && (l < 0 || h >= n);
+        if (wrap == FXL_WRAP_CLAMP) {
+            l = l < 0 ? 0 : (l > n - 1 ? n - 1 : l);
+            h = h < 0 ? 0 : (h > n - 1 ? n - 1 : h);
+        } else {
+            l = l < 0 ? 0 : l;
+            h = h > n - 1 ? n - 1 : h;
+        }
+        if (l <= h)
+            fz_axis_add(a, l, h);
+        return;
+    }
+    if (h - l + 1 >= period) {
+        fz_axis_add(a, 0, n - 1);
+        return;
+    }
+    /* [s, e] within [0, 2 period): cut at multiples of n; a mirror's odd
+     * cells read backwards */
+    s = ((l % period) + period) % period;
+    e = s + (h - l);
+    while (s <= e) {
+        const int64_t cell = s / n, end = (cell + 1) * n - 1 < e ? (cell + 1) * n - 1 : e;
+        const int64_t a0 = s - cell * n, a1 = end - cell * n;
+        if (wrap == FXL_WRAP_MIRROR && (cell & 1))
+            fz_axis_add(a, n - 1 - a1, n - 1 - a0);
+        else
+            fz_axis_add(a, a0, a1);
+        s = end + 1;
+    }
+}
+
+static int fz_axis_has(const fz_axis *a, int64_t t)
+{
+    int i;
+    for (i = 0; i < a->n; i++)
+        if (t >= a->lo[i] && t <= a->hi[i])
+            return 1;
+    return 0;
+}
+
+/* Is some unkeyed texel of colour px inside the footprint au x av? */
+static int fz_level_has_colour(fz_texidx *x, fz_level_idx *L, const fz_axis *au, const fz_axis *av, uint16_t px)
+{
+    const uint64_t key = (uint64_t)px << 32;
+    size_t lo = 0, hi = L->count;
+    if (!L->sorted) {
+        fz_sort_by_colour(L->by_colour, x->sort_tmp, L->count);
+        L->sorted = 1;
+    }
+    while (lo < hi) {   /* the first entry >= key */
+        const size_t mid = lo + (hi - lo) / 2;
+        if (L->by_colour[mid] < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; lo < L->count && (L->by_colour[lo] >> 32) == px; lo++) {
+        const uint32_t i = (uint32_t)L->by_colour[lo];
+        if (fz_axis_has(au, i & ((1u << L->lw) - 1u)) && fz_axis_has(av, i >> L->lw))
+            return 1;
+    }
+    return 0;
+}
+
+/* The channel range (and keyed flag) of blocks covering [x0, x1] x [y0, y1]. */
+static void fz_level_range(const fz_level_idx *L, int32_t x0, int32_t x1, int32_t y0, int32_t y1, fz_block *r)
+{
+    uint32_t k = 0, ku, kv;
+    int32_t bx, by;
+    for (;; k++) {
+        ku = k < L->lw ? k : L->lw;
+        kv = k < L->lh ? k : L->lh;
+        if ((x1 >> ku) - (x0 >> ku) < 8 && (y1 >> kv) - (y0 >> kv) < 8)
+            break;
+    }
+    for (by = y0 >> kv; by <= y1 >> kv; by++)
+        for (bx = x0 >> ku; bx <= x1 >> ku; bx++)
+            fz_block_add(r, &L->blocks[L->step_at[k] + ((size_t)by << (L->lw - ku)) + (size_t)bx]);
+}
+
 typedef struct fz_state {
     fz_guard texmem, palmem;
     uint16_t *pix_a, *pix_b, *dep_a, *dep_b, *dep_init;  /* FZ_CANARY + stride*h + FZ_CANARY */
     uint8_t *cover;                                       /* w*h */
     uint8_t *probe_cnt;
+    struct fz_texidx *texidx;                             /* check 7's level indexes */
     size_t cap;
     int ready;
 } fz_state;
@@ -652,7 +915,7 @@ typedef struct fz_outcome {
     uint32_t emitted;       /* front end: screen triangles emitted */
     uint32_t placed;        /* front end: mesh triangles found where the double projection puts them */
     uint32_t texel_checked; /* check 7: pixels held to their texel footprint or colour */
-    uint32_t texel_wide;    /* check 7: pixels whose footprint was too wide to check */
+    uint32_t texel_wide;    /* check 7: of those, pixels checked through the level indexes (fz_texidx) */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */
@@ -707,7 +970,9 @@ static int fz_state_init(fz_state *s)
     s->dep_init = (uint16_t *)malloc(words * 2u);
     s->cover = (uint8_t *)malloc((size_t)FZ_MAX_DIM * FZ_MAX_DIM);
     s->probe_cnt = (uint8_t *)malloc((size_t)FZ_MAX_DIM * FZ_MAX_DIM);
-    if (!s->pix_a || !s->pix_b || !s->dep_a || !s->dep_b || !s->dep_init || !s->cover || !s->probe_cnt)
+    s->texidx = fz_texidx_new();
+    if (!s->pix_a || !s->pix_b || !s->dep_a || !s->dep_b || !s->dep_init || !s->cover || !s->probe_cnt ||
+        !s->texidx)
         return -1;
     s->ready = 1;
     return 0;
@@ -1019,6 +1284,40 @@ static void fz_gouraud_range(const fz_gouraud *g, int64_t fx, int64_t fy, int lo
     }
 }
 
+/* Does a clamp or border axis have a vertex 2^31 - 2^16 q16 texels or more
+ * from 0 (setup.c, rebase)? The triangle is then divided at every pixel
+ * whatever persp says (raster.h). */
+static int fz_clamp_saturates(const fz_case *c)
+{
+    int axis, i;
+    for (axis = 0; FXL_HAVE_GENERIC && axis < 2; axis++) {
+        const uint8_t wrap = axis ? c->tex.wrap_v : c->tex.wrap_u;
+        const int64_t lim = (int64_t)(0x7FFF0000u >> (axis ? c->tex.log2_h : c->tex.log2_w));
+        for (i = 0; i < 3 && wrap >= FXL_WRAP_CLAMP; i++) {
+            const int64_t t = axis ? c->v[i].v : c->v[i].u;
+            if (t >= lim || t <= -lim)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* The frame column of the first pixel of the triangle's span on frame row
+ * fy, whose pixel fx is covered: spans are convex, and no pixel left of
+ * -2^17 is (|x| < 32768 px). */
+static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
+{
+    int64_t lo = -((int64_t)1 << 17), hi = fx;   /* lo not covered, hi covered */
+    while (hi - lo > 1) {
+        const int64_t mid = lo + (hi - lo) / 2;
+        if (ref_pixel_covered(c->v, (int32_t)mid, (int32_t)fy))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
 /* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
 static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
@@ -1047,10 +1346,15 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int mips = c->tex.levels > 1 && d->mip != FXL_MIP_NONE;
     const int linear = mips && d->mip == FXL_MIP_LINEAR;
     const int blend = bil || linear;
-    /* A per-segment LOD is taken at the segment's first pixel (AUTO: at
-     * the 16-pixel grid point): one of the W pixels up to this one. */
+    /* A per-segment LOD is taken at the segment's first pixel. A fixed
+     * length L starts its segments at the span's first pixel and every L-th
+     * (raster.h; exact mode: every pixel): one candidate. AUTO takes it at
+     * its 16-pixel grid points: one of the W = 16 pixels up to this one. */
     const int per_seg = mips && d->lod == FXL_LOD_SEGMENT;
-    const int W = d->persp == FXL_PERSP_AUTO ? 16 : (d->persp == FXL_PERSP_EXACT ? 1 : L);
+    const int auto_lod = d->persp == FXL_PERSP_AUTO, W = 16;
+    const int64_t seg_len = d->persp == FXL_PERSP_EXACT || fz_clamp_saturates(c) ? 1 : L;
+    int64_t span_first = 0, seg_first = INT64_MIN;
+    double seg_lod = 0;
     double chord = 0, drift = 0;
     int n_lo = 0, n_hi = 0;
     /* the exact LOD (bias added; AUTO: perspective and affine) at columns
@@ -1059,9 +1363,14 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     uint8_t lod_known[FZ_MAX_DIM + 16];
     int32_t lod_row = -1;
     double lod_noise = -1e300;   /* per segment: the LOD of rounding-noise derivatives, bias added */
+    /* Levels not known (every level may be read): a per-triangle LOD from
+     * coordinate differences of 2^31 units or more, which raster.h halves
+     * (a texture-space sliver's area then loses its precision) */
+    int all_levels = 0;
 
-    if (!d->texture || (per_seg && W > 16))
+    if (!d->texture)
         return 0;
+    fz_texidx_reset(s->texidx);
     if (gouraud)
         fz_gouraud_init(&g, c, d->persp == FXL_PERSP_AUTO ? FXL_PERSP_MAX : L, affine);
     /* affine: against the screen-linear map, to which it is exact but for
@@ -1071,14 +1380,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     if (mips && !per_seg) {
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
-        /* raster.h: coordinate differences of 2^31 units (32768 periods)
-         * or more are halved, and the area of a texture-space sliver then
-         * loses its precision: not checked */
         int i;
         for (i = 1; i < 3; i++)
             if (fabs((double)c->v[i].u - c->v[0].u) >= 2147483648.0 ||
                 fabs((double)c->v[i].v - c->v[0].v) >= 2147483648.0)
-                return 0;
+                all_levels = 1;
         lod = lod < 0 ? 0 : (lod > top ? top : lod);   /* also -HUGE_VAL (no texel area) */
         lo = lod - tol < 0 ? 0 : lod - tol;
         hi = lod + tol > top ? top : lod + tol;
@@ -1088,7 +1394,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     }
     if (mips)
         drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
-    if (per_seg) {
+    if (all_levels) {
+        n_lo = 0;
+        n_hi = (int)c->tex.levels - 1;
+    }
+    if (per_seg && !all_levels) {
         double qmin = 4294967296.0, qmax = 0, umax = 0;
         int i, ax;
         for (i = 0; i < 3; i++) {
@@ -1108,7 +1418,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
             uint16_t px;
             double u, v, e[2];
             int64_t box[4] = {0, 0, 0, 0}, x, y;
-            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch, n, wide = 0;
+            int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0}, hit = 0, keyed = 0, ch, n, wide = 0, ranged = 0;
             if (!fz_written_pixel(c, s, row, col, &px))
                 continue;
             if (gouraud)
@@ -1125,9 +1435,9 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 e[0] += budget;
                 e[1] += budget;
             }
-            if (per_seg) {
-                /* the levels the exact LOD (within 4/256: test_lod) at any
-                 * of the W candidate correction points rounds to */
+            if (per_seg && !all_levels) {
+                /* the levels the exact LOD (within 4/256: test_lod) at the
+                 * segment's correction point (AUTO: any of W candidates) rounds to */
                 const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
                 double lmin = 1e300, lmax = -1e300, du[2], dv[2];
                 int j;
@@ -1135,8 +1445,21 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     lod_row = row;
                     for (j = 0; j < FZ_MAX_DIM + 16; j++)
                         lod_known[j] = 0;
+                    seg_first = INT64_MIN;
+                    if (!auto_lod)
+                        span_first = fz_span_first(c, fx, fy);
                 }
-                for (j = 0; j < W; j++) {
+                if (!auto_lod) {
+                    /* the one correction point of this pixel's segment */
+                    const int64_t x0 = span_first + (fx - span_first) / seg_len * seg_len;
+                    if (x0 != seg_first) {
+                        seg_first = x0;
+                        (void)ref_uv_at(c->v, (double)x0 + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
+                        seg_lod = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                    }
+                    lmin = lmax = seg_lod;
+                }
+                for (j = 0; auto_lod && j < W; j++) {
                     /* cached by column: pixels of a row share candidates */
                     const int ci = col - j + 15;
                     if (!lod_known[ci]) {
@@ -1172,7 +1495,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 n_hi = (int)floor(linear ? lmax : lmax + 0.5) + linear;
                 n_hi = n_hi > (int)top ? (int)top : n_hi;
             }
-            for (n = n_lo; n <= n_hi && !wide; n++) {
+            for (n = n_lo; n <= n_hi; n++) {
                 /* level n: an axis stops halving at one texel */
                 const int su = n < (int)c->tex.log2_w ? n : (int)c->tex.log2_w;
                 const int sv = n < (int)c->tex.log2_h ? n : (int)c->tex.log2_h;
@@ -1181,8 +1504,41 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 const double extra = n > 0 ? drift + 1.0 / 65536 : 0;   /* + the shift's floor */
                 if (!fz_footprint(tu, ldexp(e[0], -su) + extra, bil, &box[0], &box[1]) ||
                     !fz_footprint(tv, ldexp(e[1], -sv) + extra, bil, &box[2], &box[3])) {
+                    /* too many texels to read: the level's index */
+                    fz_level_idx *lv = fz_level(s->texidx, &c->tex, (uint32_t)n);
+                    const double cu = bil ? tu - 0.5 : tu, cv = bil ? tv - 0.5 : tv;
+                    const double eu = ldexp(e[0], -su) + extra, ev = ldexp(e[1], -sv) + extra;
+                    fz_axis au, av;
+                    fz_block r = fz_block_empty;
+                    int i, j;
                     wide = 1;
-                    break;
+                    fz_axis_make(floor(cu - eu), floor(cu + eu) + bil, lv->lw, c->tex.wrap_u, &au);
+                    fz_axis_make(floor(cv - ev), floor(cv + ev) + bil, lv->lh, c->tex.wrap_v, &av);
+                    if (blend || modulate || decal) {   /* (replace needs no key) */
+                        for (j = 0; j < av.n; j++)
+                            for (i = 0; i < au.n; i++)
+                                fz_level_range(lv, au.lo[i], au.hi[i], av.lo[j], av.hi[j], &r);
+                        keyed |= r.keyed;
+                    }
+                    if (!blend && !modulate) {
+                        /* a point sample is one texel: exactly */
+                        hit |= fz_level_has_colour(s->texidx, lv, &au, &av, px) ||
+                               ((au.border || av.border) && px == c->tex.border);
+                        continue;
+                    }
+                    if (au.border || av.border) {
+                        const uint16_t b = c->tex.border;
+                        const fz_block bb = {{(uint8_t)(b >> 11), (uint8_t)((b >> 5) & 63u), (uint8_t)(b & 31u)},
+                                             {(uint8_t)(b >> 11), (uint8_t)((b >> 5) & 63u), (uint8_t)(b & 31u)},
+                                             0};
+                        fz_block_add(&r, &bb);
+                    }
+                    for (ch = 0; ch < 3; ch++) {
+                        lo[ch] = r.lo[ch] < lo[ch] ? r.lo[ch] : lo[ch];
+                        hi[ch] = r.hi[ch] > hi[ch] ? r.hi[ch] : hi[ch];
+                    }
+                    ranged = 1;
+                    continue;
                 }
                 for (y = box[2]; y <= box[3] && !hit; y++)
                     for (x = box[0]; x <= box[1] && !hit; x++) {
@@ -1212,11 +1568,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                         }
                     }
             }
-            if (wide) {
+            if (wide)
                 out->texel_wide++;
-                continue;
-            }
-            if (blend) {
+            /* a blend, or a modulated point sample of a level read through
+             * its index, within the channel range (lo > hi: no texel) */
+            if (blend || (ranged && !hit)) {
                 /* modulate scales the blend, per channel and monotonically */
                 const int pc[3] = {px >> 11, (px >> 5) & 63, px & 31};
                 hit = 1;
