@@ -215,7 +215,9 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 #if FXL_HAVE_MIPMAP
     if (tri->nlevels > 1) {
         tri->mip_linear = d->mip == FXL_MIP_LINEAR;
-        tri->lod_per_segment = d->lod == FXL_LOD_SEGMENT;
+        /* (after fxl__setup) a gradient kept modulo 2^64 (raster_int.h,
+         * uv_wide) has lost the size the per-segment LOD reads */
+        tri->lod_per_segment = d->lod == FXL_LOD_SEGMENT && !(tri->uv_wide & 4u);
         if (!tri->lod_per_segment) {
             int32_t l = fxl_lod_triangle_q8(t, v) + d->lod_bias_q8;
             tri->lod_q8_tri = l < 0 ? 0 : (l > tri->lod_max_q8 ? tri->lod_max_q8 : l);
@@ -332,11 +334,11 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     tri.seg_log2 = seg_log2_for(tri.affine ? FXL_PERSP_AFFINE : draw->persp);
     tri.nlevels = 0;
     tri.mip_linear = 0;
-    if (tri.tex)
-        setup_levels(&tri, v);
     st = fxl__setup(&tri, v, X, Y, det);
     if (st != FXL_OK)
         return st;
+    if (tri.tex)
+        setup_levels(&tri, v);
 #if FXL_HAVE_AUTO
 #if FXL_HAVE_MIPMAP
     /* AUTO with a per-segment LOD: segments of at most the LOD grid
@@ -357,8 +359,9 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     /* A clamp/border coordinate saturates far outside (span.c): stepped
      * towards a saturated end, it would cross the texture too late. Rare
      * (|u| of 2^15 texels at a vertex), so such a triangle divides at
-     * every pixel, in every mode. */
-    if (FXL_HAVE_GENERIC && (tri.uv_wide & 2u)) {
+     * every pixel, in every mode; so does one whose gradients' size is
+     * lost (uv_wide bit 2), which the segment bounds read. */
+    if (tri.uv_wide & (FXL_HAVE_GENERIC ? 6u : 4u)) {
         tri.seg_log2 = 0;
         tri.auto_seg = 0;
     }

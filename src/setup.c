@@ -54,17 +54,28 @@ static int64_t div_frac(int64_t r, int64_t den, int bits)
     return r < 0 ? -(int64_t)q : (int64_t)q;
 }
 
-/* N / den with FXL__PF fraction bits, den > 0. A quotient beyond 2^42 (a
- * sliver thinner than 2^-20 px across a 2^32 attribute range) saturates;
- * evaluation then clamps, see fxl__plane_at callers. */
+/* The triangle's doubled area det as the gradients divide by it. */
+typedef struct area {
+    fxl__div64_t abs;   /* |det| */
+    int neg;            /* det < 0 */
+    uint8_t huge;       /* 4: some gradient's size is lost (uv_wide) */
+} area_t;
+
+/* N / den with FXL__PF fraction bits, den > 0, rounded, modulo 2^64. The
+ * planes are evaluated modulo 2^64 and a value inside the triangle lies
+ * within its vertex range, so values come out right whatever the size of
+ * the gradients. What reads their size - segment bounds, the per-segment
+ * LOD, from 16 gradients' worth a pixel - needs |N / den| < 2^38 (2^42
+ * units a pixel, 2^11 times the range of a plane's vertex values: only
+ * slivers thinner than ~2^-11 px across go beyond); beyond, det->huge. */
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
 #define FXL__SETUP_INLINE inline __attribute__((always_inline))   /* two calls a plane were ~25 M4 instructions */
 #else
 #define FXL__SETUP_INLINE inline
 #endif
-static FXL__SETUP_INLINE int64_t gradient(int64_t N, const fxl__div64_t *dv)
+static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
 {
-    const int64_t lim = (int64_t)1 << (62 - FXL__PF);
+    const fxl__div64_t *dv = &det->abs;
     const int64_t den = (int64_t)dv->d;
     int64_t qi, r;
 
@@ -76,27 +87,22 @@ static FXL__SETUP_INLINE int64_t gradient(int64_t N, const fxl__div64_t *dv)
     if (!FXL_SMALL_DIV64 && N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
         const uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;   /* < 2^62 */
         uint64_t rem, q = fxl__div64_by(a, dv, &rem);
+        /* the general path's test below, on |N| 2^PF / den floored */
+        if (q >= ((uint64_t)1 << (38 + FXL__PF)) + (N < 0 ? (uint64_t)1 << FXL__PF : 0u))
+            det->huge = 4u;
         if (2u * rem >= (uint64_t)den)
             q++;
         return N < 0 ? -(int64_t)q : (int64_t)q;
     }
     qi = fxl__sdiv64(N, den);
     r = N - qi * den;
-    if (qi >= lim)
-        return INT64_MAX / 2;
-    if (qi <= -lim)
-        return -(INT64_MAX / 2);
-    return qi * ((int64_t)1 << FXL__PF) + div_frac(r, den, FXL__PF);
+    if ((uint64_t)(qi + ((int64_t)1 << 38)) >> 39)   /* qi < -2^38 or qi >= 2^38 */
+        det->huge = 4u;
+    return (int64_t)(((uint64_t)qi << FXL__PF) + (uint64_t)div_frac(r, den, FXL__PF));
 }
 
-/* The triangle's doubled area det as the gradients divide by it. */
-typedef struct area {
-    fxl__div64_t abs;   /* |det| */
-    int neg;            /* det < 0 */
-} area_t;
-
 static void make_plane(fxl__plane_t *p, const int64_t a[3], const int32_t X[3], const int32_t Y[3],
-                       const area_t *det)
+                       area_t *det)
 {
     int64_t dX1 = (int64_t)X[1] - X[0], dY1 = (int64_t)Y[1] - Y[0];
     int64_t dX2 = (int64_t)X[2] - X[0], dY2 = (int64_t)Y[2] - Y[0];
@@ -109,8 +115,8 @@ static void make_plane(fxl__plane_t *p, const int64_t a[3], const int32_t X[3], 
         ny = -ny;
     }
     p->c = a[0] * ((int64_t)1 << FXL__PF);
-    p->gx = gradient(nx, &det->abs);
-    p->gy = gradient(ny, &det->abs);
+    p->gx = gradient(nx, det);
+    p->gy = gradient(ny, det);
 }
 
 int64_t fxl__plane_at(const fxl__plane_t *p, int32_t X0, int32_t Y0, int32_t X, int32_t Y)
@@ -176,7 +182,7 @@ static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[
 
 /* Build the plane of attribute a_i * q_i, scaled below 2^30. */
 static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int64_t q[3],
-                        const int32_t X[3], const int32_t Y[3], const area_t *det)
+                        const int32_t X[3], const int32_t Y[3], area_t *det)
 {
     int64_t s[3];
     int i, k;
@@ -199,6 +205,7 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
 
     tri->uv_wide = 0;
     area.neg = det < 0;
+    area.huge = 0;
     fxl__div64_init(&area.abs, area.neg ? (uint64_t)0 - (uint64_t)det : (uint64_t)det);
     tri->X0 = X[0];
     tri->Y0 = Y[0];
@@ -250,24 +257,18 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     }
 
     if (fxl__has_uv(tri)) {
-        int32_t c[3];
-        int wide;
-        for (i = 0; i < 3; i++)
-            c[i] = v[i].u;
-        wide = rebase(c, (fxl_wrap_t)tri->tex->wrap_u, tri->tex->log2_w, a);
+        int ax;
+        for (ax = 0; ax < 2; ax++) {   /* u, then v */
+            int32_t c[3];
+            for (i = 0; i < 3; i++)
+                c[i] = ax ? v[i].v : v[i].u;
+            tri->uv_wide |= (uint8_t)rebase(c, (fxl_wrap_t)(ax ? tri->tex->wrap_v : tri->tex->wrap_u),
+                                            ax ? tri->tex->log2_h : tri->tex->log2_w, a);
 #if FXL_HAVE_MIPMAP
-        if (tri->lod_per_segment)   /* span.c, lod_setup */
-            tri->uv_len[0] = (uint8_t)fit_shift(a, 0);
+            tri->uv_len[ax] = (uint8_t)fit_shift(a, 0);   /* span.c, lod_setup */
 #endif
-        persp_plane(tri, FXL__AU, a, q, X, Y, &area);
-        for (i = 0; i < 3; i++)
-            c[i] = v[i].v;
-        tri->uv_wide = (uint8_t)(rebase(c, (fxl_wrap_t)tri->tex->wrap_v, tri->tex->log2_h, a) | wide);
-#if FXL_HAVE_MIPMAP
-        if (tri->lod_per_segment)   /* span.c, lod_setup */
-            tri->uv_len[1] = (uint8_t)fit_shift(a, 0);
-#endif
-        persp_plane(tri, FXL__AV, a, q, X, Y, &area);
+            persp_plane(tri, FXL__AU + ax, a, q, X, Y, &area);
+        }
     }
     if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
@@ -280,5 +281,6 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
             persp_plane(tri, FXL__AR + ch, a, q, X, Y, &area);
         }
     }
+    tri->uv_wide |= area.huge;
     return FXL_OK;
 }

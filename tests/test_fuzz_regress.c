@@ -139,7 +139,20 @@ static const replay_t replays[] = {
          "ebe8e1fffbcf7be62f0ba9faa7e019da02123d3e01feff7191151399cf2d6709"
          "bb46b6897d40fca5a9551bf7ba5018ada28ba39b9dbf7e46ecbacec7f463db06"
          "979298cb88247227b9c184b65cadbd7398d97b873ddcb1417a24a43772d7c7f4",
-     FXL_OK, 255}
+     FXL_OK, 255},
+    /* Check 7 (seed 30 case 1890225): a needle, 32770 px tall and 1/16 px
+     * wide at its far end, whose pixel centres lie on its short vertical
+     * edge; its x gradients were ~2^44 units a sub-pixel and saturated, so
+     * affine bilinear read the border (v 111.24 texels, outside [0, 128))
+     * and Gouraud green was 63 for 39. Fixed: gradients are kept modulo
+     * 2^64 (setup.c); such a triangle divides at every pixel (raster.c). */
+    {"44eacd48c7af887e5ee841d558a855ac28a7cdd0ec29abc3771caa5ad948a620"
+         "22003d2c772265b0427ddd8dcc7c59f143cdbc128f7b7596cffb47ef69fed3b8"
+         "f8859d237f05c0330ccb50df7ba4a40b8de3a34cbdee03df28048fca051626da"
+         "100b8c19a5280df2437cfbce91c4fe0aaf5342e707df8e59389e48dd3c5baa9e"
+         "45c3443556b626d224c1af079efba6114eb4e5abf5cde827b81eccbca1402980"
+         "bcc0c3f3a982fad5cce06136ac60bda710e0f70b6cf340193dd5ffedde3b2bbd",
+     FXL_OK, 2}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

@@ -2559,6 +2559,130 @@ void test_left_out_features_are_refused(void)
     expect_feature(&t, &d, v, "depth buffer, neither test nor write");
 }
 
+
+/* Needles: a triangle whose far vertex lies 8000-30000 px away almost on
+ * the line of its 1-4 px short edge (1-3 sub-pixels off it), so that a
+ * whole attribute range changes within ~10^-5 px across it near that
+ * edge. Its x (or, turned, y) gradients are then up to ~2^13 times what
+ * 64 bits hold at the planes' scale; they are kept modulo 2^64, which the
+ * planes' evaluation is, so every covered pixel still gets its
+ * interpolated value (such a triangle divides at every pixel: the
+ * gradients' size, which segment bounds read, is lost). The gradients
+ * were saturated instead: on the fuzz's needle (seed 30, case 1890225)
+ * affine mode read texel row 128+ instead of 111, and its Gouraud green
+ * was 63 instead of 39 (0 instead of 56 in every perspective mode). Every
+ * mode, u, v from the probe within 1/256 texel of the exact map (affine:
+ * the screen-linear one) plus the mode's own bound (AUTO: its budget; a
+ * length L: the chord bound), Gouraud channels within 10^-3 of theirs
+ * plus their chord bound (untextured AUTO: 16-pixel segments). */
+static int needle(fxl_vertex_t v[3])
+{
+    /* sub-pixel units; direction: the 4 axes, 4 diagonals or random */
+    const int k = (int)(rnd() % 12u);
+    const double ang = k < 8 ? k * 0.7853981633974483 : (rnd() % 62832u) / 10000.0;
+    const double dx = cos(ang), dy = sin(ang), F = 8000 + rnd() % 22000u, h = 1 + rnd() % 4u;
+    const int off = (int)(rnd() % 6u) - 3;
+    int32_t X1 = 64 + (int32_t)(rnd() % (56u * 16u)), Y1 = 64 + (int32_t)(rnd() % (40u * 16u));
+    int32_t X[3], Y[3], i;
+    if (k == 2 || k == 6)
+        X1 = X1 / 16 * 16 + 8;   /* vertical: the short edge through pixel centres */
+    if (k == 0 || k == 4)
+        Y1 = Y1 / 16 * 16 + 8;
+    X[1] = X1;
+    Y[1] = Y1;
+    X[2] = X1 + (int32_t)lround(h * 16 * dx);
+    Y[2] = Y1 + (int32_t)lround(h * 16 * dy);
+    X[0] = X1 + (int32_t)lround(F * 16 * dx - (off ? off : 1) * dy);
+    Y[0] = Y1 + (int32_t)lround(F * 16 * dy + (off ? off : 1) * dx);
+    for (i = 0; i < 3; i++) {
+        v[i].x = X[i] * 4096;
+        v[i].y = Y[i] * 4096;
+        /* depth ratios up to 2^3; u, v within 2 periods of 0 */
+        v[i].inv_w = (rnd() % 2u ? 0x80000000u : 0x10000000u) + (rnd() << 4);
+        v[i].u = (int32_t)(rnd() % 262144u) - 131072;
+        v[i].v = (int32_t)(rnd() % 262144u) - 131072;
+        v[i].color = (uint16_t)(rnd() >> 8);
+    }
+    return k;
+}
+
+void test_needle_slivers_interpolate_their_attributes_in_every_mode(void)
+{
+    static const int16_t modes[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, FXL_PERSP_AUTO, 8, 16, 256};
+    static uint16_t texels[64 * 64], buf[W * H];
+    static const int sh[3] = {11, 5, 0}, top[3] = {31, 63, 31};
+    fxl_texture_t tex;
+    fxl_target_t t;
+    char msg[200];
+    long uv_px = 0, col_px = 0;
+    int n;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    for (n = 0; n < 3000; n++) {
+        fxl_vertex_t v[3];
+        size_t mi;
+        needle(v);
+        for (mi = 0; mi < sizeof modes / sizeof modes[0]; mi++) {
+            const int affine = modes[mi] == FXL_PERSP_AFFINE, L = modes[mi] > 1 ? modes[mi] : 0;
+            const double uv_tol = 1.0 / 256 + (modes[mi] == FXL_PERSP_AUTO ? 0.25 : (L ? ref_chord_bound(v, 6, 6, L) : 0));
+            fxl_draw_t d;
+            int x, y, ch;
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.depth = 0;
+            d.persp = modes[mi];
+            if (left_out_feature(&d, &tex, drawable_rgb565(), 0) == NULL) {
+                probe_target(&t, buf, W, H);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+                for (y = 0; y < H; y++)
+                    for (x = 0; x < W; x++)
+                        if (probe_count[y * W + x]) {
+                            const double e = probe_error_at(v, 64, affine, W, x, y);
+                            snprintf(msg, sizeof msg, "needle %d persp %d: pixel (%d,%d) %.4g texels off", n,
+                                     modes[mi], x, y, e);
+                            TEST_ASSERT_TRUE_MESSAGE(e <= uv_tol, msg);
+                            uv_px++;
+                        }
+            }
+            /* untextured Gouraud: each channel against its own exact map */
+            d.texture = NULL;
+            d.shade = FXL_SHADE_GOURAUD;
+            if (left_out_feature(&d, NULL, drawable_rgb565(), 0) != NULL)
+                continue;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, buf, W, H, W, FXL_PIXFMT_RGB565));
+            memset(buf, 0, sizeof buf);
+            probe_target(&t, buf, W, H);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            for (y = 0; y < H; y++)
+                for (x = 0; x < W; x++)
+                    if (probe_count[y * W + x])
+                        for (ch = 0; ch < 3; ch++) {
+                            fxl_vertex_t c[3];
+                            double want, unused, tol;
+                            int i, got = (buf[y * W + x] >> sh[ch]) & top[ch];
+                            for (i = 0; i < 3; i++) {
+                                c[i] = v[i];
+                                c[i].u = (int32_t)(((uint32_t)v[i].color >> sh[ch]) & (uint32_t)top[ch]) << 16;
+                                c[i].v = 0;
+                            }
+                            exact_uv(c, 1, 1, affine, x, y, &want, &unused);
+                            tol = 1e-3 + (modes[mi] == FXL_PERSP_AUTO ? ref_chord_bound(c, 0, 0, 16)
+                                                                       : (L ? ref_chord_bound(c, 0, 0, L) : 0));
+                            snprintf(msg, sizeof msg, "needle %d persp %d: pixel (%d,%d) channel %d is %d, exact %.5f tol %g",
+                                     n, modes[mi], x, y, ch, got, want, tol);
+                            TEST_ASSERT_TRUE_MESSAGE(got >= floor(want - tol) && got <= floor(want + tol),
+                                                     msg);
+                            col_px++;
+                        }
+        }
+    }
+    /* most needles miss every pixel centre; enough do not */
+    snprintf(msg, sizeof msg, "%ld textured and %ld Gouraud pixel values checked", uv_px, col_px / 3);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(uv_px > 1000, msg);
+    TEST_ASSERT_TRUE_MESSAGE(col_px > 1000 || !FXL_HAVE_GENERIC, msg);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -2579,6 +2703,7 @@ int main(void)
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
+    RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
     RUN_TEST(test_auto_budget_holds_for_small_and_huge_budgets);
     RUN_TEST(test_quad_steps_follow_their_parabola);

@@ -27,7 +27,11 @@
  *   span many periods far into the distance. A triangle with a clamp or
  *   border vertex coordinate 32767 texels (of level 0) or more from 0 is
  *   divided at every pixel whatever `persp` says: such coordinates
- *   saturate, and cannot be stepped between.
+ *   saturate, and cannot be stepped between. So is a needle: a sliver so
+ *   thin that some attribute plane changes by 2^38 of its units a
+ *   sub-pixel (its whole range within ~2^-11 px across), whose gradients
+ *   are held modulo 2^64 - exact values, but no size for segment bounds
+ *   or the per-segment LOD to read; it takes FXL_LOD_TRIANGLE's LOD.
  * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
  *   any u, v. Values outside never cause undefined behaviour: planes are
  *   evaluated in 64-bit modular arithmetic and clamped to the vertex range.

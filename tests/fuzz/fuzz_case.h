@@ -49,8 +49,9 @@
  *    of the reference's: per triangle, or per segment at the segment's
  *    correction point - a fixed length L's segments start at the span's
  *    first pixel and every L-th (every pixel where a clamp coordinate
- *    saturates), AUTO's LOD at any of its 16 grid candidates), flat shade,
- *    any texenv:
+ *    saturates; a needle, fz_gradient_huge, at every pixel with the
+ *    triangle's LOD), AUTO's LOD at any of its 16 grid candidates), flat
+ *    shade, any texenv:
  *    every written pixel holds a texel (point) or lies channel by channel
  *    within the texels (bilinear), modulated or decalled by the flat colour
  *    or the Gouraud interval (fz_gouraud),
@@ -1302,6 +1303,93 @@ static int fz_clamp_saturates(const fz_case *c)
     return 0;
 }
 
+/* Does some plane of the draw have a gradient of 2^38 of its units a
+ * sub-pixel or more (setup.c, gradient: a needle-like sliver)? The core
+ * then divides at every pixel and takes the triangle's LOD (raster.h).
+ * A double estimate of setup's scaled planes: 2 surely, 1 near the
+ * boundary (either may happen), 0 surely not. */
+static int fz_gradient_huge(const fz_case *c)
+{
+    const fxl_draw_t *d = &c->draw;
+    const int affine = d->persp == FXL_PERSP_AFFINE;
+    double X[3], Y[3], q[3], det, worst = 0;
+    uint32_t mx = 0;
+    int i, p, sh;
+    for (i = 0; i < 3; i++) {
+        X[i] = (double)ref_snap(c->v[i].x);
+        Y[i] = (double)ref_snap(c->v[i].y);
+        mx = c->v[i].inv_w > mx ? c->v[i].inv_w : mx;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    if (det == 0 || mx == 0)
+        return 0;
+    sh = 0;
+    while (sh < 31 && !(mx & (0x80000000u >> sh)))
+        sh++;
+    sh--;   /* clz - 1: q_max in [2^30, 2^31) */
+    for (i = 0; i < 3; i++) {
+        q[i] = affine ? 1073741824.0 : (sh >= 0 ? ldexp(c->v[i].inv_w, sh) : floor(c->v[i].inv_w / 2.0));
+        q[i] = q[i] < 1 ? 1 : q[i];
+    }
+    /* the planes: q; u, v (rebased) and the channels times q, scaled
+     * below 2^30; z (inv_w) where a depth buffer is tested or written */
+    {
+        double worst_p = 0;
+        for (p = -2; p < 5; p++) {
+            double m = 0, v3[3];
+            int k;
+            if (p == -2)
+                for (i = 0; i < 3; i++)
+                    v3[i] = q[i];
+            else if (p == -1) {
+                if (!(c->has_depth && (d->depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE))))
+                    continue;
+                for (i = 0; i < 3; i++)
+                    v3[i] = c->v[i].inv_w;
+            } else {
+                if (p < 2 ? !d->texture : d->shade != FXL_SHADE_GOURAUD)
+                    continue;
+                for (i = 0; i < 3; i++) {
+                    double t;
+                    if (p < 2) {
+                        const uint8_t wrap = p ? c->tex.wrap_v : c->tex.wrap_u;
+                        double mn = 1e300, base = 0;
+                        for (k = 0; k < 3; k++) {
+                            const double w = p ? c->v[k].v : c->v[k].u;
+                            mn = w < mn ? w : mn;
+                        }
+                        if (wrap == FXL_WRAP_REPEAT)
+                            base = floor(mn / 65536) * 65536;
+                        else if (wrap == FXL_WRAP_MIRROR)
+                            base = floor(mn / 131072) * 131072;
+                        t = (p ? c->v[i].v : c->v[i].u) - base;
+                    } else {
+                        static const int csh[3] = {11, 5, 0}, ctop[3] = {31, 63, 31};
+                        t = (double)(((uint32_t)c->v[i].color >> csh[p - 2]) & (uint32_t)ctop[p - 2]) * 65536;
+                    }
+                    v3[i] = t * q[i];
+                }
+                for (i = 0; i < 3; i++)
+                    m = fabs(v3[i]) > m ? fabs(v3[i]) : m;
+                /* fit_shift(s, 30): the smallest k with m >> k < 2^30 */
+                for (k = 0; m >= 1073741824.0; k++)
+                    m /= 2;
+                for (i = 0; i < 3; i++)
+                    v3[i] = ldexp(v3[i], -k);
+            }
+            {
+                const double da1 = v3[1] - v3[0], da2 = v3[2] - v3[0];
+                const double nx = fabs(da1 * (Y[2] - Y[0]) - da2 * (Y[1] - Y[0]));
+                const double ny = fabs(da2 * (X[1] - X[0]) - da1 * (X[2] - X[0]));
+                const double g = (nx > ny ? nx : ny) / fabs(det);
+                worst_p = g > worst_p ? g : worst_p;
+            }
+        }
+        worst = worst_p;
+    }
+    return worst >= ldexp(1.001, 38) ? 2 : (worst >= ldexp(0.999, 38) ? 1 : 0);
+}
+
 /* The frame column of the first pixel of the triangle's span on frame row
  * fy, whose pixel fx is covered: spans are convex, and no pixel left of
  * -2^17 is (|x| < 32768 px). */
@@ -1352,7 +1440,12 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
      * its 16-pixel grid points: one of the W = 16 pixels up to this one. */
     const int per_seg = mips && d->lod == FXL_LOD_SEGMENT;
     const int auto_lod = d->persp == FXL_PERSP_AUTO, W = 16;
-    const int64_t seg_len = d->persp == FXL_PERSP_EXACT || fz_clamp_saturates(c) ? 1 : L;
+    /* a needle's gradients (fz_gradient_huge): every pixel a correction
+     * point, the triangle's LOD (1: that or the usual) */
+    const int huge = d->texture ? fz_gradient_huge(c) : 0;
+    const int seg_lod_on = per_seg && huge != 2;
+    const int64_t seg_len = d->persp == FXL_PERSP_EXACT || fz_clamp_saturates(c) || huge == 2 ? 1 : L;
+    int tri_lo = 0, tri_hi = 0;
     int64_t span_first = 0, seg_first = INT64_MIN;
     double seg_lod = 0;
     double chord = 0, drift = 0;
@@ -1377,7 +1470,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
      * its steps' truncation */
     if (L)
         chord = affine ? L / 65536.0 : ref_chord_bound(c->v, c->tex.log2_w, c->tex.log2_h, L);
-    if (mips && !per_seg) {
+    if (mips && (!per_seg || huge)) {
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
         int i;
@@ -1391,6 +1484,8 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
         n_lo = (int)floor(linear ? lo : lo + 0.5);
         n_hi = (int)floor(linear ? hi : hi + 0.5) + linear;
         n_hi = n_hi > (int)top ? (int)top : n_hi;
+        tri_lo = n_lo;
+        tri_hi = n_hi;
     }
     if (mips)
         drift = (d->persp == FXL_PERSP_AUTO || affine ? FXL_PERSP_MAX : (L ? L : 1)) / 65536.0;
@@ -1398,7 +1493,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
         n_lo = 0;
         n_hi = (int)c->tex.levels - 1;
     }
-    if (per_seg && !all_levels) {
+    if (seg_lod_on && !all_levels) {
         double qmin = 4294967296.0, qmax = 0, umax = 0;
         int i, ax;
         for (i = 0; i < 3; i++) {
@@ -1435,7 +1530,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 e[0] += budget;
                 e[1] += budget;
             }
-            if (per_seg && !all_levels) {
+            if (seg_lod_on && !all_levels) {
                 /* the levels the exact LOD (within 4/256: test_lod) at the
                  * segment's correction point (AUTO: any of W candidates) rounds to */
                 const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
@@ -1458,6 +1553,13 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                         seg_lod = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
                     }
                     lmin = lmax = seg_lod;
+                    if (huge) {   /* or divided at this pixel */
+                        double here;
+                        (void)ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
+                        here = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        lmin = here < lmin ? here : lmin;
+                        lmax = here > lmax ? here : lmax;
+                    }
                 }
                 for (j = 0; auto_lod && j < W; j++) {
                     /* cached by column: pixels of a row share candidates */
@@ -1494,6 +1596,10 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 n_lo = (int)floor(linear ? lmin : lmin + 0.5);
                 n_hi = (int)floor(linear ? lmax : lmax + 0.5) + linear;
                 n_hi = n_hi > (int)top ? (int)top : n_hi;
+                if (huge) {   /* or the triangle's LOD */
+                    n_lo = tri_lo < n_lo ? tri_lo : n_lo;
+                    n_hi = tri_hi > n_hi ? tri_hi : n_hi;
+                }
             }
             for (n = n_lo; n <= n_hi; n++) {
                 /* level n: an axis stops halving at one texel */
