@@ -87,8 +87,8 @@ static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
     if (!FXL_SMALL_DIV64 && N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
         const uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;   /* < 2^62 */
         uint64_t rem, q = fxl__div64_by(a, dv, &rem);
-        /* the general path's test below, on |N| 2^PF / den floored */
-        if (q >= ((uint64_t)1 << (38 + FXL__PF)) + (N < 0 ? (uint64_t)1 << FXL__PF : 0u))
+        /* the general path's test below, on floor(|N| 2^PF / den) */
+        if ((q >> (38 + FXL__PF)) && q >= ((uint64_t)1 << (38 + FXL__PF)) + (N < 0 ? (uint64_t)1 << FXL__PF : 0u))
             det->huge = 4u;
         if (2u * rem >= (uint64_t)den)
             q++;
@@ -196,6 +196,27 @@ static void persp_plane(fxl__tri_t *tri, int idx, const int64_t a[3], const int6
     make_plane(&tri->a[idx], s, X, Y, det);
 }
 
+/* Texture axis ax (0: u, 1: v): rebased, its bit length for the
+ * per-segment LOD, its plane. A loop over the axes at -Os (one copy);
+ * elsewhere two copies specialised for ax (the loop was ~80 instructions
+ * a triangle slower on x86-64 at -O2). */
+static FXL__SETUP_INLINE void uv_plane(fxl__tri_t *tri, const fxl_vertex_t v[3], int ax, const int64_t q[3],
+                                       const int32_t X[3], const int32_t Y[3], area_t *det)
+{
+    int32_t c[3];
+    int64_t a[3];
+    int i;
+    for (i = 0; i < 3; i++)
+        c[i] = ax ? v[i].v : v[i].u;
+    tri->uv_wide |= (uint8_t)rebase(c, (fxl_wrap_t)(ax ? tri->tex->wrap_v : tri->tex->wrap_u),
+                                    ax ? tri->tex->log2_h : tri->tex->log2_w, a);
+#if FXL_HAVE_MIPMAP
+    if (tri->draw->lod == FXL_LOD_SEGMENT && tri->draw->mip != FXL_MIP_NONE)   /* span.c, lod_setup */
+        tri->uv_len[ax] = (uint8_t)fit_shift(a, 0);
+#endif
+    persp_plane(tri, FXL__AU + ax, a, q, X, Y, det);
+}
+
 fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t X[3],
                         const int32_t Y[3], int64_t det)
 {
@@ -257,18 +278,14 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     }
 
     if (fxl__has_uv(tri)) {
+#if defined(__OPTIMIZE_SIZE__)
         int ax;
-        for (ax = 0; ax < 2; ax++) {   /* u, then v */
-            int32_t c[3];
-            for (i = 0; i < 3; i++)
-                c[i] = ax ? v[i].v : v[i].u;
-            tri->uv_wide |= (uint8_t)rebase(c, (fxl_wrap_t)(ax ? tri->tex->wrap_v : tri->tex->wrap_u),
-                                            ax ? tri->tex->log2_h : tri->tex->log2_w, a);
-#if FXL_HAVE_MIPMAP
-            tri->uv_len[ax] = (uint8_t)fit_shift(a, 0);   /* span.c, lod_setup */
+        for (ax = 0; ax < 2; ax++)
+            uv_plane(tri, v, ax, q, X, Y, &area);
+#else
+        uv_plane(tri, v, 0, q, X, Y, &area);
+        uv_plane(tri, v, 1, q, X, Y, &area);
 #endif
-            persp_plane(tri, FXL__AU + ax, a, q, X, Y, &area);
-        }
     }
     if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
