@@ -1159,6 +1159,20 @@ static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *
 
 #define FZ_TEXEL_SPAN 16   /* widest footprint (texels an axis) check 7 examines */
 
+/* The whole periods (repeat) or pairs of them (mirror) setup.c rebases an
+ * axis's vertex coordinates by, in periods; 0 for clamp and border. */
+static double fz_rebase_periods(const fz_case *c, int axis)
+{
+    const uint8_t wrap = axis ? c->tex.wrap_v : c->tex.wrap_u;
+    double mn = 1e300;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const double u = (axis ? c->v[i].v : c->v[i].u) / 65536.0;
+        mn = u < mn ? u : mn;
+    }
+    return wrap == FXL_WRAP_REPEAT ? floor(mn) : (wrap == FXL_WRAP_MIRROR ? 2 * floor(mn / 2) : 0);
+}
+
 /* Exact mode's error bound, per axis in level-0 texels, at the pixel centre
  * (X, Y) (sub-pixel units, slack more from vertex 0: a segment's ends)
  * of the case's triangle: test_raster's
@@ -1188,18 +1202,14 @@ static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack
         qtrunc = 1.0 / floor(qmin / 2);
     D = fabs((double)(X - ref_snap(c->v[0].x))) + fabs((double)(Y - ref_snap(c->v[0].y))) + (double)slack;
     for (axis = 0; axis < 2; axis++) {
-        const uint8_t wrap = axis ? c->tex.wrap_v : c->tex.wrap_u;
         const double side = ldexp(1.0, axis ? c->tex.log2_h : c->tex.log2_w);
-        double mn = 1e300, mx = -1e300, base = 0, m = 0, umax = 0;
+        const double base = fz_rebase_periods(c, axis);
+        double mn = 1e300, mx = -1e300, m = 0, umax = 0;
         for (i = 0; i < 3; i++) {
             const double u = (axis ? c->v[i].v : c->v[i].u) / 65536.0;
             mn = u < mn ? u : mn;
             mx = u > mx ? u : mx;
         }
-        if (wrap == FXL_WRAP_REPEAT)
-            base = floor(mn);
-        else if (wrap == FXL_WRAP_MIRROR)
-            base = 2 * floor(mn / 2);
         for (i = 0; i < 3; i++) {
             const double a = fabs((axis ? c->v[i].v : c->v[i].u) / 65536.0 - base) * side;
             const double aq = a * (affine ? 1.0 : (double)c->v[i].inv_w);
@@ -1331,61 +1341,38 @@ static int fz_gradient_huge(const fz_case *c)
         q[i] = affine ? 1073741824.0 : (sh >= 0 ? ldexp(c->v[i].inv_w, sh) : floor(c->v[i].inv_w / 2.0));
         q[i] = q[i] < 1 ? 1 : q[i];
     }
-    /* the planes: q; u, v (rebased) and the channels times q, scaled
-     * below 2^30; z (inv_w) where a depth buffer is tested or written */
-    {
-        double worst_p = 0;
-        for (p = -2; p < 5; p++) {
-            double m = 0, v3[3];
-            int k;
+    /* the planes: q; z (inv_w) where a depth buffer is tested or written;
+     * u, v (rebased) and the channels times q, scaled below 2^30 */
+    for (p = -2; p < 5; p++) {
+        double m = 0, v3[3], base = 0, da1, da2, nx, ny, g;
+        int k;
+        if (p == -1 && !(c->has_depth && (d->depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE))))
+            continue;
+        if (p >= 0 && (p < 2 ? !d->texture : d->shade != FXL_SHADE_GOURAUD))
+            continue;
+        if (p == 0 || p == 1)
+            base = fz_rebase_periods(c, p) * 65536;
+        for (i = 0; i < 3; i++) {
+            static const int csh[3] = {11, 5, 0}, ctop[3] = {31, 63, 31};
             if (p == -2)
-                for (i = 0; i < 3; i++)
-                    v3[i] = q[i];
-            else if (p == -1) {
-                if (!(c->has_depth && (d->depth & (FXL_DEPTH_TEST | FXL_DEPTH_WRITE))))
-                    continue;
-                for (i = 0; i < 3; i++)
-                    v3[i] = c->v[i].inv_w;
-            } else {
-                if (p < 2 ? !d->texture : d->shade != FXL_SHADE_GOURAUD)
-                    continue;
-                for (i = 0; i < 3; i++) {
-                    double t;
-                    if (p < 2) {
-                        const uint8_t wrap = p ? c->tex.wrap_v : c->tex.wrap_u;
-                        double mn = 1e300, base = 0;
-                        for (k = 0; k < 3; k++) {
-                            const double w = p ? c->v[k].v : c->v[k].u;
-                            mn = w < mn ? w : mn;
-                        }
-                        if (wrap == FXL_WRAP_REPEAT)
-                            base = floor(mn / 65536) * 65536;
-                        else if (wrap == FXL_WRAP_MIRROR)
-                            base = floor(mn / 131072) * 131072;
-                        t = (p ? c->v[i].v : c->v[i].u) - base;
-                    } else {
-                        static const int csh[3] = {11, 5, 0}, ctop[3] = {31, 63, 31};
-                        t = (double)(((uint32_t)c->v[i].color >> csh[p - 2]) & (uint32_t)ctop[p - 2]) * 65536;
-                    }
-                    v3[i] = t * q[i];
-                }
-                for (i = 0; i < 3; i++)
-                    m = fabs(v3[i]) > m ? fabs(v3[i]) : m;
-                /* fit_shift(s, 30): the smallest k with m >> k < 2^30 */
-                for (k = 0; m >= 1073741824.0; k++)
-                    m /= 2;
-                for (i = 0; i < 3; i++)
-                    v3[i] = ldexp(v3[i], -k);
-            }
-            {
-                const double da1 = v3[1] - v3[0], da2 = v3[2] - v3[0];
-                const double nx = fabs(da1 * (Y[2] - Y[0]) - da2 * (Y[1] - Y[0]));
-                const double ny = fabs(da2 * (X[1] - X[0]) - da1 * (X[2] - X[0]));
-                const double g = (nx > ny ? nx : ny) / fabs(det);
-                worst_p = g > worst_p ? g : worst_p;
-            }
+                v3[i] = q[i];
+            else if (p == -1)
+                v3[i] = c->v[i].inv_w;
+            else if (p < 2)
+                v3[i] = ((p ? c->v[i].v : c->v[i].u) - base) * q[i];
+            else
+                v3[i] = (double)(((uint32_t)c->v[i].color >> csh[p - 2]) & (uint32_t)ctop[p - 2]) * 65536 * q[i];
+            m = fabs(v3[i]) > m ? fabs(v3[i]) : m;
         }
-        worst = worst_p;
+        /* fit_shift(s, 30): the smallest k with m >> k < 2^30 */
+        for (k = 0; p >= 0 && m >= 1073741824.0; k++)
+            m /= 2;
+        da1 = ldexp(v3[1] - v3[0], -k);
+        da2 = ldexp(v3[2] - v3[0], -k);
+        nx = fabs(da1 * (Y[2] - Y[0]) - da2 * (Y[1] - Y[0]));
+        ny = fabs(da2 * (X[1] - X[0]) - da1 * (X[2] - X[0]));
+        g = (nx > ny ? nx : ny) / fabs(det);
+        worst = g > worst ? g : worst;
     }
     return worst >= ldexp(1.001, 38) ? 2 : (worst >= ldexp(0.999, 38) ? 1 : 0);
 }
