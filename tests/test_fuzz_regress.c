@@ -152,7 +152,20 @@ static const replay_t replays[] = {
          "100b8c19a5280df2437cfbce91c4fe0aaf5342e707df8e59389e48dd3c5baa9e"
          "45c3443556b626d224c1af079efba6114eb4e5abf5cde827b81eccbca1402980"
          "bcc0c3f3a982fad5cce06136ac60bda710e0f70b6cf340193dd5ffedde3b2bbd",
-     FXL_OK, 2}
+     FXL_OK, 2},
+    /* Check 7 (seed 51 case 4333147): AUTO with a budget of 1 q16 on a
+     * triangle whose top two vertices share a row and an inv_w (constant
+     * depth along every row): the chooser took 256-pixel segments, and
+     * their truncated q16 steps drew u = -450.000682 as texel -450, 44
+     * units off. Fixed: the length is the longest whose steps' drift fits
+     * the budget (auto.h, fxl__auto_setup). */
+    {"bc9d776544b102029970a65c5c45d07e6d97c0c3f305a3916f3d36e735f08c18"
+         "daac31f498513d7d3ed4c22e3090c89b1e1a037a72dae61d6b3230ff0626255a"
+         "d04b17c8450e9a35779dc30374f19e8545360592e43c6c8abfafb8e572ce38ae"
+         "576c020d816c8d38716ed74eb888ced7ecfb0b2150a6fd1004d724a94c90bef4"
+         "ade8818e015ed050d6f0e092c4897a8d3be5a1022d4f0bb88ad000db2aaaba5e"
+         "6c5b2ab53474793f7dd39e93cc9931418a0609a7c37e58be4c90db98a6f7b3d0",
+     FXL_OK, 800}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

@@ -1364,6 +1364,69 @@ void test_auto_budget_holds_for_small_and_huge_budgets(void)
     }
 }
 
+/* AUTO on a triangle of constant depth along every row (two vertices on
+ * one row at one inv_w, q_x = 0): u, v are affine along its rows, so the
+ * chooser took 256-pixel segments whatever the budget, and their truncated
+ * q16 steps drifted by up to a unit a pixel: a budget of 1 q16 drew a
+ * pixel 44 units off (fuzz seed 51, case 4333147). The length is now the
+ * longest whose drift fits the budget, so each pixel stays within the
+ * budget of exact mode's value; from 384 q16 up the segments stay 256
+ * pixels long (as many divisions as a budget of 1/4). */
+void test_auto_budget_holds_on_rows_of_constant_depth(void)
+{
+    static const int32_t budgets[] = {1, 2, 3, 95, 256, 383, 384, 65536 / 4};
+    static uint16_t buf[1024 * 128], texels[128 * 128];
+    static double exact_err[1024 * 128];
+    fxl_vertex_t v[3];
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    fxl_target_t t;
+    fxl_stats_t st;
+    char msg[200];
+    size_t b;
+    int x, y;
+    uint32_t div_384 = 0;
+    TEST_NEEDS(FXL_HAVE_AUTO);
+    v[0] = vtx(3.3125, 2.5, 0.9, 0.0137, 0.291);
+    v[1] = vtx(1020.75, 2.5, 0.9, 0.3071, 0.0127);
+    v[2] = vtx(517.0625, 126.25, 0.11, -0.1913, 0.7777);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 128, 128, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.mip = FXL_MIP_NONE;
+    d.persp = FXL_PERSP_EXACT;
+    probe_target(&t, buf, 1024, 128);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
+    for (y = 0; y < 128; y++)
+        for (x = 0; x < 1024; x++)
+            if (probe_count[y * 1024 + x])
+                exact_err[y * 1024 + x] = probe_error_at(v, 128, 0, 1024, x, y);
+    d.persp = FXL_PERSP_AUTO;
+    for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
+        const double budget = budgets[b] / 65536.0;
+        double worst = 0;
+        d.auto_budget = budgets[b];
+        probe_target(&t, buf, 1024, 128);
+        memset(&st, 0, sizeof st);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, &st, probe_seg));
+        for (y = 0; y < 128; y++)
+            for (x = 0; x < 1024; x++)
+                if (probe_count[y * 1024 + x]) {
+                    const double e = probe_error_at(v, 128, 0, 1024, x, y) - exact_err[y * 1024 + x];
+                    worst = e > worst ? e : worst;
+                }
+        snprintf(msg, sizeof msg, "budget %d q16: error beyond exact mode's %.3g q16, %u divisions", (int)budgets[b],
+                 worst * 65536.0, (unsigned)st.divisions);
+        TEST_MESSAGE(msg);
+        TEST_ASSERT_TRUE_MESSAGE(worst <= budget + 1e-9, msg);
+        if (budgets[b] == 384)
+            div_384 = st.divisions;
+        else if (budgets[b] == 65536 / 4)
+            TEST_ASSERT_EQUAL_UINT32(div_384, st.divisions);   /* 256-pixel segments at both */
+    }
+}
+
 void test_auto_whole_span_test_keeps_receding_strips_within_budget(void)
 {
     tri_t tris[1];
@@ -2705,6 +2768,7 @@ int main(void)
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
     RUN_TEST(test_auto_budget_holds_for_small_and_huge_budgets);
+    RUN_TEST(test_auto_budget_holds_on_rows_of_constant_depth);
     RUN_TEST(test_quad_steps_follow_their_parabola);
     RUN_TEST(test_quad_last_segment_step_matches_64bit);
     RUN_TEST(test_fast_and_generic_walks_agree);
