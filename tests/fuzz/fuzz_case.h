@@ -917,6 +917,9 @@ typedef struct fz_outcome {
     uint32_t placed;        /* front end: mesh triangles found where the double projection puts them */
     uint32_t texel_checked; /* check 7: pixels held to their texel footprint or colour */
     uint32_t texel_wide;    /* check 7: of those, pixels checked through the level indexes (fz_texidx) */
+    uint32_t alone_tris;    /* front end, P7: emitted triangles run as raster cases */
+    uint32_t alone_written; /* P7: pixels they wrote, drawn alone */
+    uint32_t alone_checked; /* P7: of those, held to check 7 */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */

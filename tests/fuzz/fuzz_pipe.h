@@ -61,6 +61,12 @@
  *     fxl_light_shade (the double-precision formula within its rounding,
  *     never brighter than the base colour),
  *     fxl_mat4_transform*, fxl_mat4_mul with aliased operands.
+ *  P7 the pixels: each emitted triangle, drawn alone into the case's
+ *     target with its draw, passes fz_run_case's checks 1-7 (status, memory,
+ *     clip, determinism, exact coverage, stats, texel values). With P4
+ *     (fxl_mesh_draw writes what fxl_draw_indexed of the emitted triangles
+ *     writes, and a pixel's value depends only on its triangle) that holds
+ *     every pixel the front end draws to its mode's texel or colour bound.
  */
 #ifndef FXL_FUZZ_PIPE_H
 #define FXL_FUZZ_PIPE_H
@@ -1719,6 +1725,30 @@ static int fzp_stats_equal(const fxl_stats_t *a, const fxl_stats_t *b)
            a->generic == b->generic;
 }
 
+/* P7: every emitted triangle as a raster case of its own (the case's
+ * target, texture and draw), so check 7 sees the front end's triangles:
+ * guard-band and near-plane vertices, clipped fans, lit colours. */
+static int fzp_alone(fz_pstate *ps, const fz_pcase *pc, const fzp_rec *rec, fz_outcome *out, char *msg)
+{
+    uint32_t t;
+    for (t = 0; t < rec->n; t++) {
+        fz_case ct = pc->c;
+        fz_outcome o;
+        memcpy(ct.v, &rec->tri[3u * t], sizeof ct.v);
+        if (fz_run_case(ps->s, &ct, &o, msg)) {
+            char why[FZ_MSG];
+            memcpy(why, msg, FZ_MSG);
+            why[FZ_MSG - 1] = 0;
+            snprintf(msg, FZ_MSG, "emitted triangle %u of %u drawn alone: %.400s", (unsigned)t, (unsigned)rec->n, why);
+            return 1;
+        }
+        out->alone_tris++;
+        out->alone_written += o.written;
+        out->alone_checked += o.texel_checked;
+    }
+    return 0;
+}
+
 /* Run one decoded front-end case. Returns 0 when every check holds, 1 with
  * a message in msg (FZ_MSG bytes) otherwise. */
 static int fz_pipe_run(fz_pstate *ps, fz_pcase *pc, fz_outcome *out, char *msg)
@@ -1915,8 +1945,10 @@ static int fz_pipe_run(fz_pstate *ps, fz_pcase *pc, fz_outcome *out, char *msg)
                     (unsigned)sa.pixels, (unsigned)sum.triangles, (unsigned)sum.pixels);
     }
 
-    /* P6 */
-    return fzp_parts(pc, &p, &xf, xf_ok, msg);
+    /* P6, then P7 (which redraws the buffers) */
+    if (fzp_parts(pc, &p, &xf, xf_ok, msg))
+        return 1;
+    return chk == FXL_OK ? fzp_alone(ps, pc, &rec1, out, msg) : 0;
 }
 
 /* ---- printing ---------------------------------------------------------------------- */
