@@ -165,7 +165,20 @@ static const replay_t replays[] = {
          "576c020d816c8d38716ed74eb888ced7ecfb0b2150a6fd1004d724a94c90bef4"
          "ade8818e015ed050d6f0e092c4897a8d3be5a1022d4f0bb88ad000db2aaaba5e"
          "6c5b2ab53474793f7dd39e93cc9931418a0609a7c37e58be4c90db98a6f7b3d0",
-     FXL_OK, 800}
+     FXL_OK, 800},
+    /* Check 7 (seed 61 case 6260750): exact mode, per-segment LOD, a
+     * depth ratio of 1.1 x 10^9; at the far edge the rebased v (16 texels
+     * of range) had no precision left, as exact mode's bound allows, and
+     * the LOD measured from it was 15 levels high. The check now widens
+     * the reference LOD by the coordinates' error (fz_lod_widen); the core
+     * documents it (raster.h, FXL_LOD_SEGMENT). */
+    {"c76e3eaf92119a6a336596f334557dccd558a353350bc93c32249974bbbc8285"
+         "88ad22ef1420d462a6b10266b90fe08c105b244c4ffa61cdddf65bd64f216083"
+         "f05370d04952b4c26e58932171dc77251a120a49c48ad8eaea00069b92bdb4aa"
+         "2ece7cd78a8aa5340c918abc9d4bf00d303d5e13b4f3ffac818b8205076e13d7"
+         "487f6312e5975e17a595fa856bfd830f3e0f317aa0716c2a4cd41ffe8d9787e3"
+         "b2d67c5e5e0d7760d5724c2e5820fa38b75235655bb521b8df6545e595c7d05b",
+     FXL_OK, 467}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

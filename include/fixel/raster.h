@@ -78,7 +78,11 @@ typedef enum fxl_mipmode {
 } fxl_mipmode_t;
 
 typedef enum fxl_lodmode {
-    FXL_LOD_SEGMENT = 0,      /* at every correction point, from the derivatives */
+    FXL_LOD_SEGMENT = 0,      /* at every correction point, from the derivatives
+                               * (S_g - u q_g) / q of its u, v: their error e
+                               * (exact mode's, above) moves them by up to
+                               * e |q_g| / q, which at the far end of a depth
+                               * ratio near 10^9 can reach any level */
     FXL_LOD_TRIANGLE = 1      /* once per triangle: log4(texel area / pixel area) */
 } fxl_lodmode_t;
 

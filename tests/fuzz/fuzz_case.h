@@ -1397,6 +1397,49 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
 }
 
 /* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
+/* A per-segment LOD is measured from the core's u, v at the correction
+ * point: du/dg = (S_g - u q_g) / q (span.c, lod_at), so an error e of u, v
+ * there moves each derivative by up to e |q_g| / q. Where exact mode's
+ * coordinates lose their precision (a large depth ratio times the rebased
+ * range: stability.md, "range") that term can exceed the derivative
+ * itself, as at the far edge of a triangle of depth ratio 10^9, whose v
+ * was a period (16 texels) off and its LOD 15 levels high (seed 61, case
+ * 6260750). Widens the reference's [lo, hi] (LOD, bias added) at frame
+ * point (px, py) by it: log2 of the sum of the magnitudes above, log2 of
+ * their difference (or -inf) below. */
+static void fz_lod_widen(const fz_case *c, double px, double py, double *lo, double *hi)
+{
+    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);   /* sub-pixels a pixel */
+    double X[3], Y[3], q[3], det, b1, b2, qx, qy, qp, e[2], n, ln;
+    int i;
+    if (c->draw.persp == FXL_PERSP_AFFINE)
+        return;   /* q constant: no such term */
+    for (i = 0; i < 3; i++) {
+        X[i] = (double)ref_snap(c->v[i].x) / grid;
+        Y[i] = (double)ref_snap(c->v[i].y) / grid;
+        q[i] = (double)c->v[i].inv_w;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    if (det == 0)
+        return;
+    /* q linear in screen space: its gradient per pixel, and q at the point
+     * (at least the least vertex q, as the core clamps it) */
+    qx = ((q[1] - q[0]) * (Y[2] - Y[0]) - (q[2] - q[0]) * (Y[1] - Y[0])) / det;
+    qy = ((q[2] - q[0]) * (X[1] - X[0]) - (q[1] - q[0]) * (X[2] - X[0])) / det;
+    b1 = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / det;
+    b2 = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / det;
+    qp = q[0] + b1 * (q[1] - q[0]) + b2 * (q[2] - q[0]);
+    qp = qp < fmin(q[0], fmin(q[1], q[2])) ? fmin(q[0], fmin(q[1], q[2])) : qp;
+    fz_exact_bound(c, (int64_t)floor(px * grid), (int64_t)floor(py * grid), 0, 0, e);
+    /* texels a pixel of level 0; the LOD's derivatives are in those */
+    n = hypot(e[0], e[1]) * fmax(fabs(qx), fabs(qy)) / qp;
+    if (!(n > 0))
+        return;
+    ln = log2(n) + c->draw.lod_bias_q8 / 256.0;
+    *hi = log2(exp2(*hi) + exp2(ln));
+    *lo = ln >= *lo ? -1e300 : log2(exp2(*lo) - exp2(ln));
+}
+
 static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
     const fxl_draw_t *d = &c->draw;
@@ -1437,7 +1480,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     const int64_t seg_len = d->persp == FXL_PERSP_EXACT || fz_clamp_saturates(c) || huge == 2 ? 1 : L;
     int tri_lo = 0, tri_hi = 0;
     int64_t span_first = 0, seg_first = INT64_MIN;
-    double seg_lod = 0;
+    double seg_lod = 0, seg_lod_hi = 0;
     double chord = 0, drift = 0;
     int n_lo = 0, n_hi = 0;
     /* the exact LOD (bias added; AUTO: perspective and affine) at columns
@@ -1540,15 +1583,18 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     if (x0 != seg_first) {
                         seg_first = x0;
                         (void)ref_uv_at(c->v, (double)x0 + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
-                        seg_lod = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        seg_lod = seg_lod_hi = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        fz_lod_widen(c, (double)x0 + 0.5, (double)fy + 0.5, &seg_lod, &seg_lod_hi);
                     }
-                    lmin = lmax = seg_lod;
+                    lmin = seg_lod;
+                    lmax = seg_lod_hi;
                     if (huge) {   /* or divided at this pixel */
-                        double here;
+                        double here, here_hi;
                         (void)ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
-                        here = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        here = here_hi = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        fz_lod_widen(c, (double)fx + 0.5, (double)fy + 0.5, &here, &here_hi);
                         lmin = here < lmin ? here : lmin;
-                        lmax = here > lmax ? here : lmax;
+                        lmax = here_hi > lmax ? here_hi : lmax;
                     }
                 }
                 for (j = 0; auto_lod && j < W; j++) {
@@ -1557,6 +1603,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     if (!lod_known[ci]) {
                         (void)ref_uv_at(c->v, (double)(fx - j) + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
                         lod_lo[ci] = lod_hi[ci] = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
+                        fz_lod_widen(c, (double)(fx - j) + 0.5, (double)fy + 0.5, &lod_lo[ci], &lod_hi[ci]);
                         if (d->persp == FXL_PERSP_AUTO) {
                             /* a triangle AUTO draws affine (its vertex test)
                              * takes the LOD of the affine map it draws */
