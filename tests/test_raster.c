@@ -534,15 +534,21 @@ static double probe_error_at(const fxl_vertex_t v[3], int tw, int affine, int st
     return hypot(wrap_err(probe_u[y * stride + x], eu, tw), wrap_err(probe_v[y * stride + x], ev, tw));
 }
 
-/* An FXL_PERSP_AUTO draw (default budget, no depth) of a 64 x 64 RGB565
+/* A draw in mode persp (default budget, no depth) of a side x side RGB565
  * texture with one level, over the caller's texels. */
-static void auto_draw_64(fxl_draw_t *d, fxl_texture_t *tex, uint16_t *texels)
+static void one_level_draw(fxl_draw_t *d, fxl_texture_t *tex, uint16_t *texels, uint32_t side, int16_t persp)
 {
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(tex, texels, side, side, FXL_TEXFMT_RGB565, 1));
     fxl_draw_defaults(d);
     d->texture = tex;
     d->depth = 0;
-    d->persp = FXL_PERSP_AUTO;
+    d->persp = persp;
+}
+
+/* The same for FXL_PERSP_AUTO and a 64 x 64 texture. */
+static void auto_draw_64(fxl_draw_t *d, fxl_texture_t *tex, uint16_t *texels)
+{
+    one_level_draw(d, tex, texels, 64, FXL_PERSP_AUTO);
 }
 
 /* The largest Euclidean (u, v) error, in texels of a 64 x 64 texture, over
@@ -1286,6 +1292,29 @@ void test_auto_quadratic_segments_stay_within_budget(void)
 #endif
 }
 
+/* Draws v with d through the probe into a w x h target over buf, with
+ * stats st (may be NULL); err[] then holds each pixel's Euclidean error
+ * in texels of a 128-texel texture, when ref_err is NULL, else its excess
+ * over ref_err[], whose largest value is returned. */
+static double probe_draw_errors(uint16_t *buf, int w, int h, const fxl_draw_t *d, const fxl_vertex_t v[3],
+                                fxl_stats_t *st, double *err, const double *ref_err)
+{
+    fxl_target_t t;
+    double worst = 0;
+    int x, y;
+    probe_target(&t, buf, w, h);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, d, v, st, probe_seg));
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++)
+            if (probe_count[y * w + x]) {
+                const double e = probe_error_at(v, 128, 0, w, x, y) - (ref_err ? ref_err[y * w + x] : 0.0);
+                if (err)
+                    err[y * w + x] = e;
+                worst = e > worst ? e : worst;
+            }
+    return worst;
+}
+
 /* AUTO's whole-span test (auto.c, the vertex ranges) on a narrow, strongly
  * receding strip whose ~200-pixel spans cross the depth change: the bound
  * holds with its margins, and a test twice as loose drew it over budget
@@ -1312,7 +1341,7 @@ void test_auto_budget_holds_for_small_and_huge_budgets(void)
     fxl_target_t t;
     char msg[200];
     size_t b;
-    int x, y, k;
+    int k;
     const int32_t X[3] = {249886150, 179360979, 265773593}, Y[3] = {3899407, 2107052, 30407},
                   U[3] = {-6364, 19003, -9305}, Vv[3] = {-1229, -14849, 16223};
     const uint32_t Q[3] = {1871715952u, 1851342u, 1533459u};
@@ -1322,32 +1351,16 @@ void test_auto_budget_holds_for_small_and_huge_budgets(void)
         memset(&v[k], 0, sizeof v[k]);
         v[k].x = X[k]; v[k].y = Y[k]; v[k].inv_w = Q[k]; v[k].u = U[k]; v[k].v = Vv[k]; v[k].color = 0xFFFF;
     }
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 128, 128, FXL_TEXFMT_RGB565, 1));
-    fxl_draw_defaults(&d);
-    d.texture = &tex;
-    d.depth = 0;
+    one_level_draw(&d, &tex, texels, 128, FXL_PERSP_EXACT);
     d.mip = FXL_MIP_NONE;
-    d.persp = FXL_PERSP_EXACT;
-    probe_target(&t, buf, 4096, 64);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
-    for (y = 0; y < 64; y++)
-        for (x = 0; x < 4096; x++)
-            if (probe_count[y * 4096 + x])
-                exact_err[y * 4096 + x] = probe_error_at(v, 128, 0, 4096, x, y);
+    (void)probe_draw_errors(buf, 4096, 64, &d, v, NULL, exact_err, NULL);
+    probe_target(&t, buf, 4096, 64);   /* for the public draws below */
     d.persp = FXL_PERSP_AUTO;
     for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
         const double budget = (budgets[b] > 256 * 65536 ? 256 * 65536 : budgets[b]) / 65536.0;
-        double worst = 0;
+        double worst;
         d.auto_budget = budgets[b];
-        probe_target(&t, buf, 4096, 64);
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
-        for (y = 0; y < 64; y++)
-            for (x = 0; x < 4096; x++)
-                if (probe_count[y * 4096 + x]) {
-                    const double e = probe_error_at(v, 128, 0, 4096, x, y) - exact_err[y * 4096 + x];
-                    if (e > worst)
-                        worst = e;
-                }
+        worst = probe_draw_errors(buf, 4096, 64, &d, v, NULL, NULL, exact_err);
         snprintf(msg, sizeof msg, "budget %.6g texels: error beyond exact mode's %.6g texels", budget, worst);
         TEST_MESSAGE(msg);
         TEST_ASSERT_TRUE_MESSAGE(worst <= budget + 1e-6, msg);
@@ -1380,42 +1393,24 @@ void test_auto_budget_holds_on_rows_of_constant_depth(void)
     fxl_vertex_t v[3];
     fxl_texture_t tex;
     fxl_draw_t d;
-    fxl_target_t t;
     fxl_stats_t st;
     char msg[200];
     size_t b;
-    int x, y;
     uint32_t div_384 = 0;
     TEST_NEEDS(FXL_HAVE_AUTO);
     v[0] = vtx(3.3125, 2.5, 0.9, 0.0137, 0.291);
     v[1] = vtx(1020.75, 2.5, 0.9, 0.3071, 0.0127);
     v[2] = vtx(517.0625, 126.25, 0.11, -0.1913, 0.7777);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 128, 128, FXL_TEXFMT_RGB565, 1));
-    fxl_draw_defaults(&d);
-    d.texture = &tex;
-    d.depth = 0;
+    one_level_draw(&d, &tex, texels, 128, FXL_PERSP_EXACT);
     d.mip = FXL_MIP_NONE;
-    d.persp = FXL_PERSP_EXACT;
-    probe_target(&t, buf, 1024, 128);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg));
-    for (y = 0; y < 128; y++)
-        for (x = 0; x < 1024; x++)
-            if (probe_count[y * 1024 + x])
-                exact_err[y * 1024 + x] = probe_error_at(v, 128, 0, 1024, x, y);
+    (void)probe_draw_errors(buf, 1024, 128, &d, v, NULL, exact_err, NULL);
     d.persp = FXL_PERSP_AUTO;
     for (b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
         const double budget = budgets[b] / 65536.0;
-        double worst = 0;
+        double worst;
         d.auto_budget = budgets[b];
-        probe_target(&t, buf, 1024, 128);
         memset(&st, 0, sizeof st);
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, &st, probe_seg));
-        for (y = 0; y < 128; y++)
-            for (x = 0; x < 1024; x++)
-                if (probe_count[y * 1024 + x]) {
-                    const double e = probe_error_at(v, 128, 0, 1024, x, y) - exact_err[y * 1024 + x];
-                    worst = e > worst ? e : worst;
-                }
+        worst = probe_draw_errors(buf, 1024, 128, &d, v, &st, NULL, exact_err);
         snprintf(msg, sizeof msg, "budget %d q16: error beyond exact mode's %.3g q16, %u divisions", (int)budgets[b],
                  worst * 65536.0, (unsigned)st.divisions);
         TEST_MESSAGE(msg);
