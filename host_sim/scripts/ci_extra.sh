@@ -14,7 +14,8 @@
 #      panel's with byte-swapped walks only, and point, swapped and
 #      two-level specialisations);
 #   4. the whole suite built as Release and MinSizeRel, and with clang
-#      (Release) where installed;
+#      (Release) where installed; fixel-fuzz of the MinSizeRel build (the
+#      generic walk for every draw), FXL_OS_FUZZ_CASES (default 200000);
 #      host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, a build with
 #      specialised code left out, Cortex-M4 and Cortex-M0+ code on qemu where
 #      the tools exist);
@@ -111,6 +112,19 @@ build_type() { # name compiler build-type
 }
 build_type release "${CC:-cc}" Release
 build_type minsizerel "${CC:-cc}" MinSizeRel
+# At -Os every draw takes the generic walk, as size-optimised firmware's
+# do: the fuzz's checks (check 7's texel values included) on that code too.
+osdir="${bdir%/}-minsizerel"
+if [ -x "$osdir/bin/fixel-fuzz" ]; then
+    if "$osdir/bin/fixel-fuzz" --seed "$seed" --cases "${FXL_OS_FUZZ_CASES:-200000}" --quiet \
+        > "$osdir/fuzz.txt" 2>&1; then
+        echo "minsizerel fuzz: $(tail -n 1 "$osdir/fuzz.txt")"
+    else
+        tail -n 40 "$osdir/fuzz.txt"
+        echo "minsizerel fuzz: FAILED"
+        status=1
+    fi
+fi
 if command -v clang >/dev/null 2>&1; then
     build_type clang-release clang Release
 else
