@@ -1396,7 +1396,6 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
     return hi;
 }
 
-/* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
 /* A per-segment LOD is measured from the core's u, v at the correction
  * point: du/dg = (S_g - u q_g) / q (span.c, lod_at), so an error e of u, v
  * there moves each derivative by up to e |q_g| / q. Where exact mode's
@@ -1428,8 +1427,7 @@ static void fz_lod_widen(const fz_case *c, double px, double py, double *lo, dou
     qy = ((q[2] - q[0]) * (X[1] - X[0]) - (q[1] - q[0]) * (X[2] - X[0])) / det;
     b1 = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / det;
     b2 = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / det;
-    qp = q[0] + b1 * (q[1] - q[0]) + b2 * (q[2] - q[0]);
-    qp = qp < fmin(q[0], fmin(q[1], q[2])) ? fmin(q[0], fmin(q[1], q[2])) : qp;
+    qp = fmax(q[0] + b1 * (q[1] - q[0]) + b2 * (q[2] - q[0]), fmin(q[0], fmin(q[1], q[2])));
     fz_exact_bound(c, (int64_t)floor(px * grid), (int64_t)floor(py * grid), 0, 0, e);
     /* texels a pixel of level 0; the LOD's derivatives are in those */
     n = hypot(e[0], e[1]) * fmax(fabs(qx), fabs(qy)) / qp;
@@ -1440,6 +1438,7 @@ static void fz_lod_widen(const fz_case *c, double px, double py, double *lo, dou
     *lo = ln >= *lo ? -1e300 : log2(exp2(*lo) - exp2(ln));
 }
 
+/* Check 7 (see the top) on render a (background 0x0000) and b (0xFFFF). */
 static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
     const fxl_draw_t *d = &c->draw;
