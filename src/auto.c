@@ -246,7 +246,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * unit a pixel on each axis: under 1.5 2^cap units for the longest
          * (6 2^-16 texel at 4 pixels, 0.006 at 256: nothing against the
          * default 1/4, what keeps a budget of 1/256 on a 256-pixel span). */
-        const int32_t bc = budget_capped(tri->draw) - (int32_t)((3u << cap) + 1u) / 2;
+        const int32_t bc = budget_capped(tri->draw) - fxl__auto_drift_q16(cap);
         lba = log2_budget_q8(ba);
         lbq = log2_budget_q8(bq);
         lb = log2_budget_q8(bc);

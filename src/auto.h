@@ -66,19 +66,27 @@ static inline int32_t fxl__auto_log2_q8(uint32_t q32)
  * less). The caller (raster.c) calls it for textured triangles only, with
  * auto_seg and auto_quad 0; fxl__auto_vertices has set auto_w and
  * auto_cap. */
+/* The drift of an affine segment of 2^k pixels, q16 texels: its truncated
+ * q16 steps err by under one unit a pixel on each axis, so under
+ * 1.5 * 2^k units at its far end (both axes together, rounded up). The
+ * chooser spends the budget less this on the chord (fxl__auto_bound), or
+ * all of it where there is no chord (fxl__auto_setup). */
+static inline int32_t fxl__auto_drift_q16(int k)
+{
+    return (int32_t)(((3u << k) + 1u) / 2);
+}
+
 static inline void fxl__auto_setup(fxl__tri_t *tri, const int32_t Y[3])
 {
     tri->seg_log2 = 8;
     if ((uint64_t)tri->q.gx * FXL__ONE == 0) {
         /* Constant depth along every span: u, v are affine along a row,
-         * and only the truncated q16 steps err, by under 1.5 units a pixel
-         * of a segment (fxl__auto_bound's bc). The longest length whose
+         * and only the truncated q16 steps err. The longest length whose
          * drift fits the budget: 256 from 384 q16 (1/170 texel) up, exact
          * at every pixel below 3. A budget of 1 unit on 256-pixel
          * segments drew 44 units off (fuzz seed 51, case 4333147). */
-        const uint32_t b2 = 2u * (uint32_t)tri->draw->auto_budget;   /* > 0, < 2^32 */
         int k = 8;
-        while (k > 0 && (3u << k) > b2)   /* (3 2^k + 1) / 2 > budget */
+        while (k > 0 && fxl__auto_drift_q16(k) > tri->draw->auto_budget)
             k--;
         tri->seg_log2 = k;
         return;

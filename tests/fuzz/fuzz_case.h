@@ -1396,6 +1396,37 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
     return hi;
 }
 
+/* q (the vertices' inv_w, linear in screen space) as a plane in pixels:
+ * its value at vertex 0, its gradient, and the least vertex q, which the
+ * core clamps to; ok 0 for a zero-area triangle or an affine draw (q
+ * constant there: no such term). Once per case. */
+typedef struct fz_qplane {
+    double x0, y0, q0, qx, qy, qmin;
+    int ok;
+} fz_qplane;
+
+static void fz_qplane_init(const fz_case *c, fz_qplane *p)
+{
+    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);   /* sub-pixels a pixel */
+    double X[3], Y[3], q[3], det;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = (double)ref_snap(c->v[i].x) / grid;
+        Y[i] = (double)ref_snap(c->v[i].y) / grid;
+        q[i] = (double)c->v[i].inv_w;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    p->ok = det != 0 && c->draw.persp != FXL_PERSP_AFFINE;
+    if (!p->ok)
+        return;
+    p->x0 = X[0];
+    p->y0 = Y[0];
+    p->q0 = q[0];
+    p->qx = ((q[1] - q[0]) * (Y[2] - Y[0]) - (q[2] - q[0]) * (Y[1] - Y[0])) / det;
+    p->qy = ((q[2] - q[0]) * (X[1] - X[0]) - (q[1] - q[0]) * (X[2] - X[0])) / det;
+    p->qmin = fmin(q[0], fmin(q[1], q[2]));
+}
+
 /* A per-segment LOD is measured from the core's u, v at the correction
  * point: du/dg = (S_g - u q_g) / q (span.c, lod_at), so an error e of u, v
  * there moves each derivative by up to e |q_g| / q. Where exact mode's
@@ -1406,31 +1437,16 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
  * 6260750). Widens the reference's [lo, hi] (LOD, bias added) at frame
  * point (px, py) by it: log2 of the sum of the magnitudes above, log2 of
  * their difference (or -inf) below. */
-static void fz_lod_widen(const fz_case *c, double px, double py, double *lo, double *hi)
+static void fz_lod_widen(const fz_case *c, const fz_qplane *p, double px, double py, double *lo, double *hi)
 {
-    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);   /* sub-pixels a pixel */
-    double X[3], Y[3], q[3], det, b1, b2, qx, qy, qp, e[2], n, ln;
-    int i;
-    if (c->draw.persp == FXL_PERSP_AFFINE)
-        return;   /* q constant: no such term */
-    for (i = 0; i < 3; i++) {
-        X[i] = (double)ref_snap(c->v[i].x) / grid;
-        Y[i] = (double)ref_snap(c->v[i].y) / grid;
-        q[i] = (double)c->v[i].inv_w;
-    }
-    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-    if (det == 0)
+    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);
+    double q, e[2], n, ln;
+    if (!p->ok)
         return;
-    /* q linear in screen space: its gradient per pixel, and q at the point
-     * (at least the least vertex q, as the core clamps it) */
-    qx = ((q[1] - q[0]) * (Y[2] - Y[0]) - (q[2] - q[0]) * (Y[1] - Y[0])) / det;
-    qy = ((q[2] - q[0]) * (X[1] - X[0]) - (q[1] - q[0]) * (X[2] - X[0])) / det;
-    b1 = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / det;
-    b2 = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / det;
-    qp = fmax(q[0] + b1 * (q[1] - q[0]) + b2 * (q[2] - q[0]), fmin(q[0], fmin(q[1], q[2])));
+    q = fmax(p->q0 + p->qx * (px - p->x0) + p->qy * (py - p->y0), p->qmin);
     fz_exact_bound(c, (int64_t)floor(px * grid), (int64_t)floor(py * grid), 0, 0, e);
     /* texels a pixel of level 0; the LOD's derivatives are in those */
-    n = hypot(e[0], e[1]) * fmax(fabs(qx), fabs(qy)) / qp;
+    n = hypot(e[0], e[1]) * fmax(fabs(p->qx), fabs(p->qy)) / q;
     if (!(n > 0))
         return;
     ln = log2(n) + c->draw.lod_bias_q8 / 256.0;
@@ -1487,6 +1503,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     double lod_lo[FZ_MAX_DIM + 16], lod_hi[FZ_MAX_DIM + 16];
     uint8_t lod_known[FZ_MAX_DIM + 16];
     int32_t lod_row = -1;
+    fz_qplane qpl;               /* q's plane, for fz_lod_widen */
     double lod_noise = -1e300;   /* per segment: the LOD of rounding-noise derivatives, bias added */
     /* Levels not known (every level may be read): a per-triangle LOD from
      * coordinate differences of 2^31 units or more, which raster.h halves
@@ -1496,6 +1513,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     if (!d->texture)
         return 0;
     fz_texidx_reset(s->texidx);
+    fz_qplane_init(c, &qpl);
     if (gouraud)
         fz_gouraud_init(&g, c, d->persp == FXL_PERSP_AUTO ? FXL_PERSP_MAX : L, affine);
     /* affine: against the screen-linear map, to which it is exact but for
@@ -1583,7 +1601,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                         seg_first = x0;
                         (void)ref_uv_at(c->v, (double)x0 + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
                         seg_lod = seg_lod_hi = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
-                        fz_lod_widen(c, (double)x0 + 0.5, (double)fy + 0.5, &seg_lod, &seg_lod_hi);
+                        fz_lod_widen(c, &qpl, (double)x0 + 0.5, (double)fy + 0.5, &seg_lod, &seg_lod_hi);
                     }
                     lmin = seg_lod;
                     lmax = seg_lod_hi;
@@ -1591,7 +1609,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                         double here, here_hi;
                         (void)ref_uv_at(c->v, (double)fx + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
                         here = here_hi = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
-                        fz_lod_widen(c, (double)fx + 0.5, (double)fy + 0.5, &here, &here_hi);
+                        fz_lod_widen(c, &qpl, (double)fx + 0.5, (double)fy + 0.5, &here, &here_hi);
                         lmin = here < lmin ? here : lmin;
                         lmax = here_hi > lmax ? here_hi : lmax;
                     }
@@ -1602,7 +1620,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                     if (!lod_known[ci]) {
                         (void)ref_uv_at(c->v, (double)(fx - j) + 0.5, (double)fy + 0.5, affine, NULL, NULL, du, dv);
                         lod_lo[ci] = lod_hi[ci] = ref_lod_pixel(&c->tex, du, dv) + d->lod_bias_q8 / 256.0;
-                        fz_lod_widen(c, (double)(fx - j) + 0.5, (double)fy + 0.5, &lod_lo[ci], &lod_hi[ci]);
+                        fz_lod_widen(c, &qpl, (double)(fx - j) + 0.5, (double)fy + 0.5, &lod_lo[ci], &lod_hi[ci]);
                         if (d->persp == FXL_PERSP_AUTO) {
                             /* a triangle AUTO draws affine (its vertex test)
                              * takes the LOD of the affine map it draws */
