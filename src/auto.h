@@ -85,8 +85,9 @@ static inline void fxl__auto_setup(fxl__tri_t *tri, const int32_t Y[3])
          * drift fits the budget: 256 from 384 q16 (1/170 texel) up, exact
          * at every pixel below 3. A budget of 1 unit on 256-pixel
          * segments drew 44 units off (fuzz seed 51, case 4333147). */
+        const int32_t budget = tri->draw->auto_budget;
         int k = 8;
-        while (k > 0 && fxl__auto_drift_q16(k) > tri->draw->auto_budget)
+        while (k > 0 && fxl__auto_drift_q16(k) > budget)
             k--;
         tri->seg_log2 = k;
         return;
