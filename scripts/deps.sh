@@ -9,6 +9,7 @@
 #   cppcheck  cppcheck
 #   optional  g++ (C++ check of the public headers), clang (libFuzzer,
 #             determinism across compilers), qemu-system-arm,
+#             gcc-riscv64-unknown-elf and qemu-system-misc (RISC-V),
 #             gnuplot-nox, valgrind: installed one by one when possible,
 #             never an error
 #
@@ -80,6 +81,10 @@ check_firmware() {
 check_optional() {
     have g++ || have clang++ || optional_missing+=(g++)
     have qemu-system-arm || optional_missing+=(qemu-system-arm)
+    # RISC-V determinism builds (determinism.sh): the cross compiler and
+    # qemu-system-riscv32/64
+    have riscv64-unknown-elf-gcc || optional_missing+=(gcc-riscv64-unknown-elf)
+    have qemu-system-riscv32 || optional_missing+=(qemu-system-misc)
     have gnuplot || optional_missing+=(gnuplot-nox)
     have valgrind || optional_missing+=(valgrind)
     # clang: libFuzzer target and the clang -O2 determinism build (issue 5)

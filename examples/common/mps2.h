@@ -1,7 +1,9 @@
 /* mps2.h - what the shared bare-metal start-up (mps2_startup.c) gives the
  * firmware images that run on qemu-system-arm -M mps2-an386: the example,
  * the benchmark firmware (bench/) and the determinism check (determinism/).
- * main() returns the exit status; output goes through semihosting. */
+ * main() returns the exit status; output goes through semihosting.
+ * virt_rv_startup.c gives the same two calls on qemu-system-riscv32/64
+ * -M virt (the benchmark and determinism images for RISC-V). */
 #ifndef FXL_EXAMPLES_MPS2_H
 #define FXL_EXAMPLES_MPS2_H
 

@@ -17,16 +17,17 @@
 #      (Release) where installed; fixel-fuzz of the MinSizeRel build (the
 #      generic walk for every draw), FXL_OS_FUZZ_CASES (default 200000);
 #      host_sim/scripts/determinism.sh (gcc -O0/-O2, clang -O2, a build with
-#      specialised code left out, Cortex-M4 and Cortex-M0+ code on qemu where
-#      the tools exist);
+#      specialised code left out, Cortex-M4 and Cortex-M0+ code on
+#      qemu-system-arm, RV32IMAC/RV32I/RV32E/RV64IMAC code on
+#      qemu-system-riscv32/64, where the tools exist);
 #   5. bench/experiments/*.c compile warning-free (host, and Cortex-M4 where
 #      the cross compiler exists), so the measurements they record stay
 #      reproducible.
 # Environment: FXL_BUILD_DIR (host build, default build), FXL_ASAN_DIR
 # (sanitizer build from `make sanitize`, default build-asan; configured here
 # when missing), FXL_FUZZ_CASES (default 1000000), FXL_FUZZ_SEED (default 1).
-# Optional tools: clang, qemu-system-arm, gcc-arm-none-eabi (steps skip
-# without them). Takes about 7 minutes on 2 cores (423 s measured).
+# Optional tools: clang, qemu-system-arm, gcc-arm-none-eabi,
+# gcc-riscv64-unknown-elf, qemu-system-misc (steps skip without them). Takes about 7 minutes on 2 cores (423 s measured).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bdir="${FXL_BUILD_DIR:-build}"

@@ -8,7 +8,9 @@
 # the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
-# qemu-system-arm -M mps2-an386 with semihosting (when both exist), and compares each list
+# qemu-system-arm -M mps2-an386 with semihosting (when both exist),
+# riscv64-unknown-elf-gcc for RV32IMAC (-O2, -Os), RV32I, RV32E and RV64IMAC
+# run on qemu-system-riscv32/64 -M virt (when both exist), and compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data,
 # meshes, front-end parameters (fixed point) and textures are generated once
 # on the host (determinism/gen_data.c), so every build renders the same
@@ -101,6 +103,46 @@ if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/
 else
     echo "== m4-O2: needs arm-none-eabi-gcc and qemu-system-arm (apt-get install gcc-arm-none-eabi" \
          "libnewlib-arm-none-eabi qemu-system-arm); skipped"
+fi
+
+# RISC-V: bare-metal builds run on qemu-system-riscv32/64 -M virt -bios none
+# with semihosting (examples/common/virt_rv_startup.c), the same output.
+run_riscv() {   # name xlen march mabi opt
+    local name=$1 xlen=$2 march=$3 mabi=$4 opt=$5
+    echo "== $name: riscv64-unknown-elf-gcc -march=$march -mabi=$mabi $opt on qemu-system-riscv$xlen -M virt"
+    # shellcheck disable=SC2086
+    riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib "$opt" $warn -march="$march" -mabi="$mabi" \
+        -mcmodel=medany -ffunction-sections -fdata-sections $inc -I"$root/examples/common" \
+        -T "$root/examples/common/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
+        "$root/examples/common/virt_rv_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_$name.elf"
+    rm -f "$out/$name.txt"
+    if timeout 900 "qemu-system-riscv$xlen" -M virt -bios none -display none -monitor none -serial none \
+        -semihosting-config enable=on,target=native,chardev=semi \
+        -chardev file,id=semi,path="$out/$name.txt" -kernel "$out/det_$name.elf"; then
+        :
+    else
+        echo "determinism.sh: the $march $opt run failed (exit $?)" >&2
+    fi
+    lists+=("$name")
+}
+
+if command -v riscv64-unknown-elf-gcc >/dev/null 2>&1 && command -v qemu-system-riscv32 >/dev/null 2>&1 &&
+    command -v qemu-system-riscv64 >/dev/null 2>&1; then
+    # RV32IMAC: the common microcontroller core (multiply and divide, no
+    # CLZ: the soft CLZ and libgcc's 64-bit divisions)
+    run_riscv rv32imac-O2 32 rv32imac ilp32 -O2
+    # the size-optimised code: generic walk, fixel's own 64-bit division
+    run_riscv rv32imac-Os 32 rv32imac ilp32 -Os
+    # RV32I: no multiply instruction at all (every product through libgcc)
+    run_riscv rv32i-O2 32 rv32i ilp32 -O2
+    # RV32E (16 registers, the ilp32e ABI), as on the smallest parts
+    run_riscv rv32emc-O2 32 rv32emc ilp32e -O2
+    # a 64-bit core that is neither x86-64 nor AArch64: the 64-bit paths
+    # without their CLZ builtins
+    run_riscv rv64imac-O2 64 rv64imac lp64 -O2
+else
+    echo "== rv32imac-O2: needs riscv64-unknown-elf-gcc and qemu-system-riscv32/64 (apt-get install" \
+         "gcc-riscv64-unknown-elf qemu-system-misc); skipped"
 fi
 
 ctest_list="$bdir/tests/output/determinism_crcs.txt"

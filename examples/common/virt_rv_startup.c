@@ -1,0 +1,89 @@
+/* virt_rv_startup.c - the bare-metal start-up for images that run on
+ * qemu-system-riscv32/64 -M virt -bios none (determinism/: the gallery
+ * CRCs on RISC-V): stack and global pointer, .bss clear, semihosting output
+ * and exit, and the memcpy/memset the compiler may emit (no libc here).
+ * It offers the same two calls as mps2_startup.c (mps2.h), so a program
+ * written against them runs on either. */
+#include <stddef.h>
+#include <stdint.h>
+#include "mps2.h"
+
+extern uint32_t _sbss, _ebss;
+int main(void);
+void fw_rv_reset(void);
+void *memcpy(void *dst, const void *src, size_t n);
+void *memset(void *dst, int c, size_t n);
+
+/* _start: gp with relaxation off (it must not be addressed through itself),
+ * the stack at the top of RAM (16-byte aligned, as the ABI wants), then C. */
+__asm__(".section .text.start, \"ax\"\n"
+        ".globl _start\n"
+        "_start:\n"
+        ".option push\n"
+        ".option norelax\n"
+        "    la gp, __global_pointer$\n"
+        ".option pop\n"
+        "    la sp, _estack\n"
+        "    andi sp, sp, -16\n"
+        "    call fw_rv_reset\n"
+        "1:  j 1b\n"
+        ".text\n");
+
+void *memcpy(void *dst, const void *src, size_t n)
+{
+    uint8_t *d = (uint8_t *)dst;
+    const uint8_t *s = (const uint8_t *)src;
+    while (n--) *d++ = *s++;
+    return dst;
+}
+
+void *memset(void *dst, int c, size_t n)
+{
+    uint8_t *d = (uint8_t *)dst;
+    while (n--) *d++ = (uint8_t)c;
+    return dst;
+}
+
+/* RISC-V semihosting: operation in a0, argument in a1, and EBREAK between
+ * the two marker instructions (slli x0, x0, 0x1f before, srai x0, x0, 7
+ * after), all three uncompressed and in one 16-byte block (never across a
+ * page) so qemu recognises them. A function of its own, so the C compiler
+ * and linker relaxation cannot move code around the sequence. */
+long fw_rv_semihost(long op, void *arg);
+__asm__(".section .text.semihost, \"ax\"\n"
+        ".balign 16\n"
+        ".globl fw_rv_semihost\n"
+        "fw_rv_semihost:\n"
+        ".option push\n"
+        ".option norvc\n"
+        "    slli x0, x0, 0x1f\n"
+        "    ebreak\n"
+        "    srai x0, x0, 7\n"
+        ".option pop\n"
+        "    ret\n"
+        ".text\n");
+
+void fw_semihost_write0(const char *s)
+{
+    (void)fw_rv_semihost(0x04, (void *)s); /* SYS_WRITE0 */
+}
+
+void fw_semihost_exit(int code)
+{
+    /* SYS_EXIT_EXTENDED: the reason ADP_Stopped_ApplicationExit and the
+     * code, in words of the target's width */
+    static uintptr_t block[2];
+    block[0] = 0x20026u;
+    block[1] = (uintptr_t)(unsigned)code;
+    (void)fw_rv_semihost(0x20, block);
+    (void)fw_rv_semihost(0x18, (void *)(uintptr_t)0x20026u); /* SYS_EXIT, if that one is missing */
+    for (;;) {
+    }
+}
+
+void fw_rv_reset(void)
+{
+    uint32_t *p;
+    for (p = &_sbss; p < &_ebss; p++) *p = 0;
+    fw_semihost_exit(main());
+}
