@@ -6,10 +6,11 @@
 # Writes docs/bench/results.csv, docs/bench/*.png (gnuplot),
 # docs/bench/footprint.txt and docs/bench/frontend.csv (instructions per
 # vertex of the 3D front end); prints summary tables. Progress goes to stderr.
-# Work files: build-bench-host/ (callgrind), build-bench-m4/, build-bench-m0/
-# (firmware), build-bench-size/ (footprint builds).
+# Work files: build-bench-host/ (callgrind), build-bench-m4/, build-bench-m0/,
+# build-bench-rv32/ (firmware), build-bench-size/ (footprint builds).
 # Optional tools, each skipped with a note when missing: valgrind (host
 # instructions per pixel), arm-none-eabi-gcc + qemu-system-arm (Cortex-M
+# figures), riscv64-unknown-elf-gcc + qemu-system-riscv32 (RV32IMAC
 # figures), gnuplot (charts). Environment knobs:
 #   BENCH_RUNS=5     timing runs per configuration (median)
 #   BENCH_TRACE=1    also count floor subdiv16 point/bilinear exactly from a
@@ -26,6 +27,7 @@ out=docs/bench
 hostw=build-bench-host
 m4w=build-bench-m4
 m0w=build-bench-m0
+rvw=build-bench-rv32
 sizew=build-bench-size
 runs=${BENCH_RUNS:-5}
 trace=${BENCH_TRACE:-1}
@@ -35,7 +37,7 @@ t_start=$SECONDS
 say() { printf '[bench %3ds] %s\n' $((SECONDS - t_start)) "$*" >&2; }
 have() { command -v "$1" >/dev/null 2>&1; }
 
-mkdir -p "$out" "$hostw" "$m4w" "$m0w" "$sizew"
+mkdir -p "$out" "$hostw" "$m4w" "$m0w" "$rvw" "$sizew"
 
 if [ ! -d "$build" ]; then
     say "configuring $build"
@@ -229,6 +231,27 @@ else
     say "arm-none-eabi-gcc not found (apt-get install gcc-arm-none-eabi): no Cortex-M figures"
 fi
 
+# ---- RISC-V firmware ----------------------------------------------------------------
+# The same firmware and data built for RV32IMAC (-O2, no depth buffer, as the
+# Cortex-M rows) and run on qemu-system-riscv32 -M virt, where -icount makes
+# the minstret counter an exact instruction count.
+rv_counts=""
+if have riscv64-unknown-elf-gcc && have qemu-system-riscv32; then
+    say "RV32IMAC (-O2) firmware on qemu-system-riscv32 -M virt, -icount shift=0"
+    "$bench" gen-fw "$rvw/data_all.c" --filters point,bilinear,trilinear
+    make -s -j 2 -C bench fw ARCH=riscv MARCH=rv32imac MABI=ilp32 OPT=-O2 OUT="$root/$rvw/icount" \
+        DATA="$root/$rvw/data_all.c" >&2
+    rm -f "$rvw/icount/fw.txt"
+    timeout 600 qemu-system-riscv32 -M virt -bios none -display none -monitor none -serial none \
+        -chardev file,id=semi,path="$rvw/icount/fw.txt" -semihosting-config enable=on,target=native,chardev=semi \
+        -icount shift=0 -kernel "$rvw/icount/bench.elf"
+    python3 "$scripts/m4_count.py" icount "$rvw/icount/fw.txt" >"$rvw/counts.txt"
+    rv_counts="$rvw/counts.txt"
+else
+    say "riscv64-unknown-elf-gcc or qemu-system-riscv32 not found (apt-get install gcc-riscv64-unknown-elf" \
+        "qemu-system-misc): no RISC-V counts"
+fi
+
 if [ -n "$cg_pid" ]; then
     say "waiting for callgrind"
     wait "$cg_pid" || say "callgrind failed (see $hostw/valgrind.log)"
@@ -252,6 +275,7 @@ args=(accuracy --runs "$runs" --csv "$out/results.csv" --plot-dir "$hostw")
 [ -n "$host_ir" ] && [ -s "$host_ir" ] && args+=(--host-ir "$host_ir")
 [ -n "$m4_counts" ] && args+=(--m4 "$m4_counts")
 [ -n "$m0_counts" ] && args+=(--m0 "$m0_counts")
+[ -n "$rv_counts" ] && args+=(--rv32 "$rv_counts")
 "$bench" "${args[@]}" >"$hostw/summary.txt"
 
 if have gnuplot; then
