@@ -7,6 +7,9 @@
 BUILD_DIR  ?= build
 ASAN_DIR   ?= build-asan
 FW_CPUS    ?= cortex-m0plus cortex-m4
+# RISC-V -march strings cross-built too when riscv64-unknown-elf-gcc exists
+FW_RV_CPUS ?= rv32imac
+RV_PREFIX  ?= riscv64-unknown-elf-
 BUILD_TYPE ?= RelWithDebInfo
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_JOBS ?= 2
@@ -35,6 +38,7 @@ help:
 	@echo "make run        build, then $(BUILD_DIR)/bin/fixel-sim --gallery $(GALLERY)"
 	@echo "make test       build, then ctest --output-on-failure -j$(CTEST_JOBS)"
 	@echo "make firmware   cross-build the core for $(FW_CPUS) (build-fw-*),"
+	@echo "                and $(FW_RV_CPUS) where $(RV_PREFIX)gcc exists;"
 	@echo "                print sizes, check the archives use no libc"
 	@echo "make bench      build, then host_sim/scripts/bench.sh and the stability sweeps"
 	@echo "make stability  build, then host_sim/scripts/stability.sh"
@@ -78,6 +82,22 @@ firmware: deps-firmware
 	  fi; \
 	  $(ARM_PREFIX)size -t $$archives; \
 	  NM=$(ARM_PREFIX)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives; \
+	done
+	@# RISC-V: optional (the issue's targets are the Cortex-M ones)
+	@if ! command -v $(RV_PREFIX)gcc >/dev/null 2>&1; then \
+	  echo "==== firmware: $(RV_PREFIX)gcc not found (apt-get install gcc-riscv64-unknown-elf): RISC-V skipped"; \
+	  exit 0; \
+	fi; \
+	for cpu in $(FW_RV_CPUS); do \
+	  dir=build-fw-$$cpu; \
+	  echo "==== firmware: $$cpu in $$dir"; \
+	  $(RUN) $(CMAKE) -S . -B $$dir -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/riscv64-unknown-elf.cmake \
+	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
+	  $(RUN) $(CMAKE) --build $$dir -j $(JOBS); \
+	  archives="$$dir/lib/libfixel.a"; \
+	  if [ -f $$dir/lib/libfixel_port.a ]; then archives="$$archives $$dir/lib/libfixel_port.a"; fi; \
+	  $(RV_PREFIX)size -t $$archives; \
+	  NM=$(RV_PREFIX)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives; \
 	done
 
 bench: build

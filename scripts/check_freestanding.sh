@@ -10,13 +10,19 @@
 #                           initialisers even with -ffreestanding
 #   __aeabi_*               ARM EABI run-time helpers (division, 64-bit
 #                           shifts and multiplies, soft float) from libgcc
+#   __divdi3 __ashldi3 ...  libgcc's integer helpers under their generic
+#                           names, which targets without an EABI (RISC-V)
+#                           call for the same work: 64-bit shifts, products,
+#                           divisions and remainders, 32-bit ones on cores
+#                           without M
 #   __gnu_thumb1_case_*     libgcc switch-table helpers on Thumb-1 cores
 #   __clzsi2 __ctzsi2 ...   libgcc bit-count helpers for cores without CLZ
 # The last two groups are compiler run-time, not libc: a plain switch
 # statement or __builtin_clz on Cortex-M0+ needs them. Set
 # FXL_FREESTANDING_STRICT=1 to allow only memcpy/memset/memmove/__aeabi_*
-# (issue 2's rule; `make firmware` does: fixel's own archives need none of
-# the last two groups, which this default still lets other code use).
+# and the generic integer helpers (issue 2's rule; `make firmware` does:
+# fixel's own archives need none of the last two groups, which this default
+# still lets other code use).
 set -euo pipefail
 
 NM=${NM:-arm-none-eabi-nm}
@@ -36,9 +42,10 @@ if ! command -v "$NM" >/dev/null 2>&1; then
     exit 2
 fi
 
-allowed='^(memcpy|memset|memmove|__aeabi_[A-Za-z0-9_]+)$'
+intops='__(ashl|ashr|lshr|mul|div|udiv|mod|umod|neg)[sd]i3|__udivmoddi4|__u?cmpdi2'
+allowed="^(memcpy|memset|memmove|__aeabi_[A-Za-z0-9_]+|$intops)\$"
 if [ "${FXL_FREESTANDING_STRICT:-0}" != 1 ]; then
-    allowed='^(memcpy|memset|memmove|__aeabi_[A-Za-z0-9_]+|__gnu_thumb1_case_[a-z0-9]+|__(clz|ctz|popcount|parity|ffs)[sd]i2)$'
+    allowed="^(memcpy|memset|memmove|__aeabi_[A-Za-z0-9_]+|$intops|__gnu_thumb1_case_[a-z0-9]+|__(clz|ctz|popcount|parity|ffs)[sd]i2)\$"
 fi
 
 tmp=$(mktemp -d)
