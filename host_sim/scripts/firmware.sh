@@ -1,20 +1,25 @@
 #!/usr/bin/env bash
-# firmware.sh - build the Cortex-M4 firmware example (examples/m4_band) if
-# needed, run it on qemu-system-arm -M mps2-an386 with semihosting, and
+# firmware.sh - build the firmware example (examples/m4_band) if needed, run
+# it on qemu-system-arm -M mps2-an386 (Cortex-M4) with semihosting, and
 # compare the CRC of every frame's wire bytes with examples/expected_crc.txt
-# (the host test tests/test_firmware_scene.c checks the same file).
+# (the host test tests/test_firmware_scene.c checks the same file). Where
+# riscv64-unknown-elf-gcc and qemu-system-riscv32 exist, the same program
+# is also built for RV32IMAC (-Os, examples/common/virt_rv_startup.c) and
+# run on qemu-system-riscv32 -M virt against the same file: the band
+# renderer, the panel driver and the front end on a second architecture.
 #
 #   host_sim/scripts/firmware.sh            build + run + compare; exit 0/1
 #   host_sim/scripts/firmware.sh --update   rewrite examples/expected_crc.txt
-#                                           from the qemu run (after an
+#                                           from the Cortex-M4 run (after an
 #                                           intended change of the output)
 # Environment:
 #   FXL_FW_BUILD_DIR  cross build directory (default build-fw-m4, the one
 #                     `make firmware` uses; configured here when missing)
 #   FXL_FW_ELF        use this ELF instead of building
 #   FXL_FW_TIMEOUT    seconds for the qemu run (default 120)
-# Exits 0 with a "SKIP" line when arm-none-eabi-gcc or qemu-system-arm is
-# missing (install: apt-get install gcc-arm-none-eabi qemu-system-arm).
+# Each leg prints a "SKIP" line when its tools are missing (install:
+# apt-get install gcc-arm-none-eabi qemu-system-arm; gcc-riscv64-unknown-elf
+# qemu-system-misc).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -27,55 +32,102 @@ case "${1:-}" in
     *) echo "usage: $0 [--update]" >&2; exit 2 ;;
 esac
 
-for tool in arm-none-eabi-gcc qemu-system-arm; do
-    if ! command -v "$tool" >/dev/null 2>&1; then
-        echo "firmware.sh: SKIP: $tool not found (apt-get install gcc-arm-none-eabi qemu-system-arm)"
-        exit 0
-    fi
-done
-
-elf=${FXL_FW_ELF:-}
-if [ -z "$elf" ]; then
-    dir=${FXL_FW_BUILD_DIR:-build-fw-m4}
-    if [ ! -f "$dir/CMakeCache.txt" ]; then
-        env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
-            cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/arm-none-eabi.cmake" \
-            -DFXL_BUILD_HOST=OFF -DFXL_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
-    fi
-    # Builds the ELF and runs examples/elf_report.sh (size, no floating point).
-    env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
-        cmake --build "$dir" -j "${JOBS:-2}" --target m4_band_report
-    elf=$dir/bin/m4_band.elf
-fi
-[ -f "$elf" ] || { echo "firmware.sh: $elf was not built" >&2; exit 1; }
-
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-# Semihosting output goes to a chardev file: with -nographic and stdout
-# redirected to a file, qemu 7.2 was seen to drop the tail of the output.
-status=0
-timeout "${FXL_FW_TIMEOUT:-120}" qemu-system-arm -M mps2-an386 -nographic -monitor none \
-    -serial none -chardev file,id=semi,path="$tmp/out.txt" \
-    -semihosting-config enable=on,target=native,chardev=semi -kernel "$elf" || status=$?
-cat "$tmp/out.txt"
-if [ "$status" -ne 0 ] || ! grep -q '^status ok' "$tmp/out.txt"; then
-    echo "firmware.sh: FAIL: the firmware exited with status $status (124 = timeout)" >&2
-    exit 1
+grep -v '^#' "$expected" | sed '/^[[:space:]]*$/d' > "$tmp/want.txt"
+
+# check NAME OUT: the run's output OUT must end in "status ok" and carry
+# exactly the expected CRCs. Returns 0/1.
+check() {
+    local name=$1 out=$2
+    sed -n 's/^crc //p' "$out" > "$tmp/got.txt"
+    if ! grep -q '^status ok' "$out"; then
+        echo "firmware.sh: FAIL: $name: no 'status ok' (exit status above; 124 = timeout)" >&2
+        return 1
+    fi
+    if diff -u "$tmp/want.txt" "$tmp/got.txt" > "$tmp/diff.txt"; then
+        echo "firmware.sh: PASS: $name: $(wc -l < "$tmp/got.txt") CRCs on qemu equal $expected"
+        return 0
+    fi
+    echo "firmware.sh: FAIL: $name: qemu CRCs differ from $expected (- expected, + qemu):" >&2
+    cat "$tmp/diff.txt" >&2
+    return 1
+}
+
+result=0
+have_tools() { local t; for t in "$@"; do command -v "$t" >/dev/null 2>&1 || return 1; done; }
+
+# ---- Cortex-M4 -----------------------------------------------------------------------
+m4_leg() {
+    elf=${FXL_FW_ELF:-}
+    if [ -z "$elf" ]; then
+        dir=${FXL_FW_BUILD_DIR:-build-fw-m4}
+        if [ ! -f "$dir/CMakeCache.txt" ]; then
+            env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
+                cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/arm-none-eabi.cmake" \
+                -DFXL_BUILD_HOST=OFF -DFXL_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
+        fi
+        # Builds the ELF and runs examples/elf_report.sh (size, no floating point).
+        env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
+            cmake --build "$dir" -j "${JOBS:-2}" --target m4_band_report
+        elf=$dir/bin/m4_band.elf
+    fi
+    [ -f "$elf" ] || { echo "firmware.sh: $elf was not built" >&2; return 1; }
+
+    # Semihosting output goes to a chardev file: with -nographic and stdout
+    # redirected to a file, qemu 7.2 was seen to drop the tail of the output.
+    status=0
+    timeout "${FXL_FW_TIMEOUT:-120}" qemu-system-arm -M mps2-an386 -nographic -monitor none \
+        -serial none -chardev file,id=semi,path="$tmp/out.txt" \
+        -semihosting-config enable=on,target=native,chardev=semi -kernel "$elf" || status=$?
+    cat "$tmp/out.txt"
+    echo "(exit status $status)"
+
+    if [ "$update" -eq 1 ]; then
+        if [ "$status" -ne 0 ] || ! grep -q '^status ok' "$tmp/out.txt"; then
+            echo "firmware.sh: FAIL: the firmware exited with status $status; nothing written" >&2
+            exit 1
+        fi
+        sed -n 's/^crc //p' "$tmp/out.txt" > "$tmp/got.txt"
+        { grep '^#' "$expected"; cat "$tmp/got.txt"; } > "$tmp/new.txt"
+        cp "$tmp/new.txt" "$expected"
+        echo "firmware.sh: wrote $(wc -l < "$tmp/got.txt") CRCs to $expected;" \
+             "now run tests/test_firmware_scene.c (ctest -R test_firmware_scene)"
+        exit 0
+    fi
+    [ "$status" -eq 0 ] && check "Cortex-M4" "$tmp/out.txt"
+}
+
+if have_tools arm-none-eabi-gcc qemu-system-arm; then
+    m4_leg || result=1
+else
+    echo "firmware.sh: SKIP: Cortex-M4: arm-none-eabi-gcc or qemu-system-arm not found" \
+         "(apt-get install gcc-arm-none-eabi qemu-system-arm)"
 fi
 
-sed -n 's/^crc //p' "$tmp/out.txt" > "$tmp/got.txt"
-grep -v '^#' "$expected" | sed '/^[[:space:]]*$/d' > "$tmp/want.txt"
-if [ "$update" -eq 1 ]; then
-    { grep '^#' "$expected"; cat "$tmp/got.txt"; } > "$tmp/new.txt"
-    cp "$tmp/new.txt" "$expected"
-    echo "firmware.sh: wrote $(wc -l < "$tmp/got.txt") CRCs to $expected;" \
-         "now run tests/test_firmware_scene.c (ctest -R test_firmware_scene)"
-    exit 0
+# ---- RV32IMAC ------------------------------------------------------------------------
+# The same sources with the RISC-V start-up, built directly (the example's
+# CMake target is the M4 board's), at -Os as `make firmware` builds the core.
+rv_leg() {
+    local c=examples/common elf_rv="$tmp/rv_band.elf" status=0
+    echo "== RV32IMAC -Os on qemu-system-riscv32 -M virt"
+    riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib -Os -march=rv32imac -mabi=ilp32 \
+        -mcmodel=medany -Wall -Wextra -Wpedantic -Werror -ffunction-sections -fdata-sections \
+        -Iinclude -Isrc -Iport -I"$c" -T "$c/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
+        examples/m4_band/main.c "$c/fw_app.c" "$c/fw_scenes.c" "$c/virt_rv_startup.c" src/*.c port/*.c \
+        -lgcc -o "$elf_rv" || return 1
+    rm -f "$tmp/out_rv.txt"
+    timeout "${FXL_FW_TIMEOUT:-120}" qemu-system-riscv32 -M virt -bios none -display none -monitor none \
+        -serial none -chardev file,id=semi,path="$tmp/out_rv.txt" \
+        -semihosting-config enable=on,target=native,chardev=semi -kernel "$elf_rv" || status=$?
+    echo "(exit status $status)"
+    [ "$status" -eq 0 ] && check "RV32IMAC" "$tmp/out_rv.txt"
+}
+
+if have_tools riscv64-unknown-elf-gcc qemu-system-riscv32; then
+    rv_leg || result=1
+else
+    echo "firmware.sh: SKIP: RV32IMAC: riscv64-unknown-elf-gcc or qemu-system-riscv32 not found" \
+         "(apt-get install gcc-riscv64-unknown-elf qemu-system-misc)"
 fi
-if diff -u "$tmp/want.txt" "$tmp/got.txt" > "$tmp/diff.txt"; then
-    echo "firmware.sh: PASS: $(wc -l < "$tmp/got.txt") CRCs on qemu equal $expected"
-    exit 0
-fi
-echo "firmware.sh: FAIL: qemu CRCs differ from $expected (- expected, + qemu):" >&2
-cat "$tmp/diff.txt" >&2
-exit 1
+exit $result
