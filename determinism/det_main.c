@@ -1,10 +1,13 @@
 /* det_main.c - render the determinism list and print one CRC per frame.
  *
  * The same file is built for the host (-DDET_HOST: stdio) and bare-metal
- * Cortex-M4 / M0+ (semihosting, see examples/common/mps2_startup.c). No libc
- * and no floating point on the target: formatting is done here. Output
- * lines: "<scene> <variant> <status> <crc32 hex>", the screen-space frames
- * first, then the front-end frames (det_entries.h), then "done". Data
+ * Cortex-M4 / M0+ and RISC-V (semihosting, see examples/common/
+ * mps2_startup.c and virt_rv_startup.c). No libc and no floating point on
+ * the target: formatting is done here. Output lines: "<scene> <variant>
+ * <status> <crc32 hex>", the screen-space frames first, then the front-end
+ * frames (det_entries.h), then one line a DET_STRESS_LINE stress cases
+ * (det_stress.h), "stress <first case> ok <cases drawn FXL_OK> <hash hex>",
+ * then "done". Data
  * (vertices, meshes, front-end parameters, textures) comes from det_data.h,
  * generated on the host by gen_data.c.
  */
@@ -13,6 +16,7 @@
 #include "fixel/fixel.h"
 #include "det_entries.h"
 #include "det_data.h"
+#include "det_stress.h"
 
 #ifdef DET_HOST
 #include <stdio.h>
@@ -30,6 +34,7 @@ static void out(const char *s)
 
 static uint16_t frame[DET_W * DET_H];
 static uint16_t depth[DET_W * DET_H];
+static det_stress_assets_t stress_assets;
 /* pscene_draw's vertex cache: one entry per vertex of the largest part
  * (56 bytes each, 57 KB for the tunnel's 1025 vertices). */
 static fxl_vcache_entry_t vcache[DET_PIPE_CACHE_MAX];
@@ -53,6 +58,19 @@ static char *put_str(char *p, const char *s)
 {
     while (*s)
         *p++ = *s++;
+    return p;
+}
+
+static char *put_dec(char *p, uint32_t v)
+{
+    char t[10];
+    int n = 0;
+    do {
+        t[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v != 0u);
+    while (n > 0)
+        *p++ = t[--n];
     return p;
 }
 
@@ -170,6 +188,29 @@ int main(void)
                 failures++;
             print_frame(det_pscenes[s].name, pv->v.name, st);
         }
+    }
+    /* the stress cases, in the frame's buffers (each case refills what it
+     * uses), a line a batch so a difference points at its cases */
+    det_stress_assets_init(&stress_assets);
+    for (s = 0; s < DET_STRESS_CASES; s += DET_STRESS_LINE) {
+        char line[80], *p = line;
+        uint32_t hash = 0, ok = 0;
+        for (k = s; k < s + DET_STRESS_LINE; k++) {
+            det_stress_case_t c;
+            fxl_status_t st;
+            det_stress_make((uint32_t)k, &stress_assets, frame, depth, &c);
+            hash = det_stress_draw(&c, hash, &st);
+            ok += st == FXL_OK;
+        }
+        p = put_str(p, "stress ");
+        p = put_dec(p, (uint32_t)s);
+        p = put_str(p, " ok ");
+        p = put_dec(p, ok);
+        p = put_str(p, " ");
+        p = put_hex(p, hash);
+        p = put_str(p, "\n");
+        *p = 0;
+        out(line);
     }
     out("done\n");
     /* on the target, the start-up passes this to SYS_EXIT_EXTENDED */

@@ -8,6 +8,10 @@
  * - rendering the frame as 10 bands of 24 rows (targets with origin_y = 24k,
  *   the band renderer's use) gives the same bytes as the full frame;
  * - fxl_host_crc_target equals the CRC of the raw frame bytes.
+ * Then it draws the stress cases (determinism/det_stress.h: random
+ * triangles with extreme inputs) and checks that none changed a pixel or a
+ * depth value outside its clip rectangle, nor anything at all when its draw
+ * returned an error.
  * It writes the CRC list to $FXL_TEST_OUTPUT_DIR/determinism_crcs.txt in the
  * format of determinism/det_main.c; host_sim/scripts/determinism.sh compares
  * it with gcc -O0 / -O2 / -Os, clang -O2 and Cortex-M4 / M0+ (qemu) builds
@@ -31,6 +35,7 @@
 #include "textures.h"
 #include "unity.h"
 #include "../determinism/det_entries.h"
+#include "../determinism/det_stress.h"
 
 #define BAND 24
 
@@ -39,6 +44,8 @@ void tearDown(void) {}
 
 static uint16_t full[DET_W * DET_H], again[DET_W * DET_H], banded[DET_W * DET_H];
 static uint16_t depth[DET_W * DET_H];
+/* the CRC list, open from the first test to the last */
+static FILE *crc_list;
 
 /* Frame procedure of det_entries.h into rows [y0, y0 + h) of buf, native
  * RGB565 (drawn in the byte order this build draws, left_out.h). */
@@ -153,7 +160,7 @@ static FILE *open_list(void)
 
 void test_determinism_repeat_bands_and_crc_list(void)
 {
-    FILE *list = open_list();
+    FILE *list = crc_list = open_list();
     size_t si;
     int k, frames = 0, refused = 0;
     char note[100];
@@ -236,8 +243,6 @@ void test_determinism_repeat_bands_and_crc_list(void)
         }
         pscene_free(&p);
     }
-    fprintf(list, "done\n");
-    fclose(list);
     snprintf(note, sizeof note, "%d of %d frames checked, %d need features this build lacks",
              frames, frames + refused, refused);
     TEST_MESSAGE(note);
@@ -246,9 +251,63 @@ void test_determinism_repeat_bands_and_crc_list(void)
     TEST_ASSERT_GREATER_OR_EQUAL(3 * 4, frames);
 }
 
+/* Every stress case: nothing outside the clip rectangle changes (pixels,
+ * and depth where the target took the buffer), nothing at all when the
+ * draw fails; its line in the list as det_main prints it. */
+void test_determinism_stress_cases_write_only_inside_their_clip(void)
+{
+    static det_stress_assets_t assets;
+    static uint16_t px[DET_STRESS_BUF], dp[DET_STRESS_BUF], px0[DET_STRESS_BUF], dp0[DET_STRESS_BUF];
+    uint32_t k, drawn = 0, refused = 0, pixels = 0;
+    char note[120];
+
+    TEST_ASSERT_NOT_NULL(crc_list);
+    det_stress_assets_init(&assets);
+    for (k = 0; k < DET_STRESS_CASES; k += DET_STRESS_LINE) {
+        uint32_t j, hash = 0, ok = 0;
+        for (j = k; j < k + DET_STRESS_LINE; j++) {
+            det_stress_case_t c;
+            fxl_status_t st;
+            int32_t i;
+            char msg[120];
+            det_stress_make(j, &assets, px, dp, &c);
+            memcpy(px0, px, sizeof px);
+            memcpy(dp0, dp, sizeof dp);
+            hash = det_stress_draw(&c, hash, &st);
+            ok += st == FXL_OK;
+            refused += st != FXL_OK;
+            for (i = 0; i < c.buf_len; i++) {
+                /* the buffer's geometry as the case made it, not as tg says */
+                const int32_t col = i % c.stride, row = i / c.stride;
+                const int32_t fx = c.origin_x + col, fy = c.origin_y + row;
+                const int inside = st == FXL_OK && fx >= c.clip.x0 && fx < c.clip.x1 && fy >= c.clip.y0 &&
+                                   fy < c.clip.y1;
+                if (inside) {
+                    pixels += px[i] != px0[i];
+                    continue;
+                }
+                snprintf(msg, sizeof msg, "stress case %lu (%s): buffer element %ld (row %ld, column %ld)",
+                         (unsigned long)j, fxl_status_name(st), (long)i, (long)row, (long)col);
+                TEST_ASSERT_EQUAL_HEX32_MESSAGE(px0[i], px[i], msg);
+                TEST_ASSERT_EQUAL_HEX32_MESSAGE(dp0[i], dp[i], msg);
+            }
+            drawn += st == FXL_OK;
+        }
+        fprintf(crc_list, "stress %lu ok %lu %08lx\n", (unsigned long)k, (unsigned long)ok, (unsigned long)hash);
+    }
+    fprintf(crc_list, "done\n");
+    fclose(crc_list);
+    crc_list = NULL;
+    snprintf(note, sizeof note, "%lu stress cases: %lu drawn, %lu refused, %lu pixels changed",
+             (unsigned long)DET_STRESS_CASES, (unsigned long)drawn, (unsigned long)refused, (unsigned long)pixels);
+    TEST_MESSAGE(note);
+    TEST_ASSERT_EQUAL_UINT32(DET_STRESS_CASES, drawn + refused);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_determinism_repeat_bands_and_crc_list);
+    RUN_TEST(test_determinism_stress_cases_write_only_inside_their_clip);
     return UNITY_END();
 }
