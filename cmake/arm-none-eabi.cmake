@@ -33,16 +33,7 @@ if(FXL_ARM_TOOLCHAIN_DIR)
   set(_fxl_prefix "${FXL_ARM_TOOLCHAIN_DIR}/arm-none-eabi-")
 endif()
 
-set(CMAKE_C_COMPILER   "${_fxl_prefix}gcc")
-set(CMAKE_CXX_COMPILER "${_fxl_prefix}g++")
-set(CMAKE_ASM_COMPILER "${_fxl_prefix}gcc")
-# Full paths for the binutils so CMake and our targets agree on which to use.
-find_program(CMAKE_AR      "${_fxl_prefix}ar")
-find_program(CMAKE_RANLIB  "${_fxl_prefix}ranlib")
-find_program(CMAKE_OBJCOPY "${_fxl_prefix}objcopy")
-find_program(CMAKE_OBJDUMP "${_fxl_prefix}objdump")
-find_program(CMAKE_NM      "${_fxl_prefix}nm")
-find_program(CMAKE_SIZE    "${_fxl_prefix}size")
+include("${CMAKE_CURRENT_LIST_DIR}/fxl_cross_tools.cmake")
 
 # CPU -> code generation flags. Cores without an FPU use the soft-float ABI;
 # the M4/M7 FPUs are single/double precision and use the hard-float ABI.
@@ -66,10 +57,3 @@ set(CMAKE_CXX_FLAGS_INIT "${_fxl_cpu_flags} -Os -ffunction-sections -fdata-secti
 set(CMAKE_ASM_FLAGS_INIT "${_fxl_cpu_flags}")
 # For firmware executables (examples/): newlib-nano without OS stubs' syscalls.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "--specs=nano.specs --specs=nosys.specs -Wl,--gc-sections")
-
-# Never pick up host libraries or headers; programs (code generators) are
-# still found on the host.
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)

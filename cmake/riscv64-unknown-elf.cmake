@@ -52,15 +52,7 @@ if(FXL_RISCV_TOOLCHAIN_DIR)
   set(_fxl_prefix "${FXL_RISCV_TOOLCHAIN_DIR}/${FXL_RISCV_PREFIX}")
 endif()
 
-set(CMAKE_C_COMPILER   "${_fxl_prefix}gcc")
-set(CMAKE_CXX_COMPILER "${_fxl_prefix}g++")
-set(CMAKE_ASM_COMPILER "${_fxl_prefix}gcc")
-find_program(CMAKE_AR      "${_fxl_prefix}ar")
-find_program(CMAKE_RANLIB  "${_fxl_prefix}ranlib")
-find_program(CMAKE_OBJCOPY "${_fxl_prefix}objcopy")
-find_program(CMAKE_OBJDUMP "${_fxl_prefix}objdump")
-find_program(CMAKE_NM      "${_fxl_prefix}nm")
-find_program(CMAKE_SIZE    "${_fxl_prefix}size")
+include("${CMAKE_CURRENT_LIST_DIR}/fxl_cross_tools.cmake")
 
 # medany: code and data may live anywhere (flash at 0x0, 0x08000000 or
 # 0x20000000 on common parts, RAM elsewhere), not only in the low or high
@@ -70,8 +62,3 @@ set(CMAKE_C_FLAGS_INIT   "${_fxl_cpu_flags} -Os -ffunction-sections -fdata-secti
 set(CMAKE_CXX_FLAGS_INIT "${_fxl_cpu_flags} -Os -ffunction-sections -fdata-sections")
 set(CMAKE_ASM_FLAGS_INIT "${_fxl_cpu_flags}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
-
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)

@@ -10,26 +10,10 @@
 extern uint32_t _sidata, _sdata, _edata, _sbss, _ebss, _estack;
 int main(void);
 
-void *memcpy(void *dst, const void *src, size_t n);
-void *memset(void *dst, int c, size_t n);
 #include "mps2.h"
+#include "fw_mem.h"
 void Reset_Handler(void);
 void Default_Handler(void);
-
-void *memcpy(void *dst, const void *src, size_t n)
-{
-    uint8_t *d = (uint8_t *)dst;
-    const uint8_t *s = (const uint8_t *)src;
-    while (n--) *d++ = *s++;
-    return dst;
-}
-
-void *memset(void *dst, int c, size_t n)
-{
-    uint8_t *d = (uint8_t *)dst;
-    while (n--) *d++ = (uint8_t)c;
-    return dst;
-}
 
 /* ARM semihosting: operation in r0, argument block in r1, BKPT 0xAB. */
 static int semihost(int op, void *arg)

@@ -7,12 +7,11 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "mps2.h"
+#include "fw_mem.h"
 
 extern uint32_t _sbss, _ebss;
 int main(void);
 void fw_rv_reset(void);
-void *memcpy(void *dst, const void *src, size_t n);
-void *memset(void *dst, int c, size_t n);
 
 /* _start: gp with relaxation off (it must not be addressed through itself),
  * the stack at the top of RAM (16-byte aligned, as the ABI wants), then C. */
@@ -28,21 +27,6 @@ __asm__(".section .text.start, \"ax\"\n"
         "    call fw_rv_reset\n"
         "1:  j 1b\n"
         ".text\n");
-
-void *memcpy(void *dst, const void *src, size_t n)
-{
-    uint8_t *d = (uint8_t *)dst;
-    const uint8_t *s = (const uint8_t *)src;
-    while (n--) *d++ = *s++;
-    return dst;
-}
-
-void *memset(void *dst, int c, size_t n)
-{
-    uint8_t *d = (uint8_t *)dst;
-    while (n--) *d++ = (uint8_t)c;
-    return dst;
-}
 
 /* RISC-V semihosting: operation in a0, argument in a1, and EBREAK between
  * the two marker instructions (slli x0, x0, 0x1f before, srai x0, x0, 7

@@ -55,7 +55,33 @@ check() {
 }
 
 result=0
-have_tools() { local t; for t in "$@"; do command -v "$t" >/dev/null 2>&1 || return 1; done; }
+
+# run_leg NAME PACKAGES FUNCTION TOOL...: FUNCTION when every TOOL exists,
+# else a SKIP line naming the Debian PACKAGES; a failure sets result.
+run_leg() {
+    local name=$1 pkgs=$2 fn=$3 t
+    shift 3
+    for t in "$@"; do
+        if ! command -v "$t" >/dev/null 2>&1; then
+            echo "firmware.sh: SKIP: $name: $t not found (apt-get install $pkgs)"
+            return 0
+        fi
+    done
+    "$fn" || result=1
+}
+
+# semihosted OUT QEMU ARGS...: run a semihosting image, its output to OUT
+# (a chardev file: with -nographic and stdout redirected to a file, qemu
+# 7.2 was seen to drop the tail of the output); returns qemu's status.
+semihosted() {
+    local out=$1 qemu=$2 status=0
+    shift 2
+    rm -f "$out"
+    timeout "${FXL_FW_TIMEOUT:-120}" "$qemu" "$@" -display none -monitor none -serial none \
+        -chardev file,id=semi,path="$out" -semihosting-config enable=on,target=native,chardev=semi || status=$?
+    echo "(exit status $status)"
+    return $status
+}
 
 # ---- Cortex-M4 -----------------------------------------------------------------------
 m4_leg() {
@@ -74,14 +100,9 @@ m4_leg() {
     fi
     [ -f "$elf" ] || { echo "firmware.sh: $elf was not built" >&2; return 1; }
 
-    # Semihosting output goes to a chardev file: with -nographic and stdout
-    # redirected to a file, qemu 7.2 was seen to drop the tail of the output.
-    status=0
-    timeout "${FXL_FW_TIMEOUT:-120}" qemu-system-arm -M mps2-an386 -nographic -monitor none \
-        -serial none -chardev file,id=semi,path="$tmp/out.txt" \
-        -semihosting-config enable=on,target=native,chardev=semi -kernel "$elf" || status=$?
+    local status=0
+    semihosted "$tmp/out.txt" qemu-system-arm -M mps2-an386 -kernel "$elf" || status=$?
     cat "$tmp/out.txt"
-    echo "(exit status $status)"
 
     if [ "$update" -eq 1 ]; then
         if [ "$status" -ne 0 ] || ! grep -q '^status ok' "$tmp/out.txt"; then
@@ -98,36 +119,22 @@ m4_leg() {
     [ "$status" -eq 0 ] && check "Cortex-M4" "$tmp/out.txt"
 }
 
-if have_tools arm-none-eabi-gcc qemu-system-arm; then
-    m4_leg || result=1
-else
-    echo "firmware.sh: SKIP: Cortex-M4: arm-none-eabi-gcc or qemu-system-arm not found" \
-         "(apt-get install gcc-arm-none-eabi qemu-system-arm)"
-fi
+run_leg "Cortex-M4" "gcc-arm-none-eabi qemu-system-arm" m4_leg arm-none-eabi-gcc qemu-system-arm
 
 # ---- RV32IMAC ------------------------------------------------------------------------
 # The same sources with the RISC-V start-up, built directly (the example's
 # CMake target is the M4 board's), at -Os as `make firmware` builds the core.
 rv_leg() {
-    local c=examples/common elf_rv="$tmp/rv_band.elf" status=0
+    local c=examples/common elf_rv="$tmp/rv_band.elf"
     echo "== RV32IMAC -Os on qemu-system-riscv32 -M virt"
     riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib -Os -march=rv32imac -mabi=ilp32 \
         -mcmodel=medany -Wall -Wextra -Wpedantic -Werror -ffunction-sections -fdata-sections \
         -Iinclude -Isrc -Iport -I"$c" -T "$c/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
         examples/m4_band/main.c "$c/fw_app.c" "$c/fw_scenes.c" "$c/virt_rv_startup.c" src/*.c port/*.c \
         -lgcc -o "$elf_rv" || return 1
-    rm -f "$tmp/out_rv.txt"
-    timeout "${FXL_FW_TIMEOUT:-120}" qemu-system-riscv32 -M virt -bios none -display none -monitor none \
-        -serial none -chardev file,id=semi,path="$tmp/out_rv.txt" \
-        -semihosting-config enable=on,target=native,chardev=semi -kernel "$elf_rv" || status=$?
-    echo "(exit status $status)"
-    [ "$status" -eq 0 ] && check "RV32IMAC" "$tmp/out_rv.txt"
+    semihosted "$tmp/out_rv.txt" qemu-system-riscv32 -M virt -bios none -kernel "$elf_rv" &&
+        check "RV32IMAC" "$tmp/out_rv.txt"
 }
 
-if have_tools riscv64-unknown-elf-gcc qemu-system-riscv32; then
-    rv_leg || result=1
-else
-    echo "firmware.sh: SKIP: RV32IMAC: riscv64-unknown-elf-gcc or qemu-system-riscv32 not found" \
-         "(apt-get install gcc-riscv64-unknown-elf qemu-system-misc)"
-fi
+run_leg "RV32IMAC" "gcc-riscv64-unknown-elf qemu-system-misc" rv_leg riscv64-unknown-elf-gcc qemu-system-riscv32
 exit $result
