@@ -170,7 +170,8 @@ EOF
 #define FXL_FAST_NO_DEPTH 0
 EOF
     {
-        echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size of libfixel.a"
+        echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size (rv32imac:"
+        echo "# riscv64-unknown-elf-size) of libfixel.a"
         echo "# (every src/*.c module, the 3D front end included); linked: the core code + const data"
         echo "# that one textured fxl_draw_triangle program keeps after --gc-sections (bench/size_main.c),"
         echo "# including runtime: the compiler's helpers (libgcc shifts, multiplies, divisions) it pulls in."
@@ -179,7 +180,17 @@ EOF
         echo "# (FXL_FAST_NATIVE 0, FXL_FAST_NO_DEPTH 0): what one SPI-panel product keeps."
         echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
         printf '%-14s %-4s %-5s %9s %6s %6s %9s %8s\n' cpu opt cfg archive data bss linked runtime
-        for cpu in cortex-m0plus cortex-m4; do
+        cpus=(cortex-m0plus cortex-m4)
+        have riscv64-unknown-elf-gcc && cpus+=(rv32imac)
+        for cpu in "${cpus[@]}"; do
+            # the tools and bench/Makefile arguments of this core
+            if [ "$cpu" = rv32imac ]; then
+                tp=riscv64-unknown-elf-
+                target=(ARCH=riscv MARCH=$cpu MABI=ilp32)
+            else
+                tp=arm-none-eabi-
+                target=(CPU=$cpu)
+            fi
             for opt in -Os -O2; do
                 for cfg in full min panel; do
                     d="$root/$sizew/${cpu#cortex-}$opt-$cfg"
@@ -190,24 +201,24 @@ EOF
                     mkdir -p "$d"
                     extra=()
                     [ "$cfg" = full ] || extra=(CONFIG="$root/$sizew/${cfg}_config.h")
-                    if ! make -s -j 2 -C bench "$d/libfixel.a" CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" \
+                    if ! make -s -j 2 -C bench "$d/libfixel.a" "${target[@]}" OPT=$opt OUT="$d" "${extra[@]}" \
                         >"$d.build.log" 2>&1; then
                         say "footprint: the core does not build for $cpu $opt $cfg (see $d.build.log)"
                         printf '%-14s %-4s %-5s %9s\n' $cpu $opt $cfg "build-failed"
                         continue
                     fi
-                    arm-none-eabi-nm "$d/libfixel.a" >"$d/lib.nm" 2>/dev/null
+                    "${tp}nm" "$d/libfixel.a" >"$d/lib.nm" 2>/dev/null
                     # A link failure (a symbol missing in this configuration) is
                     # reported in the table, not fatal.
-                    if make -s -C bench core CPU=$cpu OPT=$opt OUT="$d" "${extra[@]}" >"$d/link.log" 2>&1; then
-                        arm-none-eabi-nm "$d"/app/*.o >"$d/app.nm" 2>/dev/null
+                    if make -s -C bench core "${target[@]}" OPT=$opt OUT="$d" "${extra[@]}" >"$d/link.log" 2>&1; then
+                        "${tp}nm" "$d"/app/*.o >"$d/app.nm" 2>/dev/null
                         read -r linked _ _ runtime < <(python3 "$scripts/m4_count.py" linked "$d/size.nm" "$d/lib.nm" "$d/app.nm")
                     else
                         linked=-1
                         runtime=-1
                         say "footprint: $cpu $opt $cfg does not link: $(grep -m1 'undefined reference' "$d/link.log" || tail -n 1 "$d/link.log")"
                     fi
-                    arm-none-eabi-size -t "$d/libfixel.a" | tail -n 1 |
+                    "${tp}size" -t "$d/libfixel.a" | tail -n 1 |
                         awk -v c=$cpu -v o=$opt -v g=$cfg -v l="$linked" -v r="$runtime" \
                             '{printf "%-14s %-4s %-5s %9d %6d %6d %9d %8d\n", c, o, g, $1, $2, $3, l, r}'
                 done
@@ -216,7 +227,7 @@ EOF
         echo
         echo "# worst-case stack of one fxl_draw_triangle call (gcc -fcallgraph-info=su, frames summed"
         echo "# along the deepest call chain; libgcc helpers not included)"
-        for cpu in cortex-m0plus cortex-m4; do
+        for cpu in "${cpus[@]}"; do
             for opt in -Os -O2; do
                 d="$root/$sizew/${cpu#cortex-}$opt-full/core"
                 [ -d "$d" ] || continue
