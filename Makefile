@@ -92,7 +92,8 @@ firmware: deps-firmware
 	  dir=build-fw-$$cpu; \
 	  echo "==== firmware: $$cpu in $$dir"; \
 	  $(RUN) $(CMAKE) -S . -B $$dir -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/riscv64-unknown-elf.cmake \
-	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
+	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DFXL_RISCV_PREFIX=$(RV_PREFIX) -DCMAKE_BUILD_TYPE=MinSizeRel \
+	    $(CMAKE_ARGS); \
 	  $(RUN) $(CMAKE) --build $$dir -j $(JOBS); \
 	  archives="$$dir/lib/libfixel.a"; \
 	  if [ -f $$dir/lib/libfixel_port.a ]; then archives="$$archives $$dir/lib/libfixel_port.a"; fi; \

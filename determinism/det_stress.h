@@ -7,7 +7,8 @@
  * saturating coordinates, uv_wide and needle triangles, the generic walk of
  * size-optimised builds, error statuses. These cases reach them on purpose:
  * vertices at INT32 limits, far outside and a sub-pixel apart, 1/w from 1
- * to 2^31 - 1, texture coordinates up to 2^31, every persp mode (AUTO with
+ * to 2^32 - 1 (0 and past 2^31 - 1 refused), texture coordinates up to
+ * 2^31, every persp mode (AUTO with
  * budgets from 1 q16 up), filter, mip and LOD mode, wrap, format, texture
  * environment, shading, depth mode, target format, origin, stride and clip.
  * Each build must produce the same status, counters, pixels and depth;
@@ -172,8 +173,9 @@ static inline int32_t det_stress_uv(uint32_t *s, int wild, int32_t prev)
 }
 
 /* Case k of the list (its own generator state, so any case can be rerun
- * alone): the target over pixels and depth (DET_STRESS_BUF each), filled
- * with DET_STRESS_CANARY, and the draw. */
+ * alone): the target over pixels and depth (DET_STRESS_BUF each, all of
+ * it filled with DET_STRESS_CANARY, so a write past the case's own rows
+ * shows too), and the draw. */
 static inline void det_stress_make(uint32_t k, const det_stress_assets_t *a, uint16_t *pixels, uint16_t *depth,
                                    det_stress_case_t *c)
 {
@@ -195,7 +197,7 @@ static inline void det_stress_make(uint32_t k, const det_stress_assets_t *a, uin
     c->depth = depth;
     c->buf_len = stride * h;
     c->stride = stride;
-    for (i = 0; i < c->buf_len; i++)
+    for (i = 0; i < DET_STRESS_BUF; i++)
         pixels[i] = depth[i] = DET_STRESS_CANARY;
     (void)fxl_target_init(&c->tg, pixels,  w, h, stride,
                           det_stress_below(s, 2u) ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565);

@@ -36,7 +36,10 @@ void fw_semihost_exit(int code)
     block[0] = 0x20026u;
     block[1] = (uint32_t)code;
     (void)semihost(0x20, block); /* SYS_EXIT_EXTENDED */
-    (void)semihost(0x18, (void *)(uintptr_t)0x20026u);
+    /* Where that call is missing, SYS_EXIT, which on 32-bit ARM takes only
+     * a reason: RunTimeErrorUnknown for a failure, so it cannot read as
+     * success. */
+    (void)semihost(0x18, (void *)(uintptr_t)(code ? 0x20023u : 0x20026u));
     for (;;) {
     }
 }

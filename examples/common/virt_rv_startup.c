@@ -1,7 +1,8 @@
 /* virt_rv_startup.c - the bare-metal start-up for images that run on
  * qemu-system-riscv32/64 -M virt -bios none (determinism/: the gallery
- * CRCs on RISC-V): stack and global pointer, .bss clear, semihosting output
- * and exit, and the memcpy/memset the compiler may emit (no libc here).
+ * CRCs on RISC-V): stack and global pointer, a trap handler, .bss clear,
+ * semihosting output and exit, and the memcpy/memset the compiler may emit
+ * (no libc here).
  * It offers the same two calls as mps2_startup.c (mps2.h), so a program
  * written against them runs on either. */
 #include <stddef.h>
@@ -60,7 +61,56 @@ void fw_semihost_exit(int code)
     block[0] = 0x20026u;
     block[1] = (uintptr_t)(unsigned)code;
     (void)fw_rv_semihost(0x20, block);
-    (void)fw_rv_semihost(0x18, (void *)(uintptr_t)0x20026u); /* SYS_EXIT, if that one is missing */
+    /* Where that call is missing, SYS_EXIT: on RV64 it reads the same
+     * block; on RV32 it takes only a reason, so a failure must say
+     * RunTimeErrorUnknown (0x20023), not ApplicationExit (exit 0). */
+#if UINTPTR_MAX > 0xFFFFFFFFu
+    (void)fw_rv_semihost(0x18, block);
+#else
+    (void)fw_rv_semihost(0x18, (void *)(uintptr_t)(code ? 0x20023u : 0x20026u));
+#endif
+    for (;;) {
+    }
+}
+
+static unsigned long read_mcause(void)
+{
+    unsigned long v;
+    __asm__ volatile(".option push\n\t.option arch, +zicsr\n\tcsrr %0, mcause\n\t.option pop" : "=r"(v));
+    return v;
+}
+
+static unsigned long read_mepc(void)
+{
+    unsigned long v;
+    __asm__ volatile(".option push\n\t.option arch, +zicsr\n\tcsrr %0, mepc\n\t.option pop" : "=r"(v));
+    return v;
+}
+
+static void put_hex(char *p, unsigned long v)
+{
+    int i;
+    for (i = (int)sizeof v * 2 - 1; i >= 0; i--)
+        *p++ = "0123456789abcdef"[(v >> (4 * i)) & 15u];
+    *p = 0;
+}
+
+/* Every trap (an illegal instruction, a faulting or misaligned access) ends
+ * the run with status 2 and its cause, as mps2_startup.c's Default_Handler
+ * does: without it the core would jump to address 0 and fault there until
+ * the caller's timeout. mtvec's direct mode wants it 4-byte aligned. */
+void fw_rv_trap(void) __attribute__((aligned(4), noreturn));
+void fw_rv_trap(void)
+{
+    char hex[2 * sizeof(unsigned long) + 1];
+    fw_semihost_write0("fault: mcause 0x");
+    put_hex(hex, read_mcause());
+    fw_semihost_write0(hex);
+    fw_semihost_write0(" mepc 0x");
+    put_hex(hex, read_mepc());
+    fw_semihost_write0(hex);
+    fw_semihost_write0("\n");
+    fw_semihost_exit(2);
     for (;;) {
     }
 }
@@ -68,6 +118,8 @@ void fw_semihost_exit(int code)
 void fw_rv_reset(void)
 {
     uint32_t *p;
+    const uintptr_t trap = (uintptr_t)fw_rv_trap;
+    __asm__ volatile(".option push\n\t.option arch, +zicsr\n\tcsrw mtvec, %0\n\t.option pop" : : "r"(trap));
     for (p = &_sbss; p < &_ebss; p++) *p = 0;
     fw_semihost_exit(main());
 }

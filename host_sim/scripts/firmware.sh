@@ -80,6 +80,7 @@ semihosted() {
     timeout "${FXL_FW_TIMEOUT:-120}" "$qemu" "$@" -display none -monitor none -serial none \
         -chardev file,id=semi,path="$out" -semihosting-config enable=on,target=native,chardev=semi || status=$?
     echo "(exit status $status)"
+    [ "$status" -eq 0 ] || echo "firmware.sh: FAIL: $qemu exited with status $status (124 = timeout)" >&2
     return $status
 }
 
@@ -91,11 +92,15 @@ m4_leg() {
         if [ ! -f "$dir/CMakeCache.txt" ]; then
             env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
                 cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/arm-none-eabi.cmake" \
-                -DFXL_BUILD_HOST=OFF -DFXL_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
+                -DFXL_BUILD_HOST=OFF -DFXL_CPU=cortex-m4 -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null ||
+                { echo "firmware.sh: FAIL: Cortex-M4: cmake configure failed" >&2; return 1; }
         fi
-        # Builds the ELF and runs examples/elf_report.sh (size, no floating point).
+        # Builds the ELF and runs examples/elf_report.sh (size, no floating
+        # point). `|| return`: set -e does not reach into a function called
+        # from `||` (run_leg), and an old ELF must not pass for a new one.
         env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
-            cmake --build "$dir" -j "${JOBS:-2}" --target m4_band_report
+            cmake --build "$dir" -j "${JOBS:-2}" --target m4_band_report ||
+            { echo "firmware.sh: FAIL: Cortex-M4: the build or elf_report.sh failed" >&2; return 1; }
         elf=$dir/bin/m4_band.elf
     fi
     [ -f "$elf" ] || { echo "firmware.sh: $elf was not built" >&2; return 1; }
@@ -131,7 +136,7 @@ rv_leg() {
         -mcmodel=medany -Wall -Wextra -Wpedantic -Werror -ffunction-sections -fdata-sections \
         -Iinclude -Isrc -Iport -I"$c" -T "$c/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
         examples/m4_band/main.c "$c/fw_app.c" "$c/fw_scenes.c" "$c/virt_rv_startup.c" src/*.c port/*.c \
-        -lgcc -o "$elf_rv" || return 1
+        -lgcc -o "$elf_rv" || { echo "firmware.sh: FAIL: RV32IMAC: the build failed" >&2; return 1; }
     semihosted "$tmp/out_rv.txt" qemu-system-riscv32 -M virt -bios none -kernel "$elf_rv" &&
         check "RV32IMAC" "$tmp/out_rv.txt"
 }
