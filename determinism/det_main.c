@@ -6,8 +6,9 @@
  * the target: formatting is done here. Output lines: "<scene> <variant>
  * <status> <crc32 hex>", the screen-space frames first, then the front-end
  * frames (det_entries.h), then one line a DET_STRESS_LINE stress cases
- * (det_stress.h), "stress <first case> ok <cases drawn FXL_OK> <hash hex>",
- * then "done". Data
+ * (det_stress.h), "stress <first case> ok <cases drawn FXL_OK> <hash hex>"
+ * for triangles and "stress_fe ..." for meshes through the front end, then
+ * "done". Data
  * (vertices, meshes, front-end parameters, textures) comes from det_data.h,
  * generated on the host by gen_data.c.
  */
@@ -35,6 +36,7 @@ static void out(const char *s)
 static uint16_t frame[DET_W * DET_H];
 static uint16_t depth[DET_W * DET_H];
 static det_stress_assets_t stress_assets;
+static det_stress_fe_case_t stress_fe;
 /* pscene_draw's vertex cache: one entry per vertex of the largest part
  * (56 bytes each, 57 KB for the tunnel's 1025 vertices). */
 static fxl_vcache_entry_t vcache[DET_PIPE_CACHE_MAX];
@@ -190,20 +192,28 @@ int main(void)
         }
     }
     /* the stress cases, in the frame's buffers (each case refills what it
-     * uses), a line a batch so a difference points at its cases */
+     * uses), a line a batch so a difference points at its cases: first
+     * triangles, then meshes through the front end */
     det_stress_assets_init(&stress_assets);
-    for (s = 0; s < DET_STRESS_CASES; s += DET_STRESS_LINE) {
+    for (s = 0; s < DET_STRESS_CASES + DET_STRESS_FE_CASES; s += DET_STRESS_LINE) {
+        const int fe = s >= DET_STRESS_CASES;
+        const int first = fe ? s - DET_STRESS_CASES : s;
         char line[80], *p = line;
         uint32_t hash = 0, ok = 0;
-        for (k = s; k < s + DET_STRESS_LINE; k++) {
-            det_stress_case_t c;
+        for (k = first; k < first + DET_STRESS_LINE; k++) {
             fxl_status_t st;
-            det_stress_make((uint32_t)k, &stress_assets, frame, depth, &c);
-            hash = det_stress_draw(&c, hash, &st);
+            if (fe) {
+                det_stress_fe_make((uint32_t)k, &stress_assets, frame, depth, &stress_fe);
+                hash = det_stress_fe_draw(&stress_fe, hash, &st);
+            } else {
+                det_stress_case_t c;
+                det_stress_make((uint32_t)k, &stress_assets, frame, depth, &c);
+                hash = det_stress_draw(&c, hash, &st);
+            }
             ok += st == FXL_OK;
         }
-        p = put_str(p, "stress ");
-        p = put_dec(p, (uint32_t)s);
+        p = put_str(p, fe ? "stress_fe " : "stress ");
+        p = put_dec(p, (uint32_t)first);
         p = put_str(p, " ok ");
         p = put_dec(p, ok);
         p = put_str(p, " ");

@@ -153,8 +153,8 @@ fi
 
 status=0
 ref="$out/gcc-O2.txt"
-frames=$(grep -v -c -e '^done$' -e '^stress ' "$ref")
-stress=$(grep -c '^stress ' "$ref" || true)
+frames=$(grep -v -c -e '^done$' -e '^stress' "$ref")
+stress=$(grep -c '^stress' "$ref" || true)
 echo
 echo "== comparison against gcc-O2 ($frames frames, $stress lines of stress cases)"
 for name in "${lists[@]}"; do
@@ -189,9 +189,9 @@ if [ "$golden" -eq 0 ]; then
 fi
 # Every frame must draw; stress cases fail on purpose (their lines count
 # the FXL_OK ones and are compared above).
-if grep -v -e '^done$' -e '^stress ' "$ref" | grep -v ' FXL_OK ' >/dev/null; then
+if grep -v -e '^done$' -e '^stress' "$ref" | grep -v ' FXL_OK ' >/dev/null; then
     echo "determinism.sh: some draws failed:" >&2
-    grep -v -e '^done$' -e '^stress ' "$ref" | grep -v ' FXL_OK ' >&2
+    grep -v -e '^done$' -e '^stress' "$ref" | grep -v ' FXL_OK ' >&2
     status=1
 fi
 exit $status

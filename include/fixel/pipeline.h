@@ -341,7 +341,11 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                                void *user, fxl_stats_t *stats);
 /* fxl_pipeline_emit into fxl_draw_triangle(t, d, ...). A target or draw
  * setting every triangle would be refused for (fxl_draw_check) is returned
- * before any vertex is transformed, even when every triangle is culled. */
+ * before any vertex is transformed, even when every triangle is culled.
+ * Any other error (an index past the mesh, a vertex or clipped corner out
+ * of range, a triangle the rasterizer refuses) stops the draw at that
+ * triangle and is returned: the triangles before it stay drawn, as
+ * fxl_pipeline_emit has handed them on. */
 fxl_status_t fxl_mesh_draw(fxl_pipeline_t *p, fxl_target_t *t, const fxl_draw_t *d,
                            const fxl_mesh_t *m, fxl_stats_t *stats);
 
