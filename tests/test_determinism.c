@@ -283,14 +283,54 @@ static uint32_t check_stress_case(const char *kind, uint32_t k, const det_stress
     return changed;
 }
 
+#define STRESS_LINES ((DET_STRESS_CASES + DET_STRESS_FE_CASES) / DET_STRESS_LINE)
+#define STRESS_GOLDEN "golden/stress_hash.txt"
+
+/* The stress lines must equal tests/golden/stress_hash.txt (comments
+ * skipped) line for line: the builds agree with each other (determinism.sh)
+ * and, here, with what the core printed when the file was written, so a
+ * change of its output on extreme inputs is a decision, not an accident. */
+static void check_stress_golden(char got[][64])
+{
+    char path[1024], line[256], msg[2048];
+    FILE *f;
+    int n = 0;
+#ifdef FXL_TEST_SOURCE_DIR
+    snprintf(path, sizeof path, "%s/%s", FXL_TEST_SOURCE_DIR, STRESS_GOLDEN);
+#else
+    snprintf(path, sizeof path, "%s", STRESS_GOLDEN); /* cwd is tests/ */
+#endif
+    f = fopen(path, "r");
+    snprintf(msg, sizeof msg, "cannot read %s", path);
+    TEST_ASSERT_TRUE_MESSAGE(f != NULL, msg);
+    while (fgets(line, sizeof line, f) != NULL) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (line[0] == '#' || line[0] == '\0')
+            continue;
+        if (n < STRESS_LINES && strcmp(line, got[n]) != 0) {
+            fclose(f);
+            snprintf(msg, sizeof msg,
+                     "stress line %d is \"%s\", %s says \"%s\": the core's output on extreme inputs "
+                     "changed; once that is understood, regenerate the file as its header says",
+                     n + 1, got[n], path, line);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        n++;
+    }
+    fclose(f);
+    snprintf(msg, sizeof msg, "%s has %d stress lines, the list %d", path, n, STRESS_LINES);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(STRESS_LINES, n, msg);
+}
+
 /* Every stress case, triangles and then meshes through the front end,
  * held to check_stress_case; its line appended to the list as det_main
- * prints it. */
+ * prints it, and with every feature compared with the golden lines. */
 void test_determinism_stress_cases_write_only_inside_their_clip(void)
 {
     static det_stress_assets_t assets;
     static det_stress_fe_case_t fe_case;
     static uint16_t px[DET_STRESS_BUF], dp[DET_STRESS_BUF], px0[DET_STRESS_BUF], dp0[DET_STRESS_BUF];
+    static char lines[STRESS_LINES][64];
     FILE *list = open_list("a");
     uint32_t k, drawn = 0, pixels = 0, fe_drawn = 0, fe_pixels = 0;
     char note[160];
@@ -323,8 +363,9 @@ void test_determinism_stress_cases_write_only_inside_their_clip(void)
             fe_drawn += ok;
         else
             drawn += ok;
-        fprintf(list, "%s %lu ok %lu %08lx\n", fe ? "stress_fe" : "stress", (unsigned long)first, (unsigned long)ok,
-                (unsigned long)hash);
+        snprintf(lines[k / DET_STRESS_LINE], sizeof lines[0], "%s %lu ok %lu %08lx", fe ? "stress_fe" : "stress",
+                 (unsigned long)first, (unsigned long)ok, (unsigned long)hash);
+        fprintf(list, "%s\n", lines[k / DET_STRESS_LINE]);
     }
     fprintf(list, "done\n");
     fclose(list);
@@ -343,6 +384,7 @@ void test_determinism_stress_cases_write_only_inside_their_clip(void)
         TEST_ASSERT_GREATER_OR_EQUAL(1400000, pixels);
         TEST_ASSERT_GREATER_OR_EQUAL(2500, fe_drawn);
         TEST_ASSERT_GREATER_OR_EQUAL(150000, fe_pixels);
+        check_stress_golden(lines);
     }
 }
 
