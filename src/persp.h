@@ -45,20 +45,21 @@
 #define FXL__SAR_IS_ARITHMETIC ((((int64_t)-5) >> 1) == -3 && (((int32_t)-5) >> 1) == -3)
 
 /* Forced inline where it is a binary search (no CLZ instruction: the
- * Cortex-M0+) outside -Os: GCC sometimes left it out of line there, a
- * call a correction point. Elsewhere it is one or two instructions. */
+ * Cortex-M0+, RISC-V without Zbb) outside -Os: GCC sometimes left it out of
+ * line there, a call a correction point. Elsewhere it is one or two
+ * instructions. */
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__) && !defined(__ARM_FEATURE_CLZ) && !defined(__x86_64__) &&   \
-    !defined(__aarch64__)
+    !defined(__aarch64__) && !defined(__riscv_zbb)
 #define FXL__CLZ_INLINE inline __attribute__((always_inline))
 #else
 #define FXL__CLZ_INLINE inline
 #endif
 static FXL__CLZ_INLINE int fxl__clz64_inline(uint64_t x)
 {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__))
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || (defined(__riscv_zbb) && __riscv_xlen == 64))
     return x ? __builtin_clzll(x) : 64;
-#elif defined(__GNUC__) && defined(__ARM_FEATURE_CLZ)
-    /* two CLZ on the halves, no call */
+#elif defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__riscv_zbb))
+    /* two CLZ on the halves, no call (RV32 Zbb: clz is 32 bits wide) */
     uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
     return hi ? __builtin_clz(hi) : (lo ? 32 + __builtin_clz(lo) : 64);
 #elif !defined(__OPTIMIZE_SIZE__)
@@ -73,7 +74,8 @@ static FXL__CLZ_INLINE int fxl__clz64_inline(uint64_t x)
 
 static inline int fxl__clz32_inline(uint32_t x)
 {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ))
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ) ||            \
+                          defined(__riscv_zbb))
     return x ? __builtin_clz(x) : 32;
 #elif !defined(__OPTIMIZE_SIZE__)
     return x ? fxl__clz32_soft(x) : 32;

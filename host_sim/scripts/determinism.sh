@@ -9,8 +9,9 @@
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
 # qemu-system-arm -M mps2-an386 with semihosting (when both exist),
-# riscv64-unknown-elf-gcc for RV32IMAC (-O2, -Os), RV32I, RV32E and RV64IMAC
-# run on qemu-system-riscv32/64 -M virt (when both exist), and compares each list
+# riscv64-unknown-elf-gcc for RV32IMAC (-O2, -Os, and with Zbb), RV32I, RV32E
+# and RV64IMAC run on qemu-system-riscv32/64 -M virt (when both exist), and
+# compares each list
 # with the one tests/test_determinism wrote (when it has run). Vertex data,
 # meshes, front-end parameters (fixed point) and textures are generated once
 # on the host (determinism/gen_data.c), so every build renders the same
@@ -107,16 +108,21 @@ fi
 
 # RISC-V: bare-metal builds run on qemu-system-riscv32/64 -M virt -bios none
 # with semihosting (examples/common/virt_rv_startup.c), the same output.
-run_riscv() {   # name xlen march mabi opt
-    local name=$1 xlen=$2 march=$3 mabi=$4 opt=$5
-    echo "== $name: riscv64-unknown-elf-gcc -march=$march -mabi=$mabi $opt on qemu-system-riscv$xlen -M virt"
+run_riscv() {   # name xlen march mabi opt [libgcc-march qemu-cpu]
+    local name=$1 xlen=$2 march=$3 mabi=$4 opt=$5 libmarch=${6:-} cpu=${7:-}
+    local libgcc=-lgcc cpuopt=()
+    echo "== $name: riscv64-unknown-elf-gcc -march=$march -mabi=$mabi $opt on qemu-system-riscv$xlen -M virt${cpu:+ -cpu $cpu}"
+    # Debian's multilibs have no Zbb variant and gcc would pick the default
+    # (RV64) libgcc for -march=..._zbb: name the base one's.
+    [ -n "$libmarch" ] && libgcc=$(riscv64-unknown-elf-gcc -march="$libmarch" -mabi="$mabi" -print-libgcc-file-name)
+    [ -n "$cpu" ] && cpuopt=(-cpu "$cpu")
     # shellcheck disable=SC2086
     riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib "$opt" $warn -march="$march" -mabi="$mabi" \
         -mcmodel=medany -ffunction-sections -fdata-sections $inc -I"$root/examples/common" \
         -T "$root/examples/common/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
-        "$root/examples/common/virt_rv_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_$name.elf"
+        "$root/examples/common/virt_rv_startup.c" "$root/determinism/det_main.c" $core "$libgcc" -o "$out/det_$name.elf"
     rm -f "$out/$name.txt"
-    if timeout 900 "qemu-system-riscv$xlen" -M virt -bios none -display none -monitor none -serial none \
+    if timeout 900 "qemu-system-riscv$xlen" -M virt "${cpuopt[@]}" -bios none -display none -monitor none -serial none \
         -semihosting-config enable=on,target=native,chardev=semi \
         -chardev file,id=semi,path="$out/$name.txt" -kernel "$out/det_$name.elf"; then
         :
@@ -140,6 +146,9 @@ if command -v riscv64-unknown-elf-gcc >/dev/null 2>&1 && command -v qemu-system-
     # a 64-bit core that is neither x86-64 nor AArch64: the 64-bit paths
     # without their CLZ builtins
     run_riscv rv64imac-O2 64 rv64imac lp64 -O2
+    # Zbb (bit manipulation): CLZ and CTZ instructions instead of the
+    # binary search
+    run_riscv rv32imac_zbb-O2 32 rv32imac_zbb ilp32 -O2 rv32imac rv32,zbb=true
 else
     echo "== rv32imac-O2: needs riscv64-unknown-elf-gcc and qemu-system-riscv32/64 (apt-get install" \
          "gcc-riscv64-unknown-elf qemu-system-misc); skipped"
