@@ -64,24 +64,29 @@ run: build
 test: build
 	cd $(BUILD_DIR) && $(RUN) $(CTEST) --output-on-failure -j$(CTEST_JOBS)
 
-# One build directory per CPU: build-fw-m0plus, build-fw-m4, ...
+# $(call fw_core,CPU,DIR,TOOLCHAIN FILE,PREFIX,EXTRA CMAKE ARGS): one cross
+# build of the core and the port layer (MinSizeRel), its sizes and the
+# no-libc check; shell text for the loops below (CPU and DIR may be $$vars).
+fw_core = echo "==== firmware: $(1) in $(2)"; \
+  $(RUN) $(CMAKE) -S . -B $(2) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/$(3) \
+    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$(1) $(5) -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
+  $(RUN) $(CMAKE) --build $(2) -j $(JOBS); \
+  archives=""; \
+  for lib in fixel fixel_port; do \
+    if [ -f $(2)/lib/lib$$lib.a ]; then archives="$$archives $(2)/lib/lib$$lib.a"; fi; \
+  done; \
+  if [ -z "$$archives" ]; then \
+    echo "make firmware: no archive was built in $(2)/lib"; \
+    exit 1; \
+  fi; \
+  $(4)size -t $$archives; \
+  NM=$(4)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives
+
+# One build directory per CPU: build-fw-m0plus, build-fw-m4, ...,
+# build-fw-rv32imac.
 firmware: deps-firmware
 	@for cpu in $(FW_CPUS); do \
-	  dir=build-fw-$${cpu#cortex-}; \
-	  echo "==== firmware: $$cpu in $$dir"; \
-	  $(RUN) $(CMAKE) -S . -B $$dir -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/arm-none-eabi.cmake \
-	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
-	  $(RUN) $(CMAKE) --build $$dir -j $(JOBS); \
-	  archives=""; \
-	  for lib in fixel fixel_port; do \
-	    if [ -f $$dir/lib/lib$$lib.a ]; then archives="$$archives $$dir/lib/lib$$lib.a"; fi; \
-	  done; \
-	  if [ -z "$$archives" ]; then \
-	    echo "make firmware: no archive was built in $$dir/lib"; \
-	    exit 1; \
-	  fi; \
-	  $(ARM_PREFIX)size -t $$archives; \
-	  NM=$(ARM_PREFIX)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives; \
+	  $(call fw_core,$$cpu,build-fw-$${cpu#cortex-},arm-none-eabi.cmake,$(ARM_PREFIX),); \
 	done
 	@# RISC-V: optional (the issue's targets are the Cortex-M ones)
 	@if ! command -v $(RV_PREFIX)gcc >/dev/null 2>&1; then \
@@ -89,16 +94,7 @@ firmware: deps-firmware
 	  exit 0; \
 	fi; \
 	for cpu in $(FW_RV_CPUS); do \
-	  dir=build-fw-$$cpu; \
-	  echo "==== firmware: $$cpu in $$dir"; \
-	  $(RUN) $(CMAKE) -S . -B $$dir -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/riscv64-unknown-elf.cmake \
-	    -DFXL_BUILD_HOST=OFF -DFXL_CPU=$$cpu -DFXL_RISCV_PREFIX=$(RV_PREFIX) -DCMAKE_BUILD_TYPE=MinSizeRel \
-	    $(CMAKE_ARGS); \
-	  $(RUN) $(CMAKE) --build $$dir -j $(JOBS); \
-	  archives="$$dir/lib/libfixel.a"; \
-	  if [ -f $$dir/lib/libfixel_port.a ]; then archives="$$archives $$dir/lib/libfixel_port.a"; fi; \
-	  $(RV_PREFIX)size -t $$archives; \
-	  NM=$(RV_PREFIX)nm FXL_FREESTANDING_STRICT=1 scripts/check_freestanding.sh $$archives; \
+	  $(call fw_core,$$cpu,build-fw-$$cpu,riscv64-unknown-elf.cmake,$(RV_PREFIX),-DFXL_RISCV_PREFIX=$(RV_PREFIX)); \
 	done
 
 bench: build

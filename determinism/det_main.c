@@ -195,25 +195,20 @@ int main(void)
      * uses), a line a batch so a difference points at its cases: first
      * triangles, then meshes through the front end */
     det_stress_assets_init(&stress_assets);
-    for (s = 0; s < DET_STRESS_CASES + DET_STRESS_FE_CASES; s += DET_STRESS_LINE) {
-        const int fe = s >= DET_STRESS_CASES;
-        const int first = fe ? s - DET_STRESS_CASES : s;
+    for (s = 0; s < DET_STRESS_ALL; s += DET_STRESS_LINE) {
         char line[80], *p = line;
-        uint32_t hash = 0, ok = 0;
-        for (k = first; k < first + DET_STRESS_LINE; k++) {
+        uint32_t hash = 0, ok = 0, first;
+        (void)det_stress_is_mesh((uint32_t)s, &first);
+        for (k = s; k < s + DET_STRESS_LINE; k++) {
+            det_stress_case_t tri;
             fxl_status_t st;
-            if (fe) {
-                det_stress_fe_make((uint32_t)k, &stress_assets, frame, depth, &stress_fe);
-                hash = det_stress_fe_draw(&stress_fe, hash, &st);
-            } else {
-                det_stress_case_t c;
-                det_stress_make((uint32_t)k, &stress_assets, frame, depth, &c);
-                hash = det_stress_draw(&c, hash, &st);
-            }
+            (void)det_stress_prepare((uint32_t)k, &stress_assets, frame, depth, &tri, &stress_fe);
+            hash = det_stress_run((uint32_t)k, &tri, &stress_fe, hash, &st);
             ok += st == FXL_OK;
         }
-        p = put_str(p, fe ? "stress_fe " : "stress ");
-        p = put_dec(p, (uint32_t)first);
+        p = put_str(p, det_stress_line_name((uint32_t)s));
+        p = put_str(p, " ");
+        p = put_dec(p, first);
         p = put_str(p, " ok ");
         p = put_dec(p, ok);
         p = put_str(p, " ");

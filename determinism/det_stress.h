@@ -494,4 +494,46 @@ static inline uint32_t det_stress_fe_draw(det_stress_fe_case_t *f, uint32_t h, f
     return det_stress_result(&f->c, h, *st, &n);
 }
 
+/* ---- the whole list: triangles 0 .. DET_STRESS_CASES - 1, then meshes ---- */
+
+#define DET_STRESS_ALL (DET_STRESS_CASES + DET_STRESS_FE_CASES)
+
+/* Case n of the whole list is a mesh (1) or a triangle (0); *index is its
+ * number among its kind, which makes it (det_stress_make, _fe_make). */
+static inline int det_stress_is_mesh(uint32_t n, uint32_t *index)
+{
+    const int mesh = n >= DET_STRESS_CASES;
+    *index = mesh ? n - DET_STRESS_CASES : n;
+    return mesh;
+}
+
+/* The name of a list line ("stress" or "stress_fe") for cases from n. */
+static inline const char *det_stress_line_name(uint32_t n)
+{
+    return n >= DET_STRESS_CASES ? "stress_fe" : "stress";
+}
+
+/* Makes case n of the whole list in the caller's buffers, in *tri or *mesh
+ * by its kind; returns its target and settings. Callers may look at the
+ * buffers before det_stress_run draws it. */
+static inline det_stress_case_t *det_stress_prepare(uint32_t n, const det_stress_assets_t *a, uint16_t *pixels,
+                                                    uint16_t *depth, det_stress_case_t *tri, det_stress_fe_case_t *mesh)
+{
+    uint32_t k;
+    if (det_stress_is_mesh(n, &k)) {
+        det_stress_fe_make(k, a, pixels, depth, mesh);
+        return &mesh->c;
+    }
+    det_stress_make(k, a, pixels, depth, tri);
+    return tri;
+}
+
+/* Draws case n, as det_stress_prepare made it, and folds the result into h;
+ * the status in *st. */
+static inline uint32_t det_stress_run(uint32_t n, det_stress_case_t *tri, det_stress_fe_case_t *mesh, uint32_t h,
+                                      fxl_status_t *st)
+{
+    return n >= DET_STRESS_CASES ? det_stress_fe_draw(mesh, h, st) : det_stress_draw(tri, h, st);
+}
+
 #endif

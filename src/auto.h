@@ -188,9 +188,10 @@ static inline int fxl__auto_fit_quad(const fxl__tri_t *tri, int32_t t_row, int64
 
 /* Trailing zeros of x != 0. GCC's builtin is one or two instructions
  * where the core counts leading zeros (x86-64, AArch64, ARMv7-M: RBIT and
- * CLZ; RISC-V with Zbb: CTZ); elsewhere (Cortex-M0+, RISC-V without Zbb) it calls libgcc's
- * __ctzsi2, outside what a freestanding core may reference, so there the
- * lowest set bit's leading zeros are counted in C (clz.h). */
+ * CLZ; RISC-V with Zbb: CTZ); elsewhere (Cortex-M0+, RISC-V without Zbb)
+ * it calls libgcc's __ctzsi2, outside what a freestanding core may
+ * reference, so there the lowest set bit's leading zeros are counted in C
+ * (clz.h). */
 static inline int fxl__ctz32(uint32_t x)
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_FEATURE_CLZ) ||            \

@@ -257,8 +257,8 @@ void test_determinism_repeat_bands_and_crc_list(void)
  * error (pipeline.h). px0, dp0 hold the buffers as the draw found them (a
  * depth band the case cleared is 0 inside its clip). Returns the pixels the
  * draw changed. */
-static uint32_t check_stress_case(const char *kind, uint32_t k, const det_stress_case_t *c, fxl_status_t st,
-                                  int mesh, const uint16_t *px0, const uint16_t *dp0)
+static uint32_t check_stress_case(uint32_t k, const det_stress_case_t *c, fxl_status_t st, int mesh,
+                                  const uint16_t *px0, const uint16_t *dp0)
 {
     uint32_t changed = 0;
     int32_t i;
@@ -275,7 +275,8 @@ static uint32_t check_stress_case(const char *kind, uint32_t k, const det_stress
         }
         if (c->pixels[i] == px0[i] && c->depth[i] == dp0[i])
             continue; /* the message only for a failure: 20,000 cases x 7,168 elements */
-        snprintf(msg, sizeof msg, "%s case %lu (%s): buffer element %ld (row %ld, column %ld)", kind,
+        snprintf(msg, sizeof msg, "%s case %lu (%s): buffer element %ld (row %ld, column %ld)",
+                 mesh ? "front-end stress" : "stress",
                  (unsigned long)k, fxl_status_name(st), (long)i, (long)row, (long)col);
         TEST_ASSERT_EQUAL_HEX32_MESSAGE(px0[i], c->pixels[i], msg);
         TEST_ASSERT_EQUAL_HEX32_MESSAGE(dp0[i], c->depth[i], msg);
@@ -283,7 +284,7 @@ static uint32_t check_stress_case(const char *kind, uint32_t k, const det_stress
     return changed;
 }
 
-#define STRESS_LINES ((DET_STRESS_CASES + DET_STRESS_FE_CASES) / DET_STRESS_LINE)
+#define STRESS_LINES (DET_STRESS_ALL / DET_STRESS_LINE)
 #define STRESS_GOLDEN "golden/stress_hash.txt"
 
 /* The stress lines must equal tests/golden/stress_hash.txt (comments
@@ -328,42 +329,32 @@ static void check_stress_golden(char got[][64])
 void test_determinism_stress_cases_write_only_inside_their_clip(void)
 {
     static det_stress_assets_t assets;
-    static det_stress_fe_case_t fe_case;
+    static det_stress_fe_case_t mesh_case;
     static uint16_t px[DET_STRESS_BUF], dp[DET_STRESS_BUF], px0[DET_STRESS_BUF], dp0[DET_STRESS_BUF];
     static char lines[STRESS_LINES][64];
     FILE *list = open_list("a");
-    uint32_t k, drawn = 0, pixels = 0, fe_drawn = 0, fe_pixels = 0;
+    uint32_t k, drawn[2] = {0, 0}, pixels[2] = {0, 0}; /* [0] triangles, [1] meshes */
     char note[160];
 
     TEST_ASSERT_TRUE_MESSAGE(list != NULL, "cannot append to determinism_crcs.txt in FXL_TEST_OUTPUT_DIR");
     det_stress_assets_init(&assets);
-    for (k = 0; k < DET_STRESS_CASES + DET_STRESS_FE_CASES; k += DET_STRESS_LINE) {
-        const int fe = k >= DET_STRESS_CASES;
-        const uint32_t first = fe ? k - DET_STRESS_CASES : k;
-        uint32_t j, hash = 0, ok = 0;
-        for (j = first; j < first + DET_STRESS_LINE; j++) {
-            det_stress_case_t tri_case, *c = fe ? &fe_case.c : &tri_case;
+    for (k = 0; k < DET_STRESS_ALL; k += DET_STRESS_LINE) {
+        uint32_t j, first, hash = 0, ok = 0;
+        const int mesh = det_stress_is_mesh(k, &first);
+        for (j = k; j < k + DET_STRESS_LINE; j++) {
+            det_stress_case_t tri_case;
+            const det_stress_case_t *c = det_stress_prepare(j, &assets, px, dp, &tri_case, &mesh_case);
             fxl_status_t st;
-            uint32_t changed;
-            if (fe)
-                det_stress_fe_make(j, &assets, px, dp, &fe_case);
-            else
-                det_stress_make(j, &assets, px, dp, &tri_case);
+            uint32_t index;
             memcpy(px0, px, sizeof px);
             memcpy(dp0, dp, sizeof dp);
-            hash = fe ? det_stress_fe_draw(&fe_case, hash, &st) : det_stress_draw(&tri_case, hash, &st);
+            hash = det_stress_run(j, &tri_case, &mesh_case, hash, &st);
             ok += st == FXL_OK;
-            changed = check_stress_case(fe ? "front-end stress" : "stress", j, c, st, fe, px0, dp0);
-            if (fe)
-                fe_pixels += changed;
-            else
-                pixels += changed;
+            (void)det_stress_is_mesh(j, &index);
+            pixels[mesh] += check_stress_case(index, c, st, mesh, px0, dp0);
         }
-        if (fe)
-            fe_drawn += ok;
-        else
-            drawn += ok;
-        snprintf(lines[k / DET_STRESS_LINE], sizeof lines[0], "%s %lu ok %lu %08lx", fe ? "stress_fe" : "stress",
+        drawn[mesh] += ok;
+        snprintf(lines[k / DET_STRESS_LINE], sizeof lines[0], "%s %lu ok %lu %08lx", det_stress_line_name(k),
                  (unsigned long)first, (unsigned long)ok, (unsigned long)hash);
         fprintf(list, "%s\n", lines[k / DET_STRESS_LINE]);
     }
@@ -371,19 +362,19 @@ void test_determinism_stress_cases_write_only_inside_their_clip(void)
     fclose(list);
     snprintf(note, sizeof note,
              "%lu triangle cases: %lu drawn, %lu pixels changed; %lu mesh cases: %lu drawn, %lu pixels changed",
-             (unsigned long)DET_STRESS_CASES, (unsigned long)drawn, (unsigned long)pixels,
-             (unsigned long)DET_STRESS_FE_CASES, (unsigned long)fe_drawn, (unsigned long)fe_pixels);
+             (unsigned long)DET_STRESS_CASES, (unsigned long)drawn[0], (unsigned long)pixels[0],
+             (unsigned long)DET_STRESS_FE_CASES, (unsigned long)drawn[1], (unsigned long)pixels[1]);
     TEST_MESSAGE(note);
     /* The cases must reach the span loops, or the list compares nothing.
      * With every feature: 13,174 triangle cases draw and change 1,689,308
      * pixels, 2,773 mesh cases draw and change 190,357 (min builds without
      * the generic walk refuse all but a few). */
-    TEST_ASSERT_GREATER_OR_EQUAL(1, drawn);
+    TEST_ASSERT_GREATER_OR_EQUAL(1, drawn[0]);
     if (FXL_HAVE_DEPTH && FXL_HAVE_BILINEAR && FXL_HAVE_MIPMAP && FXL_HAVE_AUTO && FXL_HAVE_GENERIC) {
-        TEST_ASSERT_GREATER_OR_EQUAL(12500, drawn);
-        TEST_ASSERT_GREATER_OR_EQUAL(1400000, pixels);
-        TEST_ASSERT_GREATER_OR_EQUAL(2500, fe_drawn);
-        TEST_ASSERT_GREATER_OR_EQUAL(150000, fe_pixels);
+        TEST_ASSERT_GREATER_OR_EQUAL(12500, drawn[0]);
+        TEST_ASSERT_GREATER_OR_EQUAL(1400000, pixels[0]);
+        TEST_ASSERT_GREATER_OR_EQUAL(2500, drawn[1]);
+        TEST_ASSERT_GREATER_OR_EQUAL(150000, pixels[1]);
         check_stress_golden(lines);
     }
 }

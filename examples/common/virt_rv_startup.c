@@ -1,8 +1,8 @@
 /* virt_rv_startup.c - the bare-metal start-up for images that run on
  * qemu-system-riscv32/64 -M virt -bios none (determinism/, bench/ and the
- * band example in firmware.sh): stack and global pointer, a trap handler, .bss clear,
- * semihosting output and exit, and the memcpy/memset the compiler may emit
- * (no libc here).
+ * band example in firmware.sh): stack and global pointer, a trap handler,
+ * .bss clear, semihosting output and exit, and the memcpy/memset the
+ * compiler may emit (no libc here).
  * It offers the same two calls as mps2_startup.c (mps2.h), so a program
  * written against them runs on either. */
 #include <stddef.h>

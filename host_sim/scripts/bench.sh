@@ -105,13 +105,12 @@ fi
 m4_counts=""
 m0_counts=""
 footprint="$out/footprint.txt"
+# shellcheck source=host_sim/scripts/bare_metal.sh
+. "$scripts/bare_metal.sh"
 qemu_run() { # elf fw_out [extra qemu args...]
     local elf=$1 fw=$2
     shift 2
-    rm -f "$fw"
-    timeout 600 qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
-        -chardev file,id=semi,path="$fw" -semihosting-config enable=on,target=native,chardev=semi \
-        "$@" -kernel "$elf"
+    fxl_semihosted "$fw" 600 qemu-system-arm -M mps2-an386 "$@" -kernel "$elf"
 }
 if have arm-none-eabi-gcc; then
     say "firmware data from the host scenes"
@@ -252,10 +251,8 @@ if have riscv64-unknown-elf-gcc && have qemu-system-riscv32; then
     "$bench" gen-fw "$rvw/data_all.c" --filters point,bilinear,trilinear
     make -s -j 2 -C bench fw ARCH=riscv MARCH=rv32imac MABI=ilp32 OPT=-O2 OUT="$root/$rvw/icount" \
         DATA="$root/$rvw/data_all.c" >&2
-    rm -f "$rvw/icount/fw.txt"
-    timeout 600 qemu-system-riscv32 -M virt -bios none -display none -monitor none -serial none \
-        -chardev file,id=semi,path="$rvw/icount/fw.txt" -semihosting-config enable=on,target=native,chardev=semi \
-        -icount shift=0 -kernel "$rvw/icount/bench.elf"
+    fxl_semihosted "$rvw/icount/fw.txt" 600 qemu-system-riscv32 -M virt -bios none -icount shift=0 \
+        -kernel "$rvw/icount/bench.elf"
     python3 "$scripts/m4_count.py" icount "$rvw/icount/fw.txt" >"$rvw/counts.txt"
     rv_counts="$rvw/counts.txt"
 else

@@ -27,7 +27,8 @@
 # (sanitizer build from `make sanitize`, default build-asan; configured here
 # when missing), FXL_FUZZ_CASES (default 1000000), FXL_FUZZ_SEED (default 1).
 # Optional tools: clang, qemu-system-arm, gcc-arm-none-eabi,
-# gcc-riscv64-unknown-elf, qemu-system-misc (steps skip without them). Takes about 7 minutes on 2 cores (423 s measured).
+# gcc-riscv64-unknown-elf, qemu-system-misc (steps skip without them).
+# Takes about 10 minutes on 2 cores (594 s measured with every tool).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bdir="${FXL_BUILD_DIR:-build}"

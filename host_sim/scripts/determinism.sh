@@ -32,6 +32,8 @@ if [ ! -f "$lib/libfixel_host.a" ] || [ ! -f "$lib/libfixel.a" ]; then
     exit 1
 fi
 warn="-Wall -Wextra -Wpedantic -Werror"
+# shellcheck source=host_sim/scripts/bare_metal.sh
+. "$root/host_sim/scripts/bare_metal.sh"
 inc="-I$root/include -I$root/src -I$root/determinism -I$out"
 core=$(ls "$root"/src/*.c)
 
@@ -83,14 +85,8 @@ run_arm() {   # name cpu
         -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
         -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
         "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_$name.elf"
-    rm -f "$out/$name.txt"
-    if timeout 900 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -display none -monitor none -serial none \
-        -semihosting-config enable=on,target=native,chardev=semi \
-        -chardev file,id=semi,path="$out/$name.txt" -kernel "$out/det_$name.elf"; then
-        :
-    else
+    fxl_semihosted "$out/$name.txt" 900 qemu-system-arm -M mps2-an386 -cpu cortex-m4 -kernel "$out/det_$name.elf" ||
         echo "determinism.sh: the $cpu run failed (exit $?)" >&2
-    fi
     lists+=("$name")
 }
 
@@ -110,25 +106,13 @@ fi
 # with semihosting (examples/common/virt_rv_startup.c), the same output.
 run_riscv() {   # name xlen march mabi opt [libgcc-march qemu-cpu]
     local name=$1 xlen=$2 march=$3 mabi=$4 opt=$5 libmarch=${6:-} cpu=${7:-}
-    local libgcc=-lgcc cpuopt=()
+    local cpuopt=()
     echo "== $name: riscv64-unknown-elf-gcc -march=$march -mabi=$mabi $opt on qemu-system-riscv$xlen -M virt${cpu:+ -cpu $cpu}"
-    # Debian's multilibs have no Zbb variant and gcc would pick the default
-    # (RV64) libgcc for -march=..._zbb: name the base one's.
-    [ -n "$libmarch" ] && libgcc=$(riscv64-unknown-elf-gcc -march="$libmarch" -mabi="$mabi" -print-libgcc-file-name)
     [ -n "$cpu" ] && cpuopt=(-cpu "$cpu")
     # shellcheck disable=SC2086
-    riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib "$opt" $warn -march="$march" -mabi="$mabi" \
-        -mcmodel=medany -ffunction-sections -fdata-sections $inc -I"$root/examples/common" \
-        -T "$root/examples/common/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
-        "$root/examples/common/virt_rv_startup.c" "$root/determinism/det_main.c" $core "$libgcc" -o "$out/det_$name.elf"
-    rm -f "$out/$name.txt"
-    if timeout 900 "qemu-system-riscv$xlen" -M virt "${cpuopt[@]}" -bios none -display none -monitor none -serial none \
-        -semihosting-config enable=on,target=native,chardev=semi \
-        -chardev file,id=semi,path="$out/$name.txt" -kernel "$out/det_$name.elf"; then
-        :
-    else
-        echo "determinism.sh: the $march $opt run failed (exit $?)" >&2
-    fi
+    fxl_rv_link "$out/det_$name.elf" "$march" "$mabi" "$opt" "$libmarch" $inc "$root/determinism/det_main.c" $core
+    fxl_semihosted "$out/$name.txt" 900 "qemu-system-riscv$xlen" -M virt "${cpuopt[@]}" -bios none \
+        -kernel "$out/det_$name.elf" || echo "determinism.sh: the $march $opt run failed (exit $?)" >&2
     lists+=("$name")
 }
 

@@ -70,15 +70,15 @@ run_leg() {
     "$fn" || result=1
 }
 
-# semihosted OUT QEMU ARGS...: run a semihosting image, its output to OUT
-# (a chardev file: with -nographic and stdout redirected to a file, qemu
-# 7.2 was seen to drop the tail of the output); returns qemu's status.
+# shellcheck source=host_sim/scripts/bare_metal.sh
+. "$root/host_sim/scripts/bare_metal.sh"
+
+# semihosted OUT QEMU ARGS...: fxl_semihosted with this script's timeout,
+# and its status shown (FAIL when not 0).
 semihosted() {
     local out=$1 qemu=$2 status=0
     shift 2
-    rm -f "$out"
-    timeout "${FXL_FW_TIMEOUT:-120}" "$qemu" "$@" -display none -monitor none -serial none \
-        -chardev file,id=semi,path="$out" -semihosting-config enable=on,target=native,chardev=semi || status=$?
+    fxl_semihosted "$out" "${FXL_FW_TIMEOUT:-120}" "$qemu" "$@" || status=$?
     echo "(exit status $status)"
     [ "$status" -eq 0 ] || echo "firmware.sh: FAIL: $qemu exited with status $status (124 = timeout)" >&2
     return $status
@@ -132,11 +132,9 @@ run_leg "Cortex-M4" "gcc-arm-none-eabi qemu-system-arm" m4_leg arm-none-eabi-gcc
 rv_leg() {
     local c=examples/common elf_rv="$tmp/rv_band.elf"
     echo "== RV32IMAC -Os on qemu-system-riscv32 -M virt"
-    riscv64-unknown-elf-gcc -std=c99 -ffreestanding -nostdlib -Os -march=rv32imac -mabi=ilp32 \
-        -mcmodel=medany -Wall -Wextra -Wpedantic -Werror -ffunction-sections -fdata-sections \
-        -Iinclude -Isrc -Iport -I"$c" -T "$c/virt_rv.ld" -Wl,--gc-sections,--no-warn-rwx-segments \
-        examples/m4_band/main.c "$c/fw_app.c" "$c/fw_scenes.c" "$c/virt_rv_startup.c" src/*.c port/*.c \
-        -lgcc -o "$elf_rv" || { echo "firmware.sh: FAIL: RV32IMAC: the build failed" >&2; return 1; }
+    fxl_rv_link "$elf_rv" rv32imac ilp32 -Os "" -Iinclude -Isrc -Iport \
+        examples/m4_band/main.c "$c/fw_app.c" "$c/fw_scenes.c" src/*.c port/*.c ||
+        { echo "firmware.sh: FAIL: RV32IMAC: the build failed" >&2; return 1; }
     semihosted "$tmp/out_rv.txt" qemu-system-riscv32 -M virt -bios none -kernel "$elf_rv" &&
         check "RV32IMAC" "$tmp/out_rv.txt"
 }
