@@ -214,21 +214,27 @@ static inline uint32_t fxl__div_ffffffff(uint32_t d)
 #else
 #define FXL__RECIP_INLINE inline
 #endif
-static FXL__RECIP_INLINE void fxl__recip(int64_t qv, fxl__recip_t *out)
+/* r = 2^62 / qn in q30 for a normalised qn in [2^31, 2^32): fxl__recip's
+ * value, for walks that keep q normalised themselves (exact_run, span.c). */
+static FXL__RECIP_INLINE uint32_t fxl__recip_qn(uint32_t qn)
 {
-    uint64_t q = qv > 0 ? (uint64_t)qv : 1u;
-    int n = fxl__clz64_inline(q);
-    uint32_t qn = (uint32_t)((q << n) >> 32);        /* [2^31, 2^32) */
-    uint32_t d = (qn >> 16) + 1u;                     /* (2^15, 2^16] */
+    const uint32_t d = (qn >> 16) + 1u;               /* (2^15, 2^16] */
     /* y0 = 2^48 / qn in q16, underestimated by < 2^-15 relative. */
-    uint32_t y0 = fxl__div_ffffffff(d);               /* <= 2^17 - 1 */
+    const uint32_t y0 = fxl__div_ffffffff(d);         /* <= 2^17 - 1 */
     /* Newton: y1 = y0 * (2 - x * y0) with x = qn / 2^32. e = x*y0 in q48 is
      * in [2^48 (1 - 2^-14), 2^48], so 2^49 - e in (2^48, 2^48 (1 + 2^-14)]
      * and t = (2^49 - e) >> 17 fits 32 bits (q31 of 2 - x*y0). */
-    uint64_t e = fxl__umul32(qn, y0);
-    uint32_t t = (uint32_t)(((UINT64_C(1) << 49) - e) >> 17);
+    const uint64_t e = fxl__umul32(qn, y0);
+    const uint32_t t = (uint32_t)(((UINT64_C(1) << 49) - e) >> 17);
     /* y0 (q16) * t (q31) = q47; >> 17 gives q30: r = 2^62 / qn, <= 2^31. */
-    out->r = (uint32_t)(fxl__umul32(y0, t) >> 17);
+    return (uint32_t)(fxl__umul32(y0, t) >> 17);
+}
+
+static FXL__RECIP_INLINE void fxl__recip(int64_t qv, fxl__recip_t *out)
+{
+    const uint64_t q = qv > 0 ? (uint64_t)qv : 1u;
+    const int n = fxl__clz64_inline(q);
+    out->r = fxl__recip_qn((uint32_t)((q << n) >> 32));   /* qn in [2^31, 2^32) */
     out->n = n;
 }
 

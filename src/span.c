@@ -1022,6 +1022,7 @@ typedef struct fxl__lean {
     uint32_t u, v, z;
     fxl__recip_t rc;   /* 1/q there (lean_start) */
     int32_t g;         /* q_x / q there, fxl__quad_g (the quadratic walks' corrections) */
+    int32_t run_to;    /* exact_run: the span's tests hold up to this x (lean_start: none) */
 } fxl__lean_t;
 
 
@@ -1152,6 +1153,7 @@ static FXL__NOINLINE void lean_start(const fxl__tri_t *tri, int32_t x, int32_t d
     fast_correct_rc(tri, &s->rc, (int64_t)s->su, (int64_t)s->sv, &pt);
     s->u = pt.u;
     s->v = pt.v;
+    s->run_to = INT32_MIN;
 }
 
 /* Runs of 1-pixel segments (exact mode, AUTO's steepest stretches): up to
@@ -1244,6 +1246,283 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
     return m;
 }
 
+/* ---- Exact mode's runs with the division's range work done once a span ----
+ *
+ * lean_run's correction (fast_correct_batch) normalises q with a 64-bit CLZ
+ * and shift, clamps it, range-checks each attribute's mantissa and picks a
+ * rounding by the exponent, at every pixel: ~100 Cortex-M4 instructions a
+ * pixel of the rolled floor. Along a span the planes are linear, so where
+ * the first and last corrections of its rest pass those tests, every
+ * point between passes them the same way:
+ * - q (between q_min and 2^62 at both ends) is never clamped;
+ * - an attribute within fxl__persp_m_ok's interval at both ends is within
+ *   it everywhere, and its mantissa (bits PF-1..PF+30) is the high word of
+ *   the plane shifted left by 33 - PF, which steps modulo 2^64 like the
+ *   plane itself;
+ * - z within [0, 2^52) needs no clamp: fast_z is the high word of z << 12.
+ * Ends below 2^62 and gradients below 2^62 / (the steps between the ends)
+ * keep the int64 values from wrapping between them. The tests run once a
+ * span, over its rest (exact_run_check), and cover every chunk after.
+ * The chunk is walked from its larger-q end, so q only falls: q << n with
+ * n = clz(q) there never overflows, its high word is fxl__recip's
+ * normalised q while its top bit is set, and where q falls past a power of
+ * two (40% of the rolled floor's chunks) one more CLZ renormalises it;
+ * from there each exponent is larger by that shift.
+ * The walk is three passes, each with few enough live values for a
+ * Cortex-M4's registers (one pass spilled ~25 instructions a pixel): the
+ * reciprocals (into the v slots of puv), then u, then v, each a product
+ * and a rounding with a shift that is constant between renormalisations.
+ * fast_correct_batch's values bit for bit (test_fast_and_generic_walks_agree).
+ * A chunk outside these conditions returns 0 and takes lean_run. */
+#define FXL__RUN_MANT_SHIFT (33 - FXL__PF)   /* plane << this: mantissa in the high word */
+#define FXL__RUN_EVENTS 4                    /* renormalisations a chunk, at most */
+/* exact_run's chunk: twice lean_run's, for half the chunks' set-up (the
+ * callers' arrays take FXL__RUN_BATCH + 1 pairs) */
+#define FXL__RUN_BATCH (2 * FXL__BATCH)
+
+/* g below 2^b in magnitude (b <= 62), as a signed bit pattern */
+static inline int exact_run_step_ok(uint64_t g, int b)
+{
+    return g + ((uint64_t)1 << b) < ((uint64_t)1 << (b + 1));
+}
+
+/* lo <= v < hi for the signed value whose bit pattern is v (lo, hi signed) */
+static inline int exact_run_in(uint64_t v, int64_t lo, int64_t hi)
+{
+    const uint64_t off = (uint64_t)0 - (uint64_t)lo;   /* v - lo, modulo 2^64 */
+    return v + off < (uint64_t)hi + off;
+}
+
+/* One coordinate's pass over cnt points from o (stride 2 dj words): the
+ * mantissa w stepped by g, the reciprocal read from o[roff], and
+ * fxl__persp_e's low 32 bits, floor((m r + 2^(k-1)) / 2^k) modulo 2^32,
+ * written to o[0]. On 32-bit cores the rounding has three forms by k: the
+ * high word plus 2^(k-33), shifted (k >= 33, fxl__persp_lo32_hi); the high
+ * word plus the low word's top bit (k = 32); bits k..k+31 of the 64-bit
+ * sum (k <= 31: the rolled floor's far half, where u and v reach 2^13
+ * texels). Returns w after the last point. */
+static FXL__UNSWITCH uint64_t exact_run_axis(uint32_t *o, const int32_t stride, int32_t cnt, uint64_t w,
+                                             const uint64_t g, const int k, const int roff)
+{
+    if (FXL__WORD32 && k >= 33) {
+        const uint32_t bias = (uint32_t)1 << (k - 33);
+        const int sh = k - 32;
+        do {
+            const int64_t p = fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
+            o[0] = (uint32_t)fxl__asr32(fxl__i32_of_bits((uint32_t)((uint64_t)p >> 32) + bias), sh);
+            o += stride;
+            w += g;
+        } while (--cnt);
+    } else if (FXL__WORD32 && k == 32) {
+        do {
+            const uint64_t p = (uint64_t)fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
+            o[0] = (uint32_t)(p >> 32) + ((uint32_t)p >> 31);
+            o += stride;
+            w += g;
+        } while (--cnt);
+    } else if (FXL__WORD32) {
+        const uint32_t bias = (uint32_t)1 << (k - 1);
+        const int lsh = 32 - k;
+        do {
+            const uint64_t p =
+                (uint64_t)fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]) + bias;
+            o[0] = ((uint32_t)p >> k) | ((uint32_t)(p >> 32) << lsh);
+            o += stride;
+            w += g;
+        } while (--cnt);
+    } else {
+        const uint64_t bias = (uint64_t)1 << (k - 1);
+        do {
+            const int64_t p = fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
+            o[0] = (uint32_t)(uint64_t)fxl__asr64((int64_t)((uint64_t)p + bias), k);
+            o += stride;
+            w += g;
+        } while (--cnt);
+    }
+    return w;
+}
+
+/* The tests above for the corrections at x0 + 1 .. x0 + last: 1 if they
+ * hold there. */
+static FXL__UNSWITCH int exact_run_check(const fxl__tri_t *tri, const fxl__lean_t *s, const int32_t last,
+                                         const int with_z)
+{
+    const uint64_t gq = (uint64_t)tri->gpx[FXL__PQ];
+    const uint64_t gu = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
+    const uint64_t gv = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
+    const uint64_t gz = with_z ? (uint64_t)tri->gpx[FXL__PZ] : 0u;
+    const int64_t mant_lo = -((int64_t)1 << (FXL__PF + 30)) + ((int64_t)1 << (FXL__PF - 1));
+    const int64_t mant_hi = (int64_t)1 << (FXL__PF + 30);
+    const int64_t q_lo = tri->q_min > 1 ? tri->q_min : 1;
+    const uint64_t steps = (uint64_t)(last - 1);
+    /* |g| * steps < 2^62 and |ends| < 2^62: the int64 values do not wrap
+     * between the ends */
+    const int b = 62 - (32 - fxl__clz32_inline((uint32_t)steps));
+    uint64_t q1, q_end, e1, e_end;
+    int n1, n_end;
+
+    if (!exact_run_step_ok(gq, b) || !exact_run_step_ok(gu, b) || !exact_run_step_ok(gv, b) ||
+        !exact_run_step_ok(gz, b))
+        return 0;
+    q1 = s->sq + gq;
+    q_end = q1 + gq * steps;
+    if (!exact_run_in(q1, q_lo, (int64_t)1 << 62) || !exact_run_in(q_end, q_lo, (int64_t)1 << 62))
+        return 0;
+    e1 = s->su + gu;
+    e_end = e1 + gu * steps;
+    if (!exact_run_in(e1, mant_lo, mant_hi) || !exact_run_in(e_end, mant_lo, mant_hi))
+        return 0;
+    e1 = s->sv + gv;
+    e_end = e1 + gv * steps;
+    if (!exact_run_in(e1, mant_lo, mant_hi) || !exact_run_in(e_end, mant_lo, mant_hi))
+        return 0;
+    if (with_z) {
+        e1 = s->sz + gz;
+        e_end = e1 + gz * steps;
+        if (!exact_run_in(e1, 0, (int64_t)1 << 52) || !exact_run_in(e_end, 0, (int64_t)1 << 52))
+            return 0;
+    }
+    /* every shift k = -(n + eb) within 1..62 (n = clz(q), monotonic in q) */
+    n1 = fxl__clz64_inline(q1);
+    n_end = fxl__clz64_inline(q_end);
+    return n1 + tri->persp_eb[0] >= -62 && n1 + tri->persp_eb[1] >= -62 && n1 + tri->persp_eb[0] <= -1 &&
+           n1 + tri->persp_eb[1] <= -1 && n_end + tri->persp_eb[0] >= -62 && n_end + tri->persp_eb[1] >= -62 &&
+           n_end + tri->persp_eb[0] <= -1 && n_end + tri->persp_eb[1] <= -1;
+}
+
+/* Returns the chunk's pixel count (lean_run's contract) or 0: not taken.
+ * puv has room for FXL__RUN_BATCH + 1 pairs, pz for FXL__RUN_BATCH + 1
+ * values. The tests run once a span (s->run_to), over the rest of it. */
+static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0, const int32_t cr,
+                                       uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv, const int with_z)
+{
+    /* corrections at x0 + 1 .. x0 + nc (none at cr); the one at
+     * x0 + RUN_BATCH starts the next chunk */
+    const int32_t nc = cr - 1 - x0 < FXL__RUN_BATCH ? cr - 1 - x0 : FXL__RUN_BATCH;
+    uint64_t gq = (uint64_t)tri->gpx[FXL__PQ];
+    uint64_t gu = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
+    uint64_t gv = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
+    uint64_t gz = with_z ? (uint64_t)tri->gpx[FXL__PZ] : 0u;
+    const int eb_u = tri->persp_eb[0], eb_v = tri->persp_eb[1];
+    uint64_t q1, q_end, u1, u_end, v1, v_end, z1 = 0, z_end = 0, qw, gqw, uw, vw, zw;
+    int32_t ev_at[FXL__RUN_EVENTS + 2], i, j0, dj, nev = 0, at;
+    int ev_n[FXL__RUN_EVENTS + 1], n, e;
+    uint32_t *o;
+
+    if (nc < 2)
+        return 0;
+    if (x0 + nc > s->run_to) {
+        if (!exact_run_check(tri, s, cr - 1 - x0, with_z))
+            return 0;
+        s->run_to = cr - 1;
+    }
+    q1 = s->sq + gq;
+    q_end = q1 + gq * (uint64_t)(nc - 1);
+    u1 = s->su + gu;
+    u_end = u1 + gu * (uint64_t)(nc - 1);
+    v1 = s->sv + gv;
+    v_end = v1 + gv * (uint64_t)(nc - 1);
+    if (with_z) {
+        z1 = s->sz + gz;
+        z_end = z1 + gz * (uint64_t)(nc - 1);
+    }
+    /* walk from the larger q: from the last correction when q rises */
+    if (gq & (UINT64_C(1) << 63)) {
+        j0 = 1;
+        dj = 1;
+        qw = q1;
+        uw = u1;
+        vw = v1;
+        zw = z1;
+    } else {
+        j0 = nc;
+        dj = -1;
+        qw = q_end;
+        uw = u_end;
+        vw = v_end;
+        zw = z_end;
+        gq = 0u - gq;
+        gu = 0u - gu;
+        gv = 0u - gv;
+        gz = 0u - gz;
+    }
+    n = fxl__clz64_inline(qw);
+
+    /* pass 1: the reciprocals, into the v slots; ev_at[] / ev_n[] are the
+     * walk's stretches of one n */
+    qw <<= n;
+    gqw = gq << n;
+    ev_at[0] = 0;
+    ev_n[0] = n;
+    o = puv + 2 * j0 + 1;
+    for (i = 0;; i++) {
+        uint32_t qn = (uint32_t)(qw >> 32);
+        if (!(qn & 0x80000000u)) {
+            /* q fell past a power of two */
+            const int sh = fxl__clz64_inline(qw);
+            if (nev == FXL__RUN_EVENTS)
+                return 0;
+            qw <<= sh;
+            gqw <<= sh;
+            n += sh;
+            nev++;
+            ev_at[nev] = i;
+            ev_n[nev] = n;
+            qn = (uint32_t)(qw >> 32);
+        }
+        *o = fxl__recip_qn(qn);
+        if (i == nc - 1)
+            break;
+        o += 2 * dj;
+        qw += gqw;
+    }
+    /* passes 2 and 3: u, then v over the reciprocals, one stretch of
+     * constant shifts at a time */
+    ev_at[nev + 1] = nc;
+    uw <<= FXL__RUN_MANT_SHIFT;
+    gu <<= FXL__RUN_MANT_SHIFT;
+    vw <<= FXL__RUN_MANT_SHIFT;
+    gv <<= FXL__RUN_MANT_SHIFT;
+    for (e = 0; e <= nev; e++) {
+        const int32_t cnt = ev_at[e + 1] - ev_at[e];
+        if (cnt == 0)
+            continue;
+        at = 2 * (j0 + dj * ev_at[e]);
+        uw = exact_run_axis(puv + at, 2 * dj, cnt, uw, gu, -(ev_n[e] + eb_u), 1);
+        vw = exact_run_axis(puv + at + 1, 2 * dj, cnt, vw, gv, -(ev_n[e] + eb_v), 0);
+    }
+    if (with_z) {
+        uint32_t *oz = pz + j0;
+        zw <<= 32 - FXL__PF;
+        gz <<= 32 - FXL__PF;
+        for (i = 0; i < nc; i++) {
+            *oz = (uint32_t)(zw >> 32);
+            oz += dj;
+            zw += gz;
+        }
+    }
+    puv[0] = s->u;
+    puv[1] = s->v;
+    if (with_z)
+        pz[0] = s->z;
+    if (nc == FXL__RUN_BATCH) {
+        /* a full chunk's last correction starts the next chunk */
+        s->u = puv[2 * FXL__RUN_BATCH];
+        s->v = puv[2 * FXL__RUN_BATCH + 1];
+    }
+    /* the planes at the last correction, as lean_run leaves them */
+    s->sq = q_end;
+    s->su = u_end;
+    s->sv = v_end;
+    if (with_z) {
+        s->sz = z_end;
+        s->z = (uint32_t)(z_end >> FXL__PF);
+    }
+    *ndiv += (uint32_t)nc;
+    *more = nc == FXL__RUN_BATCH;
+    return nc == FXL__RUN_BATCH ? FXL__RUN_BATCH : nc + 1;
+}
+
 /* One copy for exact mode and one for AUTO's runs: with the adaptive
  * chooser in the same loop, exact mode spilled ~7 Cortex-M4 instructions
  * a pixel. Exact mode has a second copy for triangles whose q is the same
@@ -1260,13 +1539,23 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_rowc(const fxl__tri_t *tri
     return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 1);
 }
 
+/* lean_run for the chunks exact_run does not take */
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_plain(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                            const int32_t xl, const int32_t xr, const int32_t cr,
+                                                            uint32_t *puv, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 0);
+}
+
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                             const int32_t xl, const int32_t xr, const int32_t cr,
                                                             uint32_t *puv, int *more, uint32_t *ndiv)
 {
+    int32_t m;
     if (q_row_const(tri))
         return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
-    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, 0, more, ndiv, 0, 0);
+    m = exact_run(tri, s, x0, cr, puv, 0, more, ndiv, 0);
+    return m ? m : lean_run_uv_plain(tri, s, x0, xl, xr, cr, puv, more, ndiv);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_auto(const fxl__tri_t *tri, const int32_t t_row, fxl__lean_t *s,
@@ -1294,13 +1583,22 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_rowc(const fxl__tri_t *tr
     return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 1);
 }
 
+static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_plain(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
+                                                             const int32_t xl, const int32_t xr, const int32_t cr,
+                                                             uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
+{
+    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 0);
+}
+
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                              const int32_t xl, const int32_t xr, const int32_t cr,
                                                              uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
 {
+    int32_t m;
     if (q_row_const(tri))
         return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
-    return lean_run(tri, 0, 0, s, x0, xl, xr, cr, puv, pz, more, ndiv, 1, 0);
+    m = exact_run(tri, s, x0, cr, puv, pz, more, ndiv, 1);
+    return m ? m : lean_run_uvz_plain(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_auto(const fxl__tri_t *tri, const int32_t t_row,

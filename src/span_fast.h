@@ -261,18 +261,20 @@ static FXL__UNSWITCH uint32_t FXL_T_PIX1(uint16_t *dst, uint16_t *zb, uint32_t z
 
 /* A run of 1-pixel segments from x (cl <= x < cr): the whole span in exact
  * mode, and AUTO's stretches where no segment of 2 fits. The corrections
- * come in chunks from the shared lean_run (span.c), each pixel drawn with
- * its own u, v (and z): ~80 Cortex-M4 instructions a pixel, where the
- * lean walk's 1-pixel segments cost ~170. Returns the x the run stopped
+ * come in chunks from the shared exact_run or lean_run (span.c), each
+ * pixel drawn with its own u, v (and z): ~80 Cortex-M4 instructions a
+ * pixel of the rolled floor in exact mode, where the lean walk's 1-pixel
+ * segments cost ~170. Returns the x the run stopped
  * at (cr, or the start of a longer segment); s is left there. */
 static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg, const int32_t t_row,
                                        fxl__lean_t *s, FXL_T_LV *L, uint16_t *px_cl, uint16_t *zb_cl, int32_t x,
                                        const int32_t xl, const int32_t xr, const int32_t cl, const int32_t cr,
                                        uint32_t *ndiv, uint32_t *written)
 {
-    uint32_t puv[2 * FXL__BATCH];
+    /* exact_run's chunks (span.c), and the correction after one */
+    uint32_t puv[2 * (FXL__RUN_BATCH + 1)];
 #if FXL_T_DEPTH
-    uint32_t pz[FXL__BATCH], drawn = 0;
+    uint32_t pz[FXL__RUN_BATCH + 1], drawn = 0;
 #else
     (void)zb_cl;
 #endif
