@@ -1260,8 +1260,8 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
  *   the plane shifted left by 33 - PF, which steps modulo 2^64 like the
  *   plane itself;
  * - z within [0, 2^52) needs no clamp: fast_z is the high word of z << 12.
- * Ends below 2^62 and gradients below 2^62 / (the steps between the ends)
- * keep the int64 values from wrapping between them. The tests run once a
+ * Ends below 2^62, gradients below 2^54 over at most 2^8 steps (2^46 over
+ * 2^16) keep the int64 values from wrapping between them. The tests run once a
  * span, over its rest (exact_run_check), and cover every chunk after.
  * The chunk is walked from its larger-q end, so q only falls: q << n with
  * n = clz(q) there never overflows, its high word is fxl__recip's
@@ -1280,10 +1280,11 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
  * callers' arrays take FXL__RUN_BATCH + 1 pairs) */
 #define FXL__RUN_BATCH (2 * FXL__BATCH)
 
-/* g below 2^b in magnitude (b <= 62), as a signed bit pattern */
+/* g below 2^(32 + b) in magnitude, as a signed bit pattern (on its high
+ * word: in 32-bit operations) */
 static inline int exact_run_step_ok(uint64_t g, int b)
 {
-    return g + ((uint64_t)1 << b) < ((uint64_t)1 << (b + 1));
+    return (uint32_t)(g >> 32) + ((uint32_t)1 << b) < ((uint32_t)2 << b);
 }
 
 /* lo <= v < hi for the signed value whose bit pattern is v (lo, hi signed) */
@@ -1342,52 +1343,61 @@ static FXL__UNSWITCH uint64_t exact_run_axis(uint32_t *o, const int32_t stride, 
     return w;
 }
 
-/* The tests above for the corrections at x0 + 1 .. x0 + last: 1 if they
- * hold there. */
-static FXL__UNSWITCH int exact_run_check(const fxl__tri_t *tri, const fxl__lean_t *s, const int32_t last,
+/* The planes at the corrections x0 + 1 and x0 + last (x0 is s's pixel) */
+typedef struct exact_run_ends {
+    uint64_t q1, q_end, u1, u_end, v1, v_end, z1, z_end;
+} exact_run_ends_t;
+
+static FXL__UNSWITCH void exact_run_ends(const fxl__tri_t *tri, const fxl__lean_t *s, const int32_t last,
+                                         exact_run_ends_t *e, const int with_z)
+{
+    const uint64_t steps = (uint64_t)(last - 1);
+    e->q1 = s->sq + (uint64_t)tri->gpx[FXL__PQ];
+    e->q_end = e->q1 + (uint64_t)tri->gpx[FXL__PQ] * steps;
+    e->u1 = s->su + (uint64_t)tri->gpx[FXL__PA + FXL__AU];
+    e->u_end = e->u1 + (uint64_t)tri->gpx[FXL__PA + FXL__AU] * steps;
+    e->v1 = s->sv + (uint64_t)tri->gpx[FXL__PA + FXL__AV];
+    e->v_end = e->v1 + (uint64_t)tri->gpx[FXL__PA + FXL__AV] * steps;
+    e->z1 = with_z ? s->sz + (uint64_t)tri->gpx[FXL__PZ] : 0u;
+    e->z_end = with_z ? e->z1 + (uint64_t)tri->gpx[FXL__PZ] * steps : 0u;
+}
+
+/* The tests above for the corrections at x0 + 1 .. x0 + last, whose
+ * planes are e: 1 if they hold there. */
+static FXL__UNSWITCH int exact_run_check(const fxl__tri_t *tri, const exact_run_ends_t *e, const int32_t last,
                                          const int with_z)
 {
-    const uint64_t gq = (uint64_t)tri->gpx[FXL__PQ];
-    const uint64_t gu = (uint64_t)tri->gpx[FXL__PA + FXL__AU];
-    const uint64_t gv = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
-    const uint64_t gz = with_z ? (uint64_t)tri->gpx[FXL__PZ] : 0u;
     const int64_t mant_lo = -((int64_t)1 << (FXL__PF + 30)) + ((int64_t)1 << (FXL__PF - 1));
     const int64_t mant_hi = (int64_t)1 << (FXL__PF + 30);
     const int64_t q_lo = tri->q_min > 1 ? tri->q_min : 1;
-    const uint64_t steps = (uint64_t)(last - 1);
-    /* |g| * steps < 2^62 and |ends| < 2^62: the int64 values do not wrap
-     * between the ends */
-    const int b = 62 - (32 - fxl__clz32_inline((uint32_t)steps));
-    uint64_t q1, q_end, e1, e_end;
-    int n1, n_end;
+    const int eb_lo = tri->persp_eb[0] < tri->persp_eb[1] ? tri->persp_eb[0] : tri->persp_eb[1];
+    const int eb_hi = tri->persp_eb[0] ^ tri->persp_eb[1] ^ eb_lo;
+    /* |g| < 2^54 and at most 2^8 steps, or 2^46 and 2^16, and |ends| <
+     * 2^62: the int64 values do not wrap between the ends */
+    const int b = last <= 0x100 ? 22 : 14;
+    int n_lo, n_hi;
 
-    if (!exact_run_step_ok(gq, b) || !exact_run_step_ok(gu, b) || !exact_run_step_ok(gv, b) ||
-        !exact_run_step_ok(gz, b))
+    if (last > 0xFFFF || !exact_run_step_ok((uint64_t)tri->gpx[FXL__PQ], b) ||
+        !exact_run_step_ok((uint64_t)tri->gpx[FXL__PA + FXL__AU], b) ||
+        !exact_run_step_ok((uint64_t)tri->gpx[FXL__PA + FXL__AV], b) ||
+        (with_z && !exact_run_step_ok((uint64_t)tri->gpx[FXL__PZ], b)))
         return 0;
-    q1 = s->sq + gq;
-    q_end = q1 + gq * steps;
-    if (!exact_run_in(q1, q_lo, (int64_t)1 << 62) || !exact_run_in(q_end, q_lo, (int64_t)1 << 62))
+    if (!exact_run_in(e->q1, q_lo, (int64_t)1 << 62) || !exact_run_in(e->q_end, q_lo, (int64_t)1 << 62) ||
+        !exact_run_in(e->u1, mant_lo, mant_hi) || !exact_run_in(e->u_end, mant_lo, mant_hi) ||
+        !exact_run_in(e->v1, mant_lo, mant_hi) || !exact_run_in(e->v_end, mant_lo, mant_hi))
         return 0;
-    e1 = s->su + gu;
-    e_end = e1 + gu * steps;
-    if (!exact_run_in(e1, mant_lo, mant_hi) || !exact_run_in(e_end, mant_lo, mant_hi))
+    if (with_z &&
+        (!exact_run_in(e->z1, 0, (int64_t)1 << 52) || !exact_run_in(e->z_end, 0, (int64_t)1 << 52)))
         return 0;
-    e1 = s->sv + gv;
-    e_end = e1 + gv * steps;
-    if (!exact_run_in(e1, mant_lo, mant_hi) || !exact_run_in(e_end, mant_lo, mant_hi))
-        return 0;
-    if (with_z) {
-        e1 = s->sz + gz;
-        e_end = e1 + gz * steps;
-        if (!exact_run_in(e1, 0, (int64_t)1 << 52) || !exact_run_in(e_end, 0, (int64_t)1 << 52))
-            return 0;
-    }
     /* every shift k = -(n + eb) within 1..62 (n = clz(q), monotonic in q) */
-    n1 = fxl__clz64_inline(q1);
-    n_end = fxl__clz64_inline(q_end);
-    return n1 + tri->persp_eb[0] >= -62 && n1 + tri->persp_eb[1] >= -62 && n1 + tri->persp_eb[0] <= -1 &&
-           n1 + tri->persp_eb[1] <= -1 && n_end + tri->persp_eb[0] >= -62 && n_end + tri->persp_eb[1] >= -62 &&
-           n_end + tri->persp_eb[0] <= -1 && n_end + tri->persp_eb[1] <= -1;
+    n_lo = fxl__clz64_inline(e->q1);
+    n_hi = fxl__clz64_inline(e->q_end);
+    if (n_lo > n_hi) {
+        const int t = n_lo;
+        n_lo = n_hi;
+        n_hi = t;
+    }
+    return n_lo + eb_lo >= -62 && n_hi + eb_hi <= -1;
 }
 
 /* Returns the chunk's pixel count (lean_run's contract) or 0: not taken.
@@ -1404,7 +1414,8 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
     uint64_t gv = (uint64_t)tri->gpx[FXL__PA + FXL__AV];
     uint64_t gz = with_z ? (uint64_t)tri->gpx[FXL__PZ] : 0u;
     const int eb_u = tri->persp_eb[0], eb_v = tri->persp_eb[1];
-    uint64_t q1, q_end, u1, u_end, v1, v_end, z1 = 0, z_end = 0, qw, gqw, uw, vw, zw;
+    exact_run_ends_t en;
+    uint64_t qw, gqw, uw, vw, zw;
     int32_t ev_at[FXL__RUN_EVENTS + 2], i, j0, dj, nev = 0, at;
     int ev_n[FXL__RUN_EVENTS + 1], n, e;
     uint32_t *o;
@@ -1412,35 +1423,32 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
     if (nc < 2)
         return 0;
     if (x0 + nc > s->run_to) {
-        if (!exact_run_check(tri, s, cr - 1 - x0, with_z))
+        /* the tests, over the span's rest: in one chunk, its ends */
+        const int32_t rest = cr - 1 - x0;
+        exact_run_ends(tri, s, rest, &en, with_z);
+        if (!exact_run_check(tri, &en, rest, with_z))
             return 0;
         s->run_to = cr - 1;
-    }
-    q1 = s->sq + gq;
-    q_end = q1 + gq * (uint64_t)(nc - 1);
-    u1 = s->su + gu;
-    u_end = u1 + gu * (uint64_t)(nc - 1);
-    v1 = s->sv + gv;
-    v_end = v1 + gv * (uint64_t)(nc - 1);
-    if (with_z) {
-        z1 = s->sz + gz;
-        z_end = z1 + gz * (uint64_t)(nc - 1);
+        if (rest != nc)
+            exact_run_ends(tri, s, nc, &en, with_z);
+    } else {
+        exact_run_ends(tri, s, nc, &en, with_z);
     }
     /* walk from the larger q: from the last correction when q rises */
     if (gq & (UINT64_C(1) << 63)) {
         j0 = 1;
         dj = 1;
-        qw = q1;
-        uw = u1;
-        vw = v1;
-        zw = z1;
+        qw = en.q1;
+        uw = en.u1;
+        vw = en.v1;
+        zw = en.z1;
     } else {
         j0 = nc;
         dj = -1;
-        qw = q_end;
-        uw = u_end;
-        vw = v_end;
-        zw = z_end;
+        qw = en.q_end;
+        uw = en.u_end;
+        vw = en.v_end;
+        zw = en.z_end;
         gq = 0u - gq;
         gu = 0u - gu;
         gv = 0u - gv;
@@ -1511,12 +1519,12 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
         s->v = puv[2 * FXL__RUN_BATCH + 1];
     }
     /* the planes at the last correction, as lean_run leaves them */
-    s->sq = q_end;
-    s->su = u_end;
-    s->sv = v_end;
+    s->sq = en.q_end;
+    s->su = en.u_end;
+    s->sv = en.v_end;
     if (with_z) {
-        s->sz = z_end;
-        s->z = (uint32_t)(z_end >> FXL__PF);
+        s->sz = en.z_end;
+        s->z = (uint32_t)(en.z_end >> FXL__PF);
     }
     *ndiv += (uint32_t)nc;
     *more = nc == FXL__RUN_BATCH;
