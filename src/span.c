@@ -1533,12 +1533,13 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
 
 /* One copy for exact mode and one for AUTO's runs: with the adaptive
  * chooser in the same loop, exact mode spilled ~7 Cortex-M4 instructions
- * a pixel. Exact mode has a second copy for triangles whose q is the same
- * along every row (gpx[PQ] == 0), which keeps lean_start's 1/q (~30% of
- * an exact floor pixel on a Cortex-M4), out of line: the exact copy tests
- * once a chunk and hands over (with both loops in one function the
- * other's spilled ~2.6 instructions a pixel). AUTO draws those triangles
- * affine. */
+ * a pixel. Exact mode's chunks go to exact_run, or where its tests fail to
+ * lean_run (_plain); triangles whose q is the same along every row
+ * (gpx[PQ] == 0) to a copy that keeps lean_start's 1/q (~30% of an exact
+ * floor pixel on a Cortex-M4). Each is out of line (in one function the
+ * others' loops spilled ~2.6 instructions a pixel), and the dispatch
+ * calls them one after the other, so their stack frames do not nest.
+ * AUTO draws row-constant triangles affine. */
 #if FXL__V_ANY_NOZ
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_rowc(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
                                                            const int32_t xl, const int32_t xr, const int32_t cr,
@@ -1559,11 +1560,9 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tr
                                                             const int32_t xl, const int32_t xr, const int32_t cr,
                                                             uint32_t *puv, int *more, uint32_t *ndiv)
 {
-    int32_t m;
-    if (q_row_const(tri))
-        return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
-    m = exact_run(tri, s, x0, cr, puv, 0, more, ndiv, 0);
-    return m ? m : lean_run_uv_plain(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+    (void)xl;
+    (void)xr;
+    return exact_run(tri, s, x0, cr, puv, 0, more, ndiv, 0);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_auto(const fxl__tri_t *tri, const int32_t t_row, fxl__lean_t *s,
@@ -1579,7 +1578,13 @@ static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autose
 {
     if (autoseg)
         return lean_run_uv_auto(tri, t_row, s, x0, xl, xr, cr, puv, more, ndiv);
-    return lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+    if (q_row_const(tri))
+        return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+    {
+        /* called one after the other, not nested: their frames do not add up */
+        const int32_t m = lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+        return m ? m : lean_run_uv_plain(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+    }
 }
 #endif
 
@@ -1602,11 +1607,9 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *t
                                                              const int32_t xl, const int32_t xr, const int32_t cr,
                                                              uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
 {
-    int32_t m;
-    if (q_row_const(tri))
-        return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
-    m = exact_run(tri, s, x0, cr, puv, pz, more, ndiv, 1);
-    return m ? m : lean_run_uvz_plain(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    (void)xl;
+    (void)xr;
+    return exact_run(tri, s, x0, cr, puv, pz, more, ndiv, 1);
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_auto(const fxl__tri_t *tri, const int32_t t_row,
@@ -1623,7 +1626,13 @@ static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autos
 {
     if (autoseg)
         return lean_run_uvz_auto(tri, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv);
-    return lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    if (q_row_const(tri))
+        return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    {
+        /* called one after the other, not nested: their frames do not add up */
+        const int32_t m = lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+        return m ? m : lean_run_uvz_plain(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+    }
 }
 #endif
 #endif /* FXL__V_ANY */
