@@ -1279,6 +1279,10 @@ static FXL__UNSWITCH int32_t lean_run(const fxl__tri_t *tri, const int autoseg, 
 /* exact_run's chunk: twice lean_run's, for half the chunks' set-up (the
  * callers' arrays take FXL__RUN_BATCH + 1 pairs) */
 #define FXL__RUN_BATCH (2 * FXL__BATCH)
+/* Chunks of fewer corrections take lean_run: below 6 exact_run's set-up
+ * (~300 Cortex-M4 instructions a span) costs more than it saves; small_tris'
+ * spans average ~4 pixels. */
+#define FXL__RUN_MIN 6
 
 /* g below 2^(32 + b) in magnitude, as a signed bit pattern (on its high
  * word: in 32-bit operations) */
@@ -1420,7 +1424,7 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
     int ev_n[FXL__RUN_EVENTS + 1], n, e;
     uint32_t *o;
 
-    if (nc < 2)
+    if (nc < FXL__RUN_MIN)
         return 0;
     if (x0 + nc > s->run_to) {
         /* the tests, over the span's rest: in one chunk, its ends */
@@ -1580,11 +1584,13 @@ static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autose
         return lean_run_uv_auto(tri, t_row, s, x0, xl, xr, cr, puv, more, ndiv);
     if (q_row_const(tri))
         return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
-    {
+    if (cr - 1 - x0 >= FXL__RUN_MIN) {
         /* called one after the other, not nested: their frames do not add up */
         const int32_t m = lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
-        return m ? m : lean_run_uv_plain(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+        if (m)
+            return m;
     }
+    return lean_run_uv_plain(tri, s, x0, xl, xr, cr, puv, more, ndiv);
 }
 #endif
 
@@ -1628,11 +1634,13 @@ static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autos
         return lean_run_uvz_auto(tri, t_row, s, x0, xl, xr, cr, puv, pz, more, ndiv);
     if (q_row_const(tri))
         return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
-    {
+    if (cr - 1 - x0 >= FXL__RUN_MIN) {
         /* called one after the other, not nested: their frames do not add up */
         const int32_t m = lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
-        return m ? m : lean_run_uvz_plain(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+        if (m)
+            return m;
     }
+    return lean_run_uvz_plain(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
 }
 #endif
 #endif /* FXL__V_ANY */
