@@ -33,10 +33,12 @@
 
 /* 32-bit cores: where 64-bit shifts by a variable are long sequences (the
  * shortcut for them is left out of size-optimised builds). */
+#ifndef FXL__WORD32   /* -DFXL__WORD32=1: the 32-bit cores' forms on a host (determinism.sh) */
 #if defined(__OPTIMIZE_SIZE__)
 #define FXL__WORD32 0
 #else
 #define FXL__WORD32 (UINTPTR_MAX <= 0xFFFFFFFFu)
+#endif
 #endif
 
 /* Does >> of a negative value shift in sign bits? C99 leaves it to the

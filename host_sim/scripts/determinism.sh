@@ -62,9 +62,10 @@ run_host gcc-O2 gcc -O2
 run_host gcc-Os gcc -Os
 # the arithmetic of 32-bit cores without UMULL or UDIV (Cortex-M0+ at -O2):
 # products from 16-bit halves, the table-started reciprocal, set-up's
-# division by a reciprocal, on the host (the M0+ image on qemu below runs
-# them too, as Thumb-1 code)
-run_host gcc-O2-m0arith gcc -O2 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1
+# division by a reciprocal, and the 32-bit word forms of the roundings
+# (FXL__WORD32), on the host (the M0+ image on qemu below runs them too, as
+# Thumb-1 code)
+run_host gcc-O2-m0arith gcc -O2 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1 -DFXL__WORD32=1
 # Specialised code left out (config.h, FXL_FAST_*): point and two-level draws
 # take the generic walk at -O2, bilinear ones keep theirs; the same pixels.
 run_host gcc-O2-subset gcc -O2 -DFXL_FAST_POINT=0 -DFXL_FAST_SWAPPED=0 -DFXL_FAST_MIP=0
