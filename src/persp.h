@@ -306,6 +306,13 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     return (int64_t)((uint64_t)prod << e);
 }
 
+/* Bits k..k+31 of p, 1 <= k <= 31: _words' case k < 32 (exact_run's
+ * loops, span.c, choose the form once a stretch and call it directly) */
+static inline uint32_t fxl__bits32_at(uint64_t p, int k)
+{
+    return ((uint32_t)p >> k) | ((uint32_t)(p >> 32) << (32 - k));
+}
+
 /* The low 32 bits of fxl__persp_e's value (the u, v of a repeat axis are
  * taken modulo 2^32) for an exponent e = -k, 1 <= k <= 62, from the product
  * prod = m * r and half = 2^(k-1): floor((prod + 2^(k-1)) / 2^k), which is
@@ -318,10 +325,9 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
 static inline uint32_t fxl__persp_lo32_words(int64_t prod, int k, uint64_t half)
 {
     const uint64_t p = (uint64_t)prod + half;
-    const uint32_t lo = (uint32_t)p, hi = (uint32_t)(p >> 32);
     if (k >= 32)
-        return (uint32_t)fxl__asr32(fxl__i32_of_bits(hi), k - 32);
-    return (lo >> k) | (hi << (32 - k));
+        return (uint32_t)fxl__asr32(fxl__i32_of_bits((uint32_t)(p >> 32)), k - 32);
+    return fxl__bits32_at(p, k);
 }
 
 static inline uint32_t fxl__persp_lo32_hi(int64_t prod, int k)

@@ -890,13 +890,14 @@ static void lod_setup(fxl__tri_t *tri)
  *   top lw bits are the column already wrapped. On Thumb-2 that is LSR, AND
  *   and ADD with LSR #16: one instruction less per pixel. A 1-texel-wide
  *   level has column 0: U = 0 (and shu any valid shift). */
+#define FXL__IDX_MASKS(U, V, mu16, mv16) ((((V) & (mv16)) | ((U) & (mu16))) >> 16)   /* U = u */
 #if defined(__ARM_ARCH_ISA_THUMB) && __ARM_ARCH_ISA_THUMB >= 2
 #define FXL__IDX_TOPU 1
 #define FXL__IDX(U, V, shu, mu16, mv16) (((U) >> (shu)) + (((V) & (mv16)) >> 16))
 #define FXL__TEXEL(tex, U, V, shu, mu16, mv16) ((tex)[FXL__IDX(U, V, shu, mu16, mv16)])
 #else
 #define FXL__IDX_TOPU 0
-#define FXL__IDX(U, V, shu, mu16, mv16) ((((V) & (mv16)) | ((U) & (mu16))) >> 16)
+#define FXL__IDX(U, V, shu, mu16, mv16) FXL__IDX_MASKS(U, V, mu16, mv16)
 /* The masks leave bit 15 clear, so >> 15 is the texel's byte offset: one
  * shift where the index takes two on Thumb-1 (a register offset is not
  * scaled there). Written out, because GCC found it only in some builds
@@ -1300,52 +1301,36 @@ static inline int exact_run_in(uint64_t v, int64_t lo, int64_t hi)
 
 /* One coordinate's pass over cnt points from o (stride 2 dj words): the
  * mantissa w stepped by g, the reciprocal read from o[roff], and
- * fxl__persp_e's low 32 bits, floor((m r + 2^(k-1)) / 2^k) modulo 2^32,
- * written to o[0]. On 32-bit cores the rounding has three forms by k: the
- * high word plus 2^(k-33), shifted (k >= 33, fxl__persp_lo32_hi); the high
- * word plus the low word's top bit (k = 32); bits k..k+31 of the 64-bit
- * sum (k <= 31: the rolled floor's far half, where u and v reach 2^13
- * texels). Returns w after the last point. */
+ * fxl__persp_e's low 32 bits for a shift of k written to o[0]. On 32-bit
+ * cores persp.h's one-word roundings, chosen here once a stretch: the
+ * high word's (k >= 33), the two words' for k = 32, and for k <= 31 (the
+ * rolled floor's far half, where u and v reach 2^13 texels). Returns w
+ * after the last point. */
+#define FXL__RUN_AXIS_LOOP(ROUNDED)                                                                         \
+    do {                                                                                                    \
+        const int64_t p = fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);           \
+        o[0] = (ROUNDED);                                                                                   \
+        o += stride;                                                                                        \
+        w += g;                                                                                             \
+    } while (--cnt)
+
 static FXL__UNSWITCH uint64_t exact_run_axis(uint32_t *o, const int32_t stride, int32_t cnt, uint64_t w,
                                              const uint64_t g, const int k, const int roff)
 {
     if (FXL__WORD32 && k >= 33) {
-        const uint32_t bias = (uint32_t)1 << (k - 33);
-        const int sh = k - 32;
-        do {
-            const int64_t p = fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
-            o[0] = (uint32_t)fxl__asr32(fxl__i32_of_bits((uint32_t)((uint64_t)p >> 32) + bias), sh);
-            o += stride;
-            w += g;
-        } while (--cnt);
+        FXL__RUN_AXIS_LOOP(fxl__persp_lo32_hi(p, k));
     } else if (FXL__WORD32 && k == 32) {
-        do {
-            const uint64_t p = (uint64_t)fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
-            o[0] = (uint32_t)(p >> 32) + ((uint32_t)p >> 31);
-            o += stride;
-            w += g;
-        } while (--cnt);
+        FXL__RUN_AXIS_LOOP(fxl__persp_lo32_words(p, 32, (uint64_t)1 << 31));
     } else if (FXL__WORD32) {
-        const uint32_t bias = (uint32_t)1 << (k - 1);
-        const int lsh = 32 - k;
-        do {
-            const uint64_t p =
-                (uint64_t)fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]) + bias;
-            o[0] = ((uint32_t)p >> k) | ((uint32_t)(p >> 32) << lsh);
-            o += stride;
-            w += g;
-        } while (--cnt);
+        const uint32_t half = (uint32_t)1 << (k - 1);   /* k <= 31 */
+        FXL__RUN_AXIS_LOOP(fxl__bits32_at((uint64_t)p + half, k));
     } else {
-        const uint64_t bias = (uint64_t)1 << (k - 1);
-        do {
-            const int64_t p = fxl__mul_s32(fxl__i32_of_bits((uint32_t)(w >> 32)), (int32_t)o[roff]);
-            o[0] = (uint32_t)(uint64_t)fxl__asr64((int64_t)((uint64_t)p + bias), k);
-            o += stride;
-            w += g;
-        } while (--cnt);
+        const uint64_t half = (uint64_t)1 << (k - 1);
+        FXL__RUN_AXIS_LOOP(fxl__persp_lo32(p, k, half));
     }
     return w;
 }
+#undef FXL__RUN_AXIS_LOOP
 
 /* The planes at the corrections x0 + 1 and x0 + last (x0 is s's pixel) */
 typedef struct exact_run_ends {
@@ -1375,7 +1360,7 @@ static FXL__UNSWITCH int exact_run_check(const fxl__tri_t *tri, const exact_run_
     const int64_t mant_hi = (int64_t)1 << (FXL__PF + 30);
     const int64_t q_lo = tri->q_min > 1 ? tri->q_min : 1;
     const int eb_lo = tri->persp_eb[0] < tri->persp_eb[1] ? tri->persp_eb[0] : tri->persp_eb[1];
-    const int eb_hi = tri->persp_eb[0] ^ tri->persp_eb[1] ^ eb_lo;
+    const int eb_hi = tri->persp_eb[0] < tri->persp_eb[1] ? tri->persp_eb[1] : tri->persp_eb[0];
     /* |g| < 2^54 and at most 2^8 steps, or 2^46 and 2^16, and |ends| <
      * 2^62: the int64 values do not wrap between the ends */
     const int b = last <= 0x100 ? 22 : 14;
@@ -1405,7 +1390,8 @@ static FXL__UNSWITCH int exact_run_check(const fxl__tri_t *tri, const exact_run_
 }
 
 /* Returns the chunk's pixel count (lean_run's contract) or 0: not taken.
- * puv has room for FXL__RUN_BATCH + 1 pairs, pz for FXL__RUN_BATCH + 1
+ * The caller passes at least FXL__RUN_MIN corrections (cr - 1 - x0); puv
+ * has room for FXL__RUN_BATCH + 1 pairs, pz for FXL__RUN_BATCH + 1
  * values. The tests run once a span (s->run_to), over the rest of it. */
 static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0, const int32_t cr,
                                        uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv, const int with_z)
@@ -1424,8 +1410,6 @@ static FXL__UNSWITCH int32_t exact_run(const fxl__tri_t *tri, fxl__lean_t *s, co
     int ev_n[FXL__RUN_EVENTS + 1], n, e;
     uint32_t *o;
 
-    if (nc < FXL__RUN_MIN)
-        return 0;
     if (x0 + nc > s->run_to) {
         /* the tests, over the span's rest: in one chunk, its ends */
         const int32_t rest = cr - 1 - x0;
@@ -1561,11 +1545,9 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_plain(const fxl__tri_t *tr
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uv_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
-                                                            const int32_t xl, const int32_t xr, const int32_t cr,
-                                                            uint32_t *puv, int *more, uint32_t *ndiv)
+                                                            const int32_t cr, uint32_t *puv, int *more,
+                                                            uint32_t *ndiv)
 {
-    (void)xl;
-    (void)xr;
     return exact_run(tri, s, x0, cr, puv, 0, more, ndiv, 0);
 }
 
@@ -1586,7 +1568,7 @@ static FXL__UNSWITCH int32_t lean_run_uv(const fxl__tri_t *tri, const int autose
         return lean_run_uv_rowc(tri, s, x0, xl, xr, cr, puv, more, ndiv);
     if (cr - 1 - x0 >= FXL__RUN_MIN) {
         /* called one after the other, not nested: their frames do not add up */
-        const int32_t m = lean_run_uv_exact(tri, s, x0, xl, xr, cr, puv, more, ndiv);
+        const int32_t m = lean_run_uv_exact(tri, s, x0, cr, puv, more, ndiv);
         if (m)
             return m;
     }
@@ -1610,11 +1592,9 @@ static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_plain(const fxl__tri_t *t
 }
 
 static FXL__NOINLINE FXL__FLATTEN int32_t lean_run_uvz_exact(const fxl__tri_t *tri, fxl__lean_t *s, const int32_t x0,
-                                                             const int32_t xl, const int32_t xr, const int32_t cr,
-                                                             uint32_t *puv, uint32_t *pz, int *more, uint32_t *ndiv)
+                                                            const int32_t cr, uint32_t *puv, uint32_t *pz, int *more,
+                                                            uint32_t *ndiv)
 {
-    (void)xl;
-    (void)xr;
     return exact_run(tri, s, x0, cr, puv, pz, more, ndiv, 1);
 }
 
@@ -1636,7 +1616,7 @@ static FXL__UNSWITCH int32_t lean_run_uvz(const fxl__tri_t *tri, const int autos
         return lean_run_uvz_rowc(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
     if (cr - 1 - x0 >= FXL__RUN_MIN) {
         /* called one after the other, not nested: their frames do not add up */
-        const int32_t m = lean_run_uvz_exact(tri, s, x0, xl, xr, cr, puv, pz, more, ndiv);
+        const int32_t m = lean_run_uvz_exact(tri, s, x0, cr, puv, pz, more, ndiv);
         if (m)
             return m;
     }

@@ -239,7 +239,7 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
 static FXL__UNSWITCH uint32_t FXL_T_PIX1(uint16_t *dst, uint16_t *zb, uint32_t z, FXL_T_LV *L, uint32_t u,
                                          uint32_t v)
 {
-#if FXL_T_BILINEAR
+    uint32_t c;
 #if FXL_T_DEPTH
     const uint32_t zz = z >> 16;
     if (zz <= *zb)
@@ -249,31 +249,16 @@ static FXL__UNSWITCH uint32_t FXL_T_PIX1(uint16_t *dst, uint16_t *zb, uint32_t z
     (void)zb;
     (void)z;
 #endif
-    {
-        const uint32_t c = compact565(bl_sample(L, u - 0x8000u, v - 0x8000u));
-        *dst = FXL_T_SWAP ? (uint16_t)((c >> 8) | (c << 8)) : (uint16_t)c;
-    }
-    return 1u;
+#if FXL_T_BILINEAR
+    c = compact565(bl_sample(L, u - 0x8000u, v - 0x8000u));
 #else
     /* point: FXL__IDX's mask form, V = v << lw, with no step to set up (the
      * one-pixel loop's U, V set-up tested for a 1-texel-wide level every
      * pixel: ~3 Cortex-M4 instructions) */
-#if FXL_T_DEPTH
-    const uint16_t zz = (uint16_t)(z >> 16);
-    if (zz > *zb) {
-        const uint32_t c = L->tex[(((v << L->lw) & L->mv16) | (u & L->mu16)) >> 16];
-        *zb = zz;
-        *dst = FXL_T_OUT(c);
-        return 1u;
-    }
-    return 0u;
-#else
-    (void)zb;
-    (void)z;
-    *dst = FXL_T_OUT(L->tex[(((v << L->lw) & L->mv16) | (u & L->mu16)) >> 16]);
+    c = L->tex[FXL__IDX_MASKS(u, v << L->lw, L->mu16, L->mv16)];
+#endif
+    *dst = FXL_T_OUT(c);
     return 1u;
-#endif
-#endif
 }
 
 /* A run of 1-pixel segments from x (cl <= x < cr): the whole span in exact
