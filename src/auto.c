@@ -23,6 +23,7 @@
 #if FXL_HAVE_AUTO
 #include "sfloat.h"
 #include "auto.h"
+#include "recip_run.h"
 
 /* Longest log2 L <= cap with L^2 / 4 * 2^lg <= budget. */
 static int fit_log2(int32_t lg, int32_t lb, int cap)
@@ -218,6 +219,23 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
     }
 }
 
+/* Reciprocal runs (recip_run.h) serve the triangle: one level, repeat or
+ * mirror axes, no colours, and their error, under (|u| + |v|) 2^-18 + 260
+ * units (q16 texels), within the budget less its margins. |u| + |v| of
+ * the rebased vertices is within the ranges plus a period a repeat axis
+ * (two a mirror one); below 2^29 - 2^16 it keeps a and b within int32. */
+#if FXL_HAVE_RR
+static int rr_fits(const fxl__tri_t *tri)
+{
+    const uint64_t uv = tri->auto_duv + ((((uint64_t)1 << tri->tex->log2_w) + ((uint64_t)1 << tri->tex->log2_h)) << 17);
+    const int32_t b = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
+    return !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && !tri->uv_wide && !tri->has_color &&
+           uv <= ((uint64_t)1 << 29) - ((uint64_t)1 << 16) && (int64_t)(uv >> 18) + 260 <= (int64_t)b;
+}
+#else
+#define rr_fits(tri) 0
+#endif
+
 void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
 {
     /* Plane value units cancel in N / q^3 (both carry 2^PF per factor);
@@ -357,6 +375,13 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         }
         if (best_seg < best_tri + 2)
             return;
+        /* every segment short, at most 2^FXL__RR_SEG_LOG2 pixels even at
+         * the largest q: a reciprocal run at every pixel costs less than
+         * their corrections (recip_run.h) */
+        if (FXL_HAVE_RR && best_seg <= FXL__RR_SEG_LOG2 && rr_fits(tri)) {
+            tri->auto_rr = 1;
+            return;
+        }
     }
     /* Per segment. N is linear in Y, so inside the triangle |N_u|, |N_v| <=
      * their value at the top or bottom vertex < 2^(lmax + 2 steps): units

@@ -317,6 +317,7 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     tri.stats = stats;
     tri.auto_seg = 0;
     tri.auto_quad = 0;
+    tri.auto_rr = 0;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
     tri.swap = target->format == FXL_PIXFMT_RGB565_SWAP;
@@ -364,6 +365,7 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     if (tri.uv_wide & (FXL_HAVE_GENERIC ? 6u : 4u)) {
         tri.seg_log2 = 0;
         tri.auto_seg = 0;
+        tri.auto_rr = 0;
     }
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

@@ -116,6 +116,9 @@ typedef struct fxl__tri {
      * segment the affine bound rejects may still fit the bound of a
      * parabola through its exact ends, which also follows the curvature. */
     uint8_t auto_quad;           /* read through fxl__auto_quad() */
+    /* Reciprocal runs (recip_run.h): u, v from an approximate 1/q at every
+     * pixel, where segments would be short */
+    uint8_t auto_rr;
     int32_t auto_tq;             /* the quadratic bound's t_row minus the affine one's, q8 */
     int32_t qx_m;                /* q_x per pixel = qx_m * 2^qx_e, |qx_m| in [2^30, 2^31) */
     int qx_e;

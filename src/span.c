@@ -15,6 +15,7 @@
 #include "sfloat.h"
 #include "div64.h"
 #include "auto.h"
+#include "recip_run.h"
 
 /* The variants (config.h, FXL_FAST_*): FXL__V(bilinear, depth, swap) is 1
  * where that one-level variant is built. A two-level (mip-linear) variant
@@ -2193,6 +2194,48 @@ void fxl__span_setup(fxl__tri_t *tri)
     }
 }
 
+#if FXL_HAVE_RR
+/* AUTO's reciprocal runs (recip_run.h) in the generic walk: every pixel a
+ * one-pixel segment with the run's u, v and the exact z, the values the
+ * fast walks' chunks (rr_fill) give. One level, repeat or mirror axes,
+ * no colours (auto.c). */
+static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t cl, int32_t cr)
+{
+    const fxl_target_t *tg = tri->target;
+    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+    int64_t sz = fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
+    int32_t idx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
+    uint32_t written = 0;
+    fxl__seg_t seg = {0};
+    fxl__rr_t rr;
+    int32_t x;
+
+    fxl__rr_seek(tri, dY, xl, cl, &rr);
+    seg.lvl = &tri->level[0];
+    seg.n = 1;
+    for (x = cl; x < cr; x++) {
+        uint32_t r;
+        if (rr.left == 0)
+            fxl__rr_next(tri, dY, xl, &rr);
+        r = fxl__rr_recip(rr.q);
+        seg.u = fxl__rr_coord(rr.a, r);
+        seg.v = fxl__rr_coord(rr.b, r);
+        seg.z = FXL_HAVE_DEPTH ? sat_u32(sz >> FXL__PF) : 0u;
+        seg.dst = tg->pixels + idx;
+        seg.zb = tg->depth ? tg->depth + idx : 0;
+        written += fn(tri, &seg);
+        fxl__rr_skip(&rr, 1u);
+        sz = (int64_t)((uint64_t)sz + (uint64_t)tri->gpx[FXL__PZ]);
+        idx++;
+    }
+    if (tri->stats) {
+        tri->stats->divisions++;   /* as the fast walks' lean_start */
+        tri->stats->pixels += written;
+        tri->stats->spans++;
+    }
+}
+#endif
+
 /* The generic walk: any attribute set, any seg function (or a probe). */
 static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                               int32_t cl, int32_t cr)
@@ -2209,6 +2252,12 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
     const int32_t t_row = tri->auto_seg == 1 ? fxl__auto_row(tri, Yc - tri->Y0) : 0;
+#endif
+#if FXL_HAVE_RR
+    if (tri->auto_rr) {
+        draw_span_rr(tri, fn, row, xl, cl, cr);
+        return;
+    }
 #endif
 
     x = xl + ((cl - xl) >> k << k);      /* first segment that reaches the clip */

@@ -24,6 +24,7 @@
 #include "../src/div64.h"
 #include "../src/persp.h"
 #include "../src/clz.h"
+#include "../src/recip_run.h"
 
 #define RANDOM_ITERS 200000
 
@@ -951,6 +952,42 @@ static void check_sdiv64_loop(int64_t n, int64_t d)
     TEST_ASSERT_TRUE_MESSAGE(fxl__sdiv64_loop(n, d) == n / d, msg);
 }
 
+/* recip_run.h's reciprocal, 2^62 / q for q in [2^31, 2^32): relative
+ * error in (-2^-18, +2^-30) and below 2^31 (as an int32 it is positive),
+ * at every bucket's ends and on a stride through all q (every q was
+ * checked once: (-2^-18.01, +2^-30.42), the largest 0x7FFFE01E); the
+ * fast walks' seed table holds the division's seeds. */
+static void test_rr_recip_within_its_bound(void)
+{
+    double lo = 0, hi = 0;
+    uint64_t q;
+    int i;
+    char msg[120];
+    for (q = 0x80000000u; q <= 0xFFFFFFFFu; q++) {
+        const uint32_t r = fxl__rr_recip((uint32_t)q);
+        const double e = ((double)r - ldexp(1.0, 62) / (double)q) / (ldexp(1.0, 62) / (double)q);
+        lo = e < lo ? e : lo;
+        hi = e > hi ? e : hi;
+        if (r >= 0x80000000u || e <= -ldexp(1.0, -18) || e >= ldexp(1.0, -30)) {
+            snprintf(msg, sizeof msg, "q %08x: r %08x, relative error %.3g", (unsigned)q, (unsigned)r, e);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        /* each 2^23 bucket of the seed: its first and last 4 q, and every 1021st */
+        if ((q & 0x7FFFFFu) >= 3u && (q & 0x7FFFFFu) < 0x7FFFFBu)
+            q += (q & 0x7FFFFFu) + 1021u < 0x7FFFFBu ? 1020u : 0x7FFFFAu - (q & 0x7FFFFFu);
+    }
+    snprintf(msg, sizeof msg, "relative error in [%.3g, %.3g]", lo, hi);
+    TEST_MESSAGE(msg);
+#if FXL_HAVE_RR && FXL__FAST_SPANS
+    for (i = 0; i < 256; i++)
+        TEST_ASSERT_EQUAL_HEX32((0xFFFFFFFFu / (uint32_t)(2 * (256 + i) + 1)) << 8, fxl__rr_seed[i]);
+    for (q = 0x80000000u; q <= 0xFFFFFFFFu; q += 65521)
+        TEST_ASSERT_EQUAL_HEX32(fxl__rr_recip((uint32_t)q), fxl__rr_recip_tab((uint32_t)q));
+#else
+    (void)i;
+#endif
+}
+
 static void test_sdiv64_loop_truncates_like_c_division(void)
 {
     static const int64_t edge[] = {1, -1, 2, -2, 7, -7, INT32_MAX, INT32_MIN, INT64_MAX, -INT64_MAX, INT64_MIN};
@@ -1026,6 +1063,7 @@ int main(void)
     RUN_TEST(test_mul_halves_match_64bit_products);
     RUN_TEST(test_persp_lo32_word_forms_match_64bit);
     RUN_TEST(test_div_ffffffff_table_is_exact);
+    RUN_TEST(test_rr_recip_within_its_bound);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();
 }

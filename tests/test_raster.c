@@ -1243,6 +1243,179 @@ static uint32_t probe_seg_quad(const fxl__tri_t *tri, const fxl__seg_t *s)
     return probe_seg(tri, s);
 }
 
+/* A floor-like triangle for AUTO's reciprocal runs: two near vertices
+ * 10 to 30 widths either side of the bottom of a w x h target on a line
+ * rolled 20 to 60 degrees, one far vertex (depth ratio 30 to 60) in its
+ * middle, texture coordinates changing by 40 to 75 repeats: what the target shows recedes steeply all over (the rolled
+ * floor's shape). */
+static void rr_floor_tri(fxl_vertex_t v[3], int w, int h)
+{
+    const double far = 1.0 / rnd_range(60, 120), su = rnd_range(30, 50), sv = rnd_range(20, 40);
+    const double u0 = rnd_range(-500, 500) / 100.0, v0 = rnd_range(-500, 500) / 100.0;
+    const double roll = rnd_range(20, 60) * 3.14159265358979 / 180 * (rnd() & 1 ? 1 : -1);
+    const double r = rnd_range(10, 30) * (double)w, cx = rnd_range(0, w), cy = h * 1.05;
+    v[0] = vtx(cx - r * cos(roll), cy - r * sin(roll), 1.0, u0, v0);
+    v[1] = vtx(cx + r * cos(roll), cy + r * sin(roll), 1.0, u0 + su, v0);
+    v[2] = vtx(rnd_range(w / 4, 3 * w / 4), rnd_range(h / 4, h / 2), far, u0 + su * rnd_range(0, 100) / 100.0, v0 + sv);
+}
+
+static uint32_t probe_real_seg(const fxl__tri_t *tri, const fxl__seg_t *s);
+static int probe_rr;   /* the last draw was set up with reciprocal runs */
+static uint32_t probe_seg_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_rr = tri->auto_rr;
+    return probe_seg(tri, s);
+}
+
+/* AUTO's reciprocal runs (recip_run.h) on floor-like triangles, whose
+ * segments would all be short: every pixel within the budget (generic
+ * walk, against the double-precision reference, and within the runs' own
+ * bound, (|u| + |v|) 2^-18 + 260 q16 units); and on a 640-pixel-wide
+ * target, where spans cross the runs' 256-pixel blocks, the fast walks
+ * draw the generic walk's pixels, point and bilinear, with and without
+ * depth, unclipped, behind a clip that starts in a span's second block,
+ * and in bands of 7 rows. */
+void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
+{
+    enum { RW = 640, RH = 200, NT = 40, BAND = 7 };
+    static const int32_t budgets[2] = {65536 / 4, 65536 / 16};
+    static uint16_t texels[256 * 256], tex64[64 * 64], buf[320 * 240];
+    static uint16_t fast[RW * RH], gen[RW * RH], zf[RW * RH], zg[RW * RH], band[RW * BAND], zband[RW * BAND];
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    int b, k, i, zd, c, f, rr_tris = 0, rr_agree = 0;
+    double worst = 0, worst_rr = 0;
+    char msg[200];
+    TEST_NEEDS(FXL_HAVE_RR);
+    lcg_state = 6161u;
+    /* the error: 64-texel texture, 320 x 240 (probed_max_error) */
+    auto_draw_64(&d, &tex, tex64);
+    for (b = 0; b < 2; b++) {
+        d.auto_budget = budgets[b];
+        for (k = 0; k < NT; k++) {
+            fxl_vertex_t v[3];
+            double e;
+            rr_floor_tri(v, 320, 240);
+            probe_target(&t, buf, 320, 240);
+            probe_rr = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_rr));
+            rr_tris += probe_rr;
+            e = probed_max_error(v);
+            if (probe_rr) {
+                /* |u| + |v| within the rebased ranges plus a period each */
+                double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9}, bound;
+                for (i = 0; i < 3; i++) {
+                    const double c[2] = {v[i].u / 65536.0, v[i].v / 65536.0};
+                    int a;
+                    for (a = 0; a < 2; a++) {
+                        lo[a] = c[a] < lo[a] ? c[a] : lo[a];
+                        hi[a] = c[a] > hi[a] ? c[a] : hi[a];
+                    }
+                }
+                bound = (hi[0] - lo[0] + hi[1] - lo[1] + 2) * 64 / 262144.0 + 260 / 65536.0;
+                snprintf(msg, sizeof msg, "budget %.4f tri %d: max error %.5f texels, runs' bound %.5f",
+                         budgets[b] / 65536.0, k, e, bound);
+                TEST_ASSERT_TRUE_MESSAGE(e <= bound, msg);
+                worst_rr = e > worst_rr ? e : worst_rr;
+            }
+            worst = e / (budgets[b] / 65536.0) > worst ? e / (budgets[b] / 65536.0) : worst;
+            snprintf(msg, sizeof msg, "budget %.4f tri %d (runs %d): max error %.4f texels", budgets[b] / 65536.0, k,
+                     probe_rr, e);
+            TEST_ASSERT_TRUE_MESSAGE(e <= budgets[b] / 65536.0, msg);
+        }
+    }
+    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs (worst error %.5f texels); worst error / budget %.3f",
+             rr_tris, 2 * NT, worst_rr, worst);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT, msg);
+
+    /* fast against generic: a texture whose texels hold their index */
+    for (i = 0; i < 256 * 256; i++)
+        texels[i] = (uint16_t)i;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 256, 256, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.filter = FXL_FILTER_POINT;
+    d.persp = FXL_PERSP_AUTO;
+    rr_tris = 0;
+    for (k = 0; k < NT; k++) {
+        fxl_vertex_t v[3];
+        rr_floor_tri(v, RW, RH);
+        /* a 256-texel texture: a quarter of the repeats keeps the texel ranges of the 64-texel case */
+        for (i = 0; i < 3; i++) {
+            v[i].u /= 4;
+            v[i].v /= 4;
+        }
+        for (f = 0; f < (FXL_HAVE_BILINEAR ? 2 : 1); f++)
+        for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
+            for (c = 0; c < 3; c++) {
+                const fxl_rect_t cr = {301, 0, 597, RH};
+                int y0, y;
+                /* point: the texel index the generic walk computes (the
+                 * probe); bilinear: its own pixel loops */
+                d.filter = f ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+                d.depth = zd ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
+                fxl_target_init(&t, gen, RW, RH, RW, drawable_rgb565());
+                fxl_target_clear(&t, 0xDEAD);
+                pixels_to_native(gen, RW * RH, t.format);
+                if (zd) {
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zg));
+                    fxl_target_clear_depth(&t);
+                }
+                if (c == 1)
+                    fxl_target_set_clip(&t, &cr);
+                probe_last_tri = NULL;
+                probe_rr = 0;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL,
+                                                                      f ? probe_real_seg : probe_texel_index_z));
+                if (f)
+                    pixels_to_native(gen, RW * RH, t.format);
+                if (c == 2) {
+                    /* bands: each its own target, origin at its first row */
+                    for (y0 = 0; y0 < RH; y0 += BAND) {
+                        const int bh = RH - y0 < BAND ? RH - y0 : BAND;
+                        fxl_target_init(&t, band, RW, bh, RW, drawable_rgb565());
+                        fxl_target_set_origin(&t, 0, y0);
+                        fxl_target_clear(&t, 0xDEAD);
+                        if (zd) {
+                            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zband));
+                            fxl_target_clear_depth(&t);
+                        }
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                        pixels_to_native(band, RW * bh, t.format);
+                        for (y = 0; y < bh; y++)
+                            memcpy(fast + (y0 + y) * RW, band + y * RW, RW * sizeof fast[0]);
+                    }
+                } else {
+                    fxl_target_init(&t, fast, RW, RH, RW, drawable_rgb565());
+                    fxl_target_clear(&t, 0xDEAD);
+                    if (zd) {
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zf));
+                        fxl_target_clear_depth(&t);
+                    }
+                    if (c == 1)
+                        fxl_target_set_clip(&t, &cr);
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                    pixels_to_native(fast, RW * RH, t.format);
+                }
+                if (f == 0 && zd == 0 && c == 0)
+                    rr_tris += probe_last_tri && probe_last_tri->auto_rr;
+                for (i = 0; i < RW * RH; i++)
+                    if (fast[i] != gen[i]) {
+                        snprintf(msg, sizeof msg,
+                                 "triangle %d filter %d depth %d clip %d pixel (%d,%d): fast %04x generic %04x", k, f,
+                                 zd, c, i % RW, i / RW, fast[i], gen[i]);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+                rr_agree++;
+            }
+    }
+    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs; %d renders compared", rr_tris, NT, rr_agree);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 2, msg);
+}
+
 /* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with
  * one far vertex (depth ratios 3 to 30 across the triangle) and texture
  * coordinates up to +-40 repeats, seen through the generic walk: every
@@ -2759,6 +2932,7 @@ int main(void)
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
+    RUN_TEST(test_auto_reciprocal_runs_agree_and_stay_within_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
