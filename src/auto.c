@@ -219,8 +219,9 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
     }
 }
 
-/* Reciprocal runs (recip_run.h) serve the triangle: one level, repeat or
- * mirror axes, no colours, and their error, under (|u| + |v|) 2^-18 + 260
+/* Reciprocal runs (recip_run.h) serve the triangle: one level or two
+ * blended (the walks of one nearest level per segment have none), repeat
+ * or mirror axes, no colours, and their error, under (|u| + |v|) 2^-18 + 260
  * units (q16 texels), within the budget less its margins. |u| + |v| of
  * the rebased vertices is within the ranges plus a period a repeat axis
  * (two a mirror one); below 2^29 - 2^16 it keeps a and b within int32. */
@@ -229,7 +230,8 @@ static int rr_fits(const fxl__tri_t *tri)
 {
     const uint64_t uv = tri->auto_duv + ((((uint64_t)1 << tri->tex->log2_w) + ((uint64_t)1 << tri->tex->log2_h)) << 17);
     const int32_t b = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
-    return !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && !tri->uv_wide && !tri->has_color &&
+    return !fxl__signed_u(tri) && !fxl__signed_v(tri) && (tri->nlevels <= 1 || tri->mip_linear) && !tri->uv_wide &&
+           !tri->has_color &&
            uv <= ((uint64_t)1 << 29) - ((uint64_t)1 << 16) && (int64_t)(uv >> 18) + 260 <= (int64_t)b;
 }
 #else
@@ -376,9 +378,11 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         if (best_seg < best_tri + 2)
             return;
         /* every segment short, at most 2^FXL__RR_SEG_LOG2 pixels even at
-         * the largest q: a reciprocal run at every pixel costs less than
-         * their corrections (recip_run.h) */
-        if (FXL_HAVE_RR && best_seg <= FXL__RR_SEG_LOG2 && rr_fits(tri)) {
+         * the largest q, and a pixel each at the smallest (k, the cheap
+         * bound): a reciprocal run at every pixel costs less than their
+         * corrections (recip_run.h). The tunnel's steep triangles
+         * (k = 2, 4 pixels) do not pay for a run's start a span. */
+        if (FXL_HAVE_RR && k == 0 && best_seg <= FXL__RR_SEG_LOG2 && rr_fits(tri)) {
             tri->auto_rr = 1;
             return;
         }

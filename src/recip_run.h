@@ -182,17 +182,24 @@ static inline void fxl__rr_next(const fxl__tri_t *tri, int32_t dY, int32_t xl, f
     fxl__rr_origin(tri, dY, xl, rr->x, rr);
 }
 
+/* rr moved on to pixel x >= rr->x of the span from xl, over the runs
+ * between */
+static inline void fxl__rr_advance(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t x, fxl__rr_t *rr)
+{
+    while (x - rr->x >= rr->left) {
+        fxl__rr_skip(rr, (uint32_t)rr->left);
+        fxl__rr_next(tri, dY, xl, rr);
+    }
+    fxl__rr_skip(rr, (uint32_t)(x - rr->x));
+}
+
 /* The run state at pixel x of the span from xl: from its block's start,
  * over the runs before x */
 static inline void fxl__rr_seek(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t x, fxl__rr_t *rr)
 {
     fxl__rr_origin(tri, dY, xl, xl + (int32_t)(((uint32_t)(x - xl) >> FXL__RR_BLOCK_LOG2) << FXL__RR_BLOCK_LOG2),
                    rr);
-    while (x - rr->x >= rr->left) {
-        fxl__rr_skip(rr, (uint32_t)rr->left);
-        fxl__rr_next(tri, dY, xl, rr);
-    }
-    fxl__rr_skip(rr, (uint32_t)(x - rr->x));
+    fxl__rr_advance(tri, dY, xl, x, rr);
 }
 
 #endif

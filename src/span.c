@@ -1872,6 +1872,36 @@ static inline int32_t seg_lod(const fxl__tri_t *tri, int32_t lod)
     return lod;
 }
 
+#if FXL_HAVE_RR
+/* The LOD of a reciprocal run (recip_run.h) at its pixel rr->x (rr->left
+ * >= 1) for a triangle with a per-segment LOD: lod_at from the run's u, v
+ * there (rebased, |u| < 2^29: the int32 values are the 64-bit ones) and
+ * the exact q. The generic and the fast walks take it on AUTO's LOD grid
+ * (auto.h), as their segments do. */
+static FXL__NOINLINE int32_t rr_lod(const fxl__tri_t *tri, int32_t dY, const fxl__rr_t *rr)
+{
+    const int64_t q = fxl__plane_eval(&tri->q, rr->x * FXL__ONE + FXL__HALF - tri->X0, dY);
+    const uint32_t r = fxl__rr_recip(rr->q);
+    return seg_lod(tri, tri->lod_at(tri, q, fxl__i32_of_bits(fxl__rr_coord(rr->a, r)),
+                                    fxl__i32_of_bits(fxl__rr_coord(rr->b, r))));
+}
+
+/* The run state at cl and the LOD its first pixel takes: the one of the
+ * grid point at or left of cl (a span's walk from xl holds it there). */
+static int32_t rr_start(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t cl, fxl__rr_t *rr)
+{
+    if (tri->nlevels > 1 && tri->lod_per_segment) {
+        int32_t lod;
+        fxl__rr_seek(tri, dY, xl, FXL__AUTO_LOD_GRID(cl, xl), rr);
+        lod = rr_lod(tri, dY, rr);
+        fxl__rr_advance(tri, dY, xl, cl, rr);
+        return lod;
+    }
+    fxl__rr_seek(tri, dY, xl, cl, rr);
+    return tri->lod_q8_tri;
+}
+#endif
+
 #endif
 
 /* a variant's choice of walk for a triangle (span_fast.h, FXL_T_SPAN##_pick) */
@@ -2209,17 +2239,49 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
     fxl__seg_t seg = {0};
     fxl__rr_t rr;
     int32_t x;
-
+#if FXL_HAVE_MIPMAP
+    int32_t lod = rr_start(tri, dY, xl, cl, &rr);
+#else
     fxl__rr_seek(tri, dY, xl, cl, &rr);
+#endif
+
     seg.lvl = &tri->level[0];
     seg.n = 1;
     for (x = cl; x < cr; x++) {
-        uint32_t r;
+        uint32_t r, u, v;
         if (rr.left == 0)
             fxl__rr_next(tri, dY, xl, &rr);
         r = fxl__rr_recip(rr.q);
-        seg.u = fxl__rr_coord(rr.a, r);
-        seg.v = fxl__rr_coord(rr.b, r);
+        u = fxl__rr_coord(rr.a, r);
+        v = fxl__rr_coord(rr.b, r);
+        seg.u = u;
+        seg.v = v;
+#if FXL_HAVE_MIPMAP
+        if (tri->nlevels > 1) {
+            /* the generic walk's level choice for a segment (lod on
+             * AUTO's grid), its coordinates shifted to the levels */
+            int level, lsu, lsv;
+            if (tri->lod_per_segment && x != cl && FXL__AUTO_LOD_ON_GRID(x, xl))
+                lod = rr_lod(tri, dY, &rr);
+            seg.lod_q8 = lod;
+            if (tri->mip_linear) {
+                level = lod >> 8;
+                seg.lod_frac_q8 = (uint32_t)lod & 255u;
+                seg.lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
+            } else {
+                level = (lod + 128) >> 8;
+            }
+            seg.lvl = &tri->level[level];
+            lsu = level < (int)tri->tex->log2_w ? level : (int)tri->tex->log2_w;
+            lsv = level < (int)tri->tex->log2_h ? level : (int)tri->tex->log2_h;
+            seg.u = u >> lsu;
+            seg.v = v >> lsv;
+            if (seg.lvl2) {
+                seg.u2 = u >> (lsu < (int)tri->tex->log2_w ? lsu + 1 : lsu);
+                seg.v2 = v >> (lsv < (int)tri->tex->log2_h ? lsv + 1 : lsv);
+            }
+        }
+#endif
         seg.z = FXL_HAVE_DEPTH ? sat_u32(sz >> FXL__PF) : 0u;
         seg.dst = tg->pixels + idx;
         seg.zb = tg->depth ? tg->depth + idx : 0;
@@ -2229,7 +2291,7 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
         idx++;
     }
     if (tri->stats) {
-        tri->stats->divisions++;   /* as the fast walks' lean_start */
+        tri->stats->divisions++;   /* as the fast walks' FXL_T_RR */
         tri->stats->pixels += written;
         tri->stats->spans++;
     }

@@ -1113,6 +1113,133 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 }
 #endif
 
+#if FXL_HAVE_RR && FXL_T_MIPLIN
+/* A texel of one level as the pixel loops blend it (expanded 565) */
+#if FXL_T_BILINEAR
+#define FXL_T_RR_TAP(Lp, u, v) bl_sample(Lp, (u) - 0x8000u, (v) - 0x8000u)
+#else
+#define FXL_T_RR_TAP(Lp, u, v) expand565((Lp)->tex[FXL__IDX_MASKS(u, (v) << (Lp)->lw, (Lp)->mu16, (Lp)->mv16)])
+#endif
+
+/* AUTO's reciprocal runs (recip_run.h) with two levels blended: each pixel
+ * its own u, v, the LOD on AUTO's grid (rr_lod, span.c) and the batch
+ * walk's choice of levels and weight; between grid points and run ends
+ * one loop with the run state in locals. The values of the generic
+ * walk's draw_span_rr. */
+static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                   int32_t cr)
+{
+    const fxl_target_t *tg = tri->target;
+    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
+    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
+    uint16_t *dst = tg->pixels + clidx;
+#if FXL_T_DEPTH
+    uint16_t *zb = tg->depth + clidx;
+    uint64_t sz = (uint64_t)fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
+    const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
+    uint32_t written = 0;
+#endif
+    const fxl__level_t *cur = 0, *cur2 = 0;
+    fxl__rr_t rr;
+    FXL_T_LV L, L2;
+    int32_t x = cl, lod = rr_start(tri, dY, xl, cl, &rr);
+    /* the next grid point: a LOD there */
+    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : INT32_MAX;
+
+    (void)xr;
+    /* both levels' state set up once (the walk's test keeps them current) */
+    {
+        const int level = lod >> 8;
+        cur = &tri->level[level];
+        cur2 = level + 1 < tri->nlevels ? cur + 1 : cur;
+        FXL_T_LV_INIT(&L, cur, 0u, 0u);
+        FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
+    }
+    for (;;) {
+        uint32_t f;
+        int level;
+        int32_t cnt;
+        const fxl__level_t *lv;
+        if (rr.left == 0)
+            fxl__rr_next(tri, dY, xl, &rr);
+        if (x == xg) {
+            lod = rr_lod(tri, dY, &rr);
+            xg += grid;
+        }
+        /* span_walk.h's choice: weight lod_frac >> 3, none at the top level */
+        f = ((uint32_t)lod & 255u) >> 3;
+        level = lod >> 8;
+        if (level + 1 >= tri->nlevels)
+            f = 0;
+        lv = &tri->level[level];
+        if (lv != cur) {
+            cur = lv;
+            FXL_T_LV_INIT(&L, lv, 0u, 0u);
+        }
+        if (f != 0u && lv + 1 != cur2) {
+            cur2 = lv + 1;
+            FXL_T_LV_INIT(&L2, lv + 1, 0u, 0u);
+        }
+        cnt = cr - x;
+        cnt = rr.left < cnt ? rr.left : cnt;
+        cnt = xg - x < cnt ? xg - x : cnt;
+        {
+            uint32_t q = rr.q, a = rr.a, b = rr.b;
+            const uint32_t dq = rr.dq, da = rr.da, db = rr.db;
+            uint16_t *const end = dst + cnt;
+            while (dst != end) {
+                const uint32_t r = fxl__rr_recip_tab(q);
+                const uint32_t u = fxl__rr_coord(a, r) >> level, v = fxl__rr_coord(b, r) >> level;
+#if FXL_T_DEPTH
+                const uint32_t zz = fast_z((int64_t)sz) >> 16;
+                if (zz > *zb) {
+                    *zb = (uint16_t)zz;
+#endif
+                    uint32_t c;
+                    if (f != 0u)
+                        c = compact565(lerp565x(FXL_T_RR_TAP(&L, u, v), FXL_T_RR_TAP(&L2, u >> 1, v >> 1), f));
+                    else
+#if FXL_T_BILINEAR
+                        c = compact565(FXL_T_RR_TAP(&L, u, v));
+#else
+                        c = L.tex[FXL__IDX_MASKS(u, v << L.lw, L.mu16, L.mv16)];
+#endif
+                    *dst = FXL_T_OUT(c);
+#if FXL_T_DEPTH
+                    written++;
+                }
+                zb++;
+                sz += gz;
+#endif
+                dst++;
+                q += dq;
+                a += da;
+                b += db;
+            }
+            rr.q = q;
+            rr.a = a;
+            rr.b = b;
+        }
+        rr.x += cnt;
+        rr.left -= cnt;
+        x += cnt;
+        if (x >= cr)
+            break;
+    }
+    if (tri->stats) {
+        tri->stats->divisions++;   /* as draw_span_rr */
+#if FXL_T_DEPTH
+        tri->stats->pixels += written;
+#else
+        tri->stats->pixels += (uint32_t)(cr - cl);
+#endif
+        tri->stats->spans++;
+    }
+}
+#undef FXL_T_RR_TAP
+#endif
+
 #define FXL_T_WZ 0
 #include "span_walk.h"
 #if FXL_T_DEPTH && FXL__ZROW_WALK
@@ -1130,7 +1257,11 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
  * span). */
 static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 {
-    (void)tri;   /* the mip-linear variants have only the batch walk */
+    (void)tri;   /* the mip-linear variants have only the batch walk (and runs) */
+#if FXL_HAVE_RR && FXL_T_MIPLIN
+    if (tri->auto_rr)
+        return FXL_T_RR;
+#endif
 #if !FXL_T_MIPLIN
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
         fxl__span_fn walk;

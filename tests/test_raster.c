@@ -1266,25 +1266,31 @@ static uint32_t probe_seg_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
     probe_rr = tri->auto_rr;
     return probe_seg(tri, s);
 }
+static uint32_t probe_real_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_rr = tri->auto_rr;
+    return probe_real_seg(tri, s);
+}
 
 /* AUTO's reciprocal runs (recip_run.h) on floor-like triangles, whose
  * segments would all be short: every pixel within the budget (generic
  * walk, against the double-precision reference, and within the runs' own
  * bound, (|u| + |v|) 2^-18 + 260 q16 units); and on a 640-pixel-wide
  * target, where spans cross the runs' 256-pixel blocks, the fast walks
- * draw the generic walk's pixels, point and bilinear, with and without
- * depth, unclipped, behind a clip that starts in a span's second block,
- * and in bands of 7 rows. */
+ * draw the generic walk's pixels, point and bilinear on one level, and
+ * trilinear and point-mip-linear on nine (the LOD on AUTO's grid), with
+ * and without depth, unclipped, behind a clip that starts in a span's
+ * second block, and in bands of 7 rows. */
 void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
 {
     enum { RW = 640, RH = 200, NT = 40, BAND = 7 };
     static const int32_t budgets[2] = {65536 / 4, 65536 / 16};
-    static uint16_t texels[256 * 256], tex64[64 * 64], buf[320 * 240];
+    static uint16_t texels[256 * 256 * 4 / 3 + 1], tex64[64 * 64], buf[320 * 240];
     static uint16_t fast[RW * RH], gen[RW * RH], zf[RW * RH], zg[RW * RH], band[RW * BAND], zband[RW * BAND];
     fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
-    int b, k, i, zd, c, f, rr_tris = 0, rr_agree = 0;
+    int b, k, i, zd, c, f, rr_tris = 0, rr_mip_tris = 0, rr_agree = 0;
     double worst = 0, worst_rr = 0;
     char msg[200];
     TEST_NEEDS(FXL_HAVE_RR);
@@ -1330,14 +1336,14 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
     TEST_MESSAGE(msg);
     TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT, msg);
 
-    /* fast against generic: a texture whose texels hold their index */
-    for (i = 0; i < 256 * 256; i++)
-        texels[i] = (uint16_t)i;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 256, 256, FXL_TEXFMT_RGB565, 1));
+    /* fast against generic: a texture whose texels hold their index (on
+     * level 0; hashed on the levels after) */
+    for (i = 0; i < 256 * 256 * 4 / 3 + 1; i++)
+        texels[i] = (uint16_t)(i < 256 * 256 ? (uint32_t)i : (uint32_t)i * 2654435761u >> 16);
     fxl_draw_defaults(&d);
     d.texture = &tex;
-    d.filter = FXL_FILTER_POINT;
     d.persp = FXL_PERSP_AUTO;
+    d.lod = FXL_LOD_SEGMENT;
     rr_tris = 0;
     for (k = 0; k < NT; k++) {
         fxl_vertex_t v[3];
@@ -1347,14 +1353,21 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
             v[i].u /= 4;
             v[i].v /= 4;
         }
-        for (f = 0; f < (FXL_HAVE_BILINEAR ? 2 : 1); f++)
+        for (f = 0; f < 4; f++)
         for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
             for (c = 0; c < 3; c++) {
                 const fxl_rect_t cr = {301, 0, 597, RH};
                 int y0, y;
-                /* point: the texel index the generic walk computes (the
-                 * probe); bilinear: its own pixel loops */
-                d.filter = f ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+                /* f 0, point: the texel index the generic walk computes (the
+                 * probe); 1 bilinear, 2 trilinear, 3 point-mip-linear: its
+                 * own pixel loops */
+                if ((f & 1) && !FXL_HAVE_BILINEAR)
+                    continue;
+                if (f >= 2 && !FXL_HAVE_MIPMAP)
+                    continue;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 256, 256, FXL_TEXFMT_RGB565, f >= 2 ? 9 : 1));
+                d.filter = f == 1 || f == 2 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+                d.mip = f >= 2 ? FXL_MIP_LINEAR : FXL_MIP_NONE;
                 d.depth = zd ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
                 fxl_target_init(&t, gen, RW, RH, RW, drawable_rgb565());
                 fxl_target_clear(&t, 0xDEAD);
@@ -1368,7 +1381,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 probe_last_tri = NULL;
                 probe_rr = 0;
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL,
-                                                                      f ? probe_real_seg : probe_texel_index_z));
+                                                                      f ? probe_real_rr : probe_texel_index_z));
                 if (f)
                     pixels_to_native(gen, RW * RH, t.format);
                 if (c == 2) {
@@ -1401,6 +1414,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 }
                 if (f == 0 && zd == 0 && c == 0)
                     rr_tris += probe_last_tri && probe_last_tri->auto_rr;
+                if (f == 2 && zd == 0 && c == 0)
+                    rr_mip_tris += probe_rr;
                 for (i = 0; i < RW * RH; i++)
                     if (fast[i] != gen[i]) {
                         snprintf(msg, sizeof msg,
@@ -1411,9 +1426,10 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 rr_agree++;
             }
     }
-    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs; %d renders compared", rr_tris, NT, rr_agree);
+    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs (%d with nine levels); %d renders compared",
+             rr_tris, NT, rr_mip_tris, rr_agree);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 2, msg);
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 2 && (!FXL_HAVE_MIPMAP || rr_mip_tris >= NT / 2), msg);
 }
 
 /* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with
