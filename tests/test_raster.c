@@ -1271,6 +1271,11 @@ static uint32_t probe_real_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
     probe_rr = tri->auto_rr;
     return probe_real_seg(tri, s);
 }
+static uint32_t probe_index_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_rr = tri->auto_rr;
+    return probe_texel_index_z(tri, s);
+}
 
 /* AUTO's reciprocal runs (recip_run.h) on floor-like triangles, whose
  * segments would all be short: every pixel within the budget (generic
@@ -1381,7 +1386,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 probe_last_tri = NULL;
                 probe_rr = 0;
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL,
-                                                                      f ? probe_real_rr : probe_texel_index_z));
+                                                                      f ? probe_real_rr : probe_index_rr));
                 if (f)
                     pixels_to_native(gen, RW * RH, t.format);
                 if (c == 2) {
@@ -1413,7 +1418,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                     pixels_to_native(fast, RW * RH, t.format);
                 }
                 if (f == 0 && zd == 0 && c == 0)
-                    rr_tris += probe_last_tri && probe_last_tri->auto_rr;
+                    rr_tris += probe_rr;
                 if (f == 2 && zd == 0 && c == 0)
                     rr_mip_tris += probe_rr;
                 for (i = 0; i < RW * RH; i++)
