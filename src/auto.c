@@ -228,11 +228,14 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
 #if FXL_HAVE_RR
 static int rr_fits(const fxl__tri_t *tri)
 {
-    const uint64_t uv = tri->auto_duv + ((((uint64_t)1 << tri->tex->log2_w) + ((uint64_t)1 << tri->tex->log2_h)) << 17);
-    const int32_t b = budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
-    return !fxl__signed_u(tri) && !fxl__signed_v(tri) && (tri->nlevels <= 1 || tri->mip_linear) && !tri->uv_wide &&
-           !tri->has_color &&
-           uv <= ((uint64_t)1 << 29) - ((uint64_t)1 << 16) && (int64_t)(uv >> 18) + 260 <= (int64_t)b;
+    uint32_t uv;
+    if (fxl__signed_u(tri) || fxl__signed_v(tri) || (tri->nlevels > 1 && !tri->mip_linear) || tri->uv_wide ||
+        tri->has_color || tri->auto_duv >= ((uint64_t)1 << 29))
+        return 0;
+    /* in 32 bits: the ranges below 2^29, the periods at most 2^30 */
+    uv = (uint32_t)tri->auto_duv + ((((uint32_t)1 << tri->tex->log2_w) + ((uint32_t)1 << tri->tex->log2_h)) << 17);
+    return uv <= ((uint32_t)1 << 29) - ((uint32_t)1 << 16) &&
+           (int32_t)(uv >> 18) + 260 <= budget_less_margins(tri->draw, FXL_Q16_ONE / 64);
 }
 #else
 #define rr_fits(tri) 0

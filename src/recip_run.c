@@ -47,45 +47,39 @@ const uint32_t fxl__rr_seed[256] = {
 
 void fxl__rr_origin(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t x, fxl__rr_t *rr)
 {
-    const int32_t dX = x * FXL__ONE + FXL__HALF - tri->X0;
     /* the block's end: runs restart there */
     const int32_t xe = xl + (int32_t)((((uint32_t)(x - xl) >> FXL__RR_BLOCK_LOG2) + 1u) << FXL__RR_BLOCK_LOG2);
-    int64_t q = fxl__plane_eval(&tri->q, dX, dY);
+    int64_t q = fxl__rr_plane(tri, &tri->q, x, dY);
     const int64_t gq = tri->gpx[FXL__PQ];
     int32_t left = xe - x;
-    int n, t, ax;
+    int n, t;
 
-    /* q below the clamp (a rounding at a sliver's tip): one pixel at q_min,
-     * as the exact correction clamps it */
-    const int clamped = q <= tri->q_min;
-    if (clamped)
+    /* q at or below the clamp (a rounding at a sliver's tip): one pixel at
+     * q_min, as the exact correction clamps it */
+    if (q <= tri->q_min) {
         q = tri->q_min;
+        left = 1;
+    }
     n = fxl__clz64_inline((uint64_t)q);
     rr->q = (uint32_t)(((uint64_t)q << n) >> 32);
     /* u = S 2^shift / q (the planes' scale) with q = rr->q 2^(32 - n) and
      * R = 2^62 / rr->q: a = S 2^(shift + n - 62), shift = eb + 95 - PF */
-    for (ax = 0; ax < 2; ax++) {
-        const int64_t s = fxl__plane_eval(&tri->a[FXL__AU + ax], dX, dY);
-        t = tri->persp_eb[ax] + 33 - FXL__PF + n;
-        if (ax == 0) {
-            rr->a = fxl__rr_scale(s, t);
-            rr->da = fxl__rr_scale(tri->gpx[FXL__PA + FXL__AU], t);
-        } else {
-            rr->b = fxl__rr_scale(s, t);
-            rr->db = fxl__rr_scale(tri->gpx[FXL__PA + FXL__AV], t);
-        }
-    }
-    /* q's step, gq 2^(n - 32); the run ends before q leaves [2^31, 2^32) */
+    t = tri->persp_eb[0] + 33 - FXL__PF + n;
+    rr->a = fxl__rr_scale(fxl__rr_plane(tri, &tri->a[FXL__AU], x, dY), t);
+    rr->da = fxl__rr_scale(tri->gpx[FXL__PA + FXL__AU], t);
+    t = tri->persp_eb[1] + 33 - FXL__PF + n;
+    rr->b = fxl__rr_scale(fxl__rr_plane(tri, &tri->a[FXL__AV], x, dY), t);
+    rr->db = fxl__rr_scale(tri->gpx[FXL__PA + FXL__AV], t);
+    /* q's step, gq 2^(n - 32), where it is below 2^31 in magnitude (|gq|
+     * has more than n leading zeros); else a run of one. The run ends
+     * before q leaves [2^31, 2^32). */
     rr->dq = 0;
-    if (clamped) {
-        left = 1;
-    } else if (gq != 0) {
-        const uint64_t g = gq < 0 ? (uint64_t)0 - (uint64_t)gq : (uint64_t)gq;
-        if (n >= 32 ? g >= (UINT64_C(1) << (63 - n)) : (g >> (32 - n)) >= (UINT64_C(1) << 31)) {
-            left = 1;   /* 2^31 or more a pixel: a run of one */
-        } else {
-            rr->dq = n >= 32 ? (uint32_t)((uint64_t)gq << (n - 32)) : (uint32_t)(uint64_t)fxl__asr64(gq, 32 - n);
+    if (left > 1 && gq != 0) {
+        if (fxl__clz64_inline(gq < 0 ? (uint64_t)0 - (uint64_t)gq : (uint64_t)gq) > n) {
+            rr->dq = fxl__rr_scale(gq, n - 32);
             left = fxl__rr_len(rr->q, rr->dq, left);
+        } else {
+            left = 1;
         }
     }
     rr->x = x;

@@ -145,6 +145,18 @@ static inline int32_t fxl__rr_len(uint32_t q, uint32_t dq, int32_t cap)
     return run < (uint32_t)cap ? (int32_t)run : cap;
 }
 
+/* Plane p at pixel x of the row dY below the reference vertex: the walks'
+ * inline evaluation, or at -Os the one out-of-line copy (the same
+ * modular arithmetic) */
+static inline int64_t fxl__rr_plane(const fxl__tri_t *tri, const fxl__plane_t *p, int32_t x, int32_t dY)
+{
+#if defined(__OPTIMIZE_SIZE__)
+    return fxl__plane_at(p, tri->X0, 0, x * FXL__ONE + FXL__HALF, dY);
+#else
+    return fxl__plane_eval(p, x * FXL__ONE + FXL__HALF - tri->X0, dY);
+#endif
+}
+
 /* A run's start at pixel x of the row dY below the reference vertex, in
  * the span from xl: exact plane values, normalised. */
 void fxl__rr_origin(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t x, fxl__rr_t *rr);

@@ -1880,7 +1880,7 @@ static inline int32_t seg_lod(const fxl__tri_t *tri, int32_t lod)
  * (auto.h), as their segments do. */
 static FXL__NOINLINE int32_t rr_lod(const fxl__tri_t *tri, int32_t dY, const fxl__rr_t *rr)
 {
-    const int64_t q = fxl__plane_eval(&tri->q, rr->x * FXL__ONE + FXL__HALF - tri->X0, dY);
+    const int64_t q = fxl__rr_plane(tri, &tri->q, rr->x, dY);
     const uint32_t r = fxl__rr_recip(rr->q);
     return seg_lod(tri, tri->lod_at(tri, q, fxl__i32_of_bits(fxl__rr_coord(rr->a, r)),
                                     fxl__i32_of_bits(fxl__rr_coord(rr->b, r))));
@@ -2233,7 +2233,7 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
 {
     const fxl_target_t *tg = tri->target;
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-    int64_t sz = fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
+    int64_t sz = fxl__rr_plane(tri, &tri->z, cl, dY);
     int32_t idx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
     uint32_t written = 0;
     fxl__seg_t seg = {0};
@@ -2260,7 +2260,7 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
         if (tri->nlevels > 1) {
             /* the generic walk's level choice for a segment (lod on
              * AUTO's grid), its coordinates shifted to the levels */
-            int level, lsu, lsv;
+            int level;
             if (tri->lod_per_segment && x != cl && FXL__AUTO_LOD_ON_GRID(x, xl))
                 lod = rr_lod(tri, dY, &rr);
             seg.lod_q8 = lod;
@@ -2271,15 +2271,14 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
             } else {
                 level = (lod + 128) >> 8;
             }
+            /* repeat and mirror axes (auto.c): shifted by the level alone,
+             * as the fast walks do (an axis of one texel reads texel 0
+             * whatever its shift) */
             seg.lvl = &tri->level[level];
-            lsu = level < (int)tri->tex->log2_w ? level : (int)tri->tex->log2_w;
-            lsv = level < (int)tri->tex->log2_h ? level : (int)tri->tex->log2_h;
-            seg.u = u >> lsu;
-            seg.v = v >> lsv;
-            if (seg.lvl2) {
-                seg.u2 = u >> (lsu < (int)tri->tex->log2_w ? lsu + 1 : lsu);
-                seg.v2 = v >> (lsv < (int)tri->tex->log2_h ? lsv + 1 : lsv);
-            }
+            seg.u = u >> level;
+            seg.v = v >> level;
+            seg.u2 = seg.u >> 1;
+            seg.v2 = seg.v >> 1;
         }
 #endif
         seg.z = FXL_HAVE_DEPTH ? sat_u32(sz >> FXL__PF) : 0u;
