@@ -2224,6 +2224,26 @@ void fxl__span_setup(fxl__tri_t *tri)
     }
 }
 
+#if FXL_HAVE_MIPMAP
+/* A segment's levels from its LOD (q8, clamped): the nearest one, or with
+ * two blended the lower one, the weight and the next (none at the top).
+ * Returns the level. */
+static int seg_levels(const fxl__tri_t *tri, int32_t lod, fxl__seg_t *seg)
+{
+    int level;
+    seg->lod_q8 = lod;
+    if (tri->mip_linear) {
+        level = lod >> 8;
+        seg->lod_frac_q8 = (uint32_t)lod & 255u;
+        seg->lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
+    } else {
+        level = (lod + 128) >> 8;
+    }
+    seg->lvl = &tri->level[level];
+    return level;
+}
+#endif
+
 #if FXL_HAVE_RR
 /* AUTO's reciprocal runs (recip_run.h) in the generic walk: every pixel a
  * one-pixel segment with the run's u, v and the exact z, the values the
@@ -2263,18 +2283,10 @@ static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int
             int level;
             if (tri->lod_per_segment && x != cl && FXL__AUTO_LOD_ON_GRID(x, xl))
                 lod = rr_lod(tri, dY, &rr);
-            seg.lod_q8 = lod;
-            if (tri->mip_linear) {
-                level = lod >> 8;
-                seg.lod_frac_q8 = (uint32_t)lod & 255u;
-                seg.lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
-            } else {
-                level = (lod + 128) >> 8;
-            }
+            level = seg_levels(tri, lod, &seg);
             /* repeat and mirror axes (auto.c): shifted by the level alone,
              * as the fast walks do (an axis of one texel reads texel 0
              * whatever its shift) */
-            seg.lvl = &tri->level[level];
             seg.u = u >> level;
             seg.v = v >> level;
             seg.u2 = seg.u >> 1;
@@ -2406,14 +2418,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
 #endif
                         lod = lod_held = seg_lod(tri, tri->lod_at(tri, pv0[PQ], p0.u64, p0.v64));
                 }
-                seg.lod_q8 = lod;
-                if (tri->mip_linear) {
-                    level = lod >> 8;
-                    seg.lod_frac_q8 = (uint32_t)lod & 255u;
-                    seg.lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
-                } else {
-                    level = (lod + 128) >> 8;
-                }
+                level = seg_levels(tri, lod, &seg);
             }
 #endif
             seg.lvl = &tri->level[level];
