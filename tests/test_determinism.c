@@ -375,7 +375,10 @@ void test_determinism_stress_cases_write_only_inside_their_clip(void)
         TEST_ASSERT_GREATER_OR_EQUAL(1400000, pixels[0]);
         TEST_ASSERT_GREATER_OR_EQUAL(2500, drawn[1]);
         TEST_ASSERT_GREATER_OR_EQUAL(150000, pixels[1]);
-        check_stress_golden(lines);
+        /* AUTO's quadratic segments and reciprocal runs choose other
+         * pixels within the budget: the golden lines are every feature's */
+        if (FXL_HAVE_QUAD && FXL_HAVE_RR)
+            check_stress_golden(lines);
     }
 }
 

