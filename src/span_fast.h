@@ -311,142 +311,6 @@ static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg,
     return x;
 }
 
-#if FXL_HAVE_RR && !FXL_T_MIPLIN
-#if !FXL_T_DEPTH
-#define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
-/* A run's pixels without depth, out of line: in the run walk's frame GCC
- * spilled ~4 Cortex-M4 instructions a pixel more. st: the steps of q, a
- * and b; m (point): wm, vs, hm of FXL_T_RR. */
-static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                       const uint32_t *st, FXL_T_LV *L, const uint32_t *m)
-{
-#if FXL_T_BILINEAR
-    (void)m;
-#else
-    const uint16_t *const tex = L->tex;
-    const uint32_t wm = m[0], vs = m[1], hm = m[2];
-#endif
-    uint16_t *const end = dst + n;
-    do {
-        const uint32_t r = fxl__rr_recip_tab(q);
-        const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
-#if FXL_T_BILINEAR
-        (void)FXL_T_PIX1(dst, 0, 0u, L, u, v);
-#else
-        *dst = FXL_T_OUT(tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
-#endif
-        dst++;
-        q += st[0];
-        a += st[1];
-        b += st[2];
-    } while (dst != end);
-}
-#endif
-
-/* AUTO's reciprocal runs (recip_run.h) on one level: each run's pixels in
- * one loop, a reciprocal, two products and the pixel, the run state in
- * locals. The values of the generic walk's draw_span_rr (span.c). */
-static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                   int32_t cr)
-{
-    const fxl_target_t *tg = tri->target;
-    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
-    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-    uint16_t *dst = tg->pixels + clidx;
-#if FXL_T_DEPTH
-    uint16_t *zb = tg->depth + clidx;
-    uint64_t sz = (uint64_t)fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
-    const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
-    uint32_t written = 0;
-#endif
-    fxl__rr_t rr;
-    FXL_T_LV L;
-    int32_t x = cl;
-#if !FXL_T_BILINEAR
-    uint32_t wm, vs, hm;
-#endif
-
-    (void)xr;
-    fxl__rr_seek(tri, dY, xl, cl, &rr);
-    FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, fxl__rr_recip(rr.q)),
-                  fxl__rr_coord(rr.b, fxl__rr_recip(rr.q)));
-#if !FXL_T_BILINEAR
-    /* FXL__IDX_MASKS's texel as column | row << lw: the column's mask and
-     * the row's shift and mask (AND with a shifted operand on a Cortex-M) */
-    wm = L.mu16 >> 16;
-    vs = 16u - L.lw;
-    hm = L.mv16 >> 16;
-#endif
-    for (;;) {
-        const int32_t cnt = cr - x < rr.left ? cr - x : rr.left;
-        uint32_t q = rr.q, a = rr.a, b = rr.b;
-        const uint32_t dq = rr.dq, da = rr.da, db = rr.db;
-        uint16_t *const end = dst + cnt;
-#if !FXL_T_DEPTH
-        {
-#if FXL_T_BILINEAR
-            const uint32_t st[3] = {dq, da, db}, *const msk = 0;
-#else
-            const uint32_t st[3] = {dq, da, db}, msk[3] = {wm, vs, hm};
-#endif
-            FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L, msk);
-            dst = end;
-            q += dq * (uint32_t)cnt;
-            a += da * (uint32_t)cnt;
-            b += db * (uint32_t)cnt;
-        }
-#endif
-        while (dst != end) {
-            const uint32_t r = fxl__rr_recip_tab(q);
-            const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
-#if FXL_T_DEPTH
-            const uint32_t z = fast_z((int64_t)sz);
-#endif
-#if FXL_T_BILINEAR && FXL_T_DEPTH
-            written += FXL_T_PIX1(dst, zb, z, &L, u, v);
-#elif FXL_T_BILINEAR
-            (void)FXL_T_PIX1(dst, 0, 0u, &L, u, v);
-#else
-#if FXL_T_DEPTH
-            if ((z >> 16) > *zb) {
-                *zb = (uint16_t)(z >> 16);
-                *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
-                written++;
-            }
-#else
-            *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
-#endif
-#endif
-#if FXL_T_DEPTH
-            zb++;
-            sz += gz;
-#endif
-            dst++;
-            q += dq;
-            a += da;
-            b += db;
-        }
-        x += cnt;
-        if (x >= cr)
-            break;
-        rr.q = q;
-        rr.a = a;
-        rr.b = b;
-        rr.x = x;
-        rr.left = 0;
-        fxl__rr_next(tri, dY, xl, &rr);
-    }
-    if (tri->stats) {
-        tri->stats->divisions++;   /* as draw_span_rr */
-#if FXL_T_DEPTH
-        tri->stats->pixels += written;
-#else
-        tri->stats->pixels += (uint32_t)(cr - cl);
-#endif
-        tri->stats->spans++;
-    }
-}
-#endif
 
 /* The common cases in one loop: segments on one level (no LOD per
  * segment), of 2^k >= 2 pixels or of adaptive lengths (autoseg, a
@@ -1113,7 +977,40 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 }
 #endif
 
-#if FXL_HAVE_RR && FXL_T_MIPLIN
+
+#if FXL_HAVE_RR
+#if !FXL_T_DEPTH && !FXL_T_MIPLIN
+#define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
+/* A run's pixels without depth, out of line: in the run walk's frame GCC
+ * spilled ~4 Cortex-M4 instructions a pixel more. st: the steps of q, a
+ * and b; m (point): wm, vs, hm of FXL_T_RR. */
+static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                       const uint32_t *st, FXL_T_LV *L, const uint32_t *m)
+{
+#if FXL_T_BILINEAR
+    (void)m;
+#else
+    const uint16_t *const tex = L->tex;
+    const uint32_t wm = m[0], vs = m[1], hm = m[2];
+#endif
+    uint16_t *const end = dst + n;
+    do {
+        const uint32_t r = fxl__rr_recip_tab(q);
+        const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
+#if FXL_T_BILINEAR
+        (void)FXL_T_PIX1(dst, 0, 0u, L, u, v);
+#else
+        *dst = FXL_T_OUT(tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+#endif
+        dst++;
+        q += st[0];
+        a += st[1];
+        b += st[2];
+    } while (dst != end);
+}
+#endif
+
+#if FXL_T_MIPLIN
 /* A texel of one level as the pixel loops blend it (expanded 565) */
 #if FXL_T_BILINEAR
 #define FXL_T_RR_TAP(Lp, u, v) bl_sample(Lp, (u) - 0x8000u, (v) - 0x8000u)
@@ -1121,18 +1018,20 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 #define FXL_T_RR_TAP(Lp, u, v) expand565((Lp)->tex[FXL__IDX_MASKS(u, (v) << (Lp)->lw, (Lp)->mu16, (Lp)->mv16)])
 #endif
 
-/* AUTO's reciprocal runs (recip_run.h) with two levels blended: each pixel
- * its own u, v, the LOD on AUTO's grid (rr_lod, span.c) and the batch
- * walk's choice of levels and weight; between grid points and run ends
- * one loop with the run state in locals. The values of the generic
- * walk's draw_span_rr. */
+#endif
+
+/* AUTO's reciprocal runs (recip_run.h). On one level: each run's pixels in
+ * one loop, a reciprocal, two products and the pixel, the run state in
+ * locals. With two levels blended: each pixel its own u, v, the LOD on
+ * AUTO's grid (rr_lod, span.c) and the batch walk's choice of levels and
+ * weight, one loop between grid points and run ends. The values of the
+ * generic walk's draw_span_rr (span.c). */
 static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
                                    int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
     const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
     const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
     uint16_t *dst = tg->pixels + clidx;
 #if FXL_T_DEPTH
     uint16_t *zb = tg->depth + clidx;
@@ -1140,6 +1039,8 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
     const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
     uint32_t written = 0;
 #endif
+#if FXL_T_MIPLIN
+    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
     const fxl__level_t *cur = 0, *cur2 = 0;
     fxl__rr_t rr;
     FXL_T_LV L, L2;
@@ -1227,6 +1128,85 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
         if (x >= cr)
             break;
     }
+#else
+    fxl__rr_t rr;
+    FXL_T_LV L;
+    int32_t x = cl;
+#if !FXL_T_BILINEAR
+    uint32_t wm, vs, hm;
+#endif
+
+    (void)xr;
+    fxl__rr_seek(tri, dY, xl, cl, &rr);
+    FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, fxl__rr_recip(rr.q)),
+                  fxl__rr_coord(rr.b, fxl__rr_recip(rr.q)));
+#if !FXL_T_BILINEAR
+    /* FXL__IDX_MASKS's texel as column | row << lw: the column's mask and
+     * the row's shift and mask (AND with a shifted operand on a Cortex-M) */
+    wm = L.mu16 >> 16;
+    vs = 16u - L.lw;
+    hm = L.mv16 >> 16;
+#endif
+    for (;;) {
+        const int32_t cnt = cr - x < rr.left ? cr - x : rr.left;
+        uint32_t q = rr.q, a = rr.a, b = rr.b;
+        const uint32_t dq = rr.dq, da = rr.da, db = rr.db;
+        uint16_t *const end = dst + cnt;
+#if !FXL_T_DEPTH
+        {
+#if FXL_T_BILINEAR
+            const uint32_t st[3] = {dq, da, db}, *const msk = 0;
+#else
+            const uint32_t st[3] = {dq, da, db}, msk[3] = {wm, vs, hm};
+#endif
+            FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L, msk);
+            dst = end;
+            q += dq * (uint32_t)cnt;
+            a += da * (uint32_t)cnt;
+            b += db * (uint32_t)cnt;
+        }
+#endif
+        while (dst != end) {
+            const uint32_t r = fxl__rr_recip_tab(q);
+            const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
+#if FXL_T_DEPTH
+            const uint32_t z = fast_z((int64_t)sz);
+#endif
+#if FXL_T_BILINEAR && FXL_T_DEPTH
+            written += FXL_T_PIX1(dst, zb, z, &L, u, v);
+#elif FXL_T_BILINEAR
+            (void)FXL_T_PIX1(dst, 0, 0u, &L, u, v);
+#else
+#if FXL_T_DEPTH
+            if ((z >> 16) > *zb) {
+                *zb = (uint16_t)(z >> 16);
+                *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+                written++;
+            }
+#else
+            *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+#endif
+#endif
+#if FXL_T_DEPTH
+            zb++;
+            sz += gz;
+#endif
+            dst++;
+            q += dq;
+            a += da;
+            b += db;
+        }
+        x += cnt;
+        if (x >= cr)
+            break;
+        rr.q = q;
+        rr.a = a;
+        rr.b = b;
+        rr.x = x;
+        rr.left = 0;
+        fxl__rr_next(tri, dY, xl, &rr);
+    }
+#endif
     if (tri->stats) {
         tri->stats->divisions++;   /* as draw_span_rr */
 #if FXL_T_DEPTH
@@ -1237,7 +1217,6 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
         tri->stats->spans++;
     }
 }
-#undef FXL_T_RR_TAP
 #endif
 
 #define FXL_T_WZ 0
@@ -1334,6 +1313,9 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_RR
 #ifdef FXL_T_RRLOOP
 #undef FXL_T_RRLOOP
+#endif
+#ifdef FXL_T_RR_TAP
+#undef FXL_T_RR_TAP
 #endif
 #undef FXL_T_RUN
 #undef FXL_T_PIX1
