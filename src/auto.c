@@ -221,7 +221,8 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
 
 /* Reciprocal runs (recip_run.h) serve the triangle: one level or two
  * blended (the walks of one nearest level per segment have none), repeat
- * or mirror axes, no colours, and their error, under (|u| + |v|) 2^-18 + 260
+ * or mirror axes, no colours, not uv_wide (raster.c's clamp and needle
+ * cases, which divide at every pixel, never get here), and their error, under (|u| + |v|) 2^-18 + 260
  * units (q16 texels), within the budget less its margins. |u| + |v| of
  * the rebased vertices is within the ranges plus a period a repeat axis
  * (two a mirror one); below 2^29 - 2^16 it keeps a and b within int32. */
@@ -385,7 +386,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * bound): a reciprocal run at every pixel costs less than their
          * corrections (recip_run.h). The tunnel's steep triangles
          * (k = 2, 4 pixels) do not pay for a run's start a span. */
-        if (FXL_HAVE_RR && k == 0 && best_seg <= FXL__RR_SEG_LOG2 && rr_fits(tri)) {
+        if (k == 0 && best_seg <= FXL__RR_SEG_LOG2 && rr_fits(tri)) {
             tri->auto_rr = 1;
             return;
         }

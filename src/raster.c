@@ -365,7 +365,6 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     if (tri.uv_wide & (FXL_HAVE_GENERIC ? 6u : 4u)) {
         tri.seg_log2 = 0;
         tri.auto_seg = 0;
-        tri.auto_rr = 0;
     }
     fxl__span_setup(&tri);
     fn = probe ? probe : fxl__pick_seg_fn(&tri);

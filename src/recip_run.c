@@ -1,6 +1,6 @@
 /* recip_run.c - where FXL_PERSP_AUTO's reciprocal runs start (recip_run.h).
- * Shared by the generic walk and the fast walks' chunks, so both step from
- * the same starts. */
+ * Shared by the generic walk and the fast walks, so both step from the
+ * same starts. */
 #include "recip_run.h"
 
 #if FXL_HAVE_RR

@@ -17,8 +17,9 @@
  * a run starts (fxl__rr_origin: exact plane values, one normalisation) at
  * xl + j 2^FXL__RR_BLOCK_LOG2 and wherever the stepped q leaves its octave,
  * and each pixel's values are the run start's stepped to it. The generic
- * walk (span.c) and the fast walks' chunks (rr_fill) share these functions,
- * so they agree bit for bit (test_fast_and_generic_walks_agree).
+ * walk (span.c, draw_span_rr) and the fast walks (span_fast.h, FXL_T_RR)
+ * share these functions, so they agree bit for bit
+ * (test_auto_reciprocal_runs_agree_and_stay_within_budget).
  *
  * Error (q16 texels of level 0), for |u| < 2^29 - 2^16 (auto.c keeps
  * |u| + |v| of the vertices below it; |a| < 4 |u| + 2^8 < 2^31):

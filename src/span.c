@@ -2247,8 +2247,8 @@ static int seg_levels(const fxl__tri_t *tri, int32_t lod, fxl__seg_t *seg)
 #if FXL_HAVE_RR
 /* AUTO's reciprocal runs (recip_run.h) in the generic walk: every pixel a
  * one-pixel segment with the run's u, v and the exact z, the values the
- * fast walks' chunks (rr_fill) give. One level, repeat or mirror axes,
- * no colours (auto.c). */
+ * fast walks' FXL_T_RR gives. One level or two blended, repeat or mirror
+ * axes, no colours (auto.c). */
 static void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t cl, int32_t cr)
 {
     const fxl_target_t *tg = tri->target;
@@ -2325,12 +2325,6 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
     const int32_t t_row = tri->auto_seg == 1 ? fxl__auto_row(tri, Yc - tri->Y0) : 0;
-#endif
-#if FXL_HAVE_RR
-    if (tri->auto_rr) {
-        draw_span_rr(tri, fn, row, xl, cl, cr);
-        return;
-    }
 #endif
 
     x = xl + ((cl - xl) >> k << k);      /* first segment that reaches the clip */
@@ -2498,6 +2492,12 @@ void fxl__draw_span(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t 
      * no segment's pixel count is negative. Checked here, once a span. */
     if (!(xl <= cl && cl < cr && cr <= xr))
         return;
+#if FXL_HAVE_RR
+    if (tri->auto_rr) {
+        draw_span_rr(tri, fn, row, xl, cl, cr);
+        return;
+    }
+#endif
     draw_span_generic(tri, fn, row, xl, xr, cl, cr);
 }
 

@@ -981,17 +981,17 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 #if FXL_HAVE_RR
 #if !FXL_T_DEPTH && !FXL_T_MIPLIN
 #define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
-/* A run's pixels without depth, out of line: in the run walk's frame GCC
- * spilled ~4 Cortex-M4 instructions a pixel more. st: the steps of q, a
- * and b; m (point): wm, vs, hm of FXL_T_RR. */
+/* A run's pixels on one level without depth, out of line: in the run
+ * walk's frame GCC spilled ~4 Cortex-M4 instructions a pixel more. st: the
+ * steps of q, a and b. A point texel is FXL__IDX_MASKS's as column | row
+ * << lw: the column's mask and the row's shift and mask (AND with a
+ * shifted operand on a Cortex-M). */
 static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                       const uint32_t *st, FXL_T_LV *L, const uint32_t *m)
+                                       const uint32_t *st, FXL_T_LV *L)
 {
-#if FXL_T_BILINEAR
-    (void)m;
-#else
+#if !FXL_T_BILINEAR
     const uint16_t *const tex = L->tex;
-    const uint32_t wm = m[0], vs = m[1], hm = m[2];
+    const uint32_t wm = L->mu16 >> 16, vs = 16u - L->lw, hm = L->mv16 >> 16;
 #endif
     uint16_t *const end = dst + n;
     do {
@@ -1017,15 +1017,13 @@ static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uin
 #else
 #define FXL_T_RR_TAP(Lp, u, v) expand565((Lp)->tex[FXL__IDX_MASKS(u, (v) << (Lp)->lw, (Lp)->mu16, (Lp)->mv16)])
 #endif
-
 #endif
 
-/* AUTO's reciprocal runs (recip_run.h). On one level: each run's pixels in
- * one loop, a reciprocal, two products and the pixel, the run state in
- * locals. With two levels blended: each pixel its own u, v, the LOD on
- * AUTO's grid (rr_lod, span.c) and the batch walk's choice of levels and
- * weight, one loop between grid points and run ends. The values of the
- * generic walk's draw_span_rr (span.c). */
+/* AUTO's reciprocal runs (recip_run.h): from cl, chunks of pixels that
+ * share a run (and, with two levels blended, a LOD of AUTO's grid: rr_lod,
+ * span.c, with the batch walk's choice of levels and weight), each one
+ * loop of a reciprocal, two products and the pixel with the run state in
+ * locals. The values of the generic walk's draw_span_rr (span.c). */
 static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
                                    int32_t cr)
 {
@@ -1039,31 +1037,45 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
     const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
     uint32_t written = 0;
 #endif
+    fxl__rr_t rr;
+    int32_t x = cl;
 #if FXL_T_MIPLIN
     const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
-    const fxl__level_t *cur = 0, *cur2 = 0;
-    fxl__rr_t rr;
-    FXL_T_LV L, L2;
-    int32_t x = cl, lod = rr_start(tri, dY, xl, cl, &rr);
+    int32_t lod = rr_start(tri, dY, xl, cl, &rr);
     /* the next grid point: a LOD there */
     int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : INT32_MAX;
+    const fxl__level_t *cur = &tri->level[lod >> 8], *cur2 = (lod >> 8) + 1 < tri->nlevels ? cur + 1 : cur;
+    FXL_T_LV L, L2;
+    /* both levels' state set up once (the loop's tests keep them current) */
+    FXL_T_LV_INIT(&L, cur, 0u, 0u);
+    FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
+#else
+    FXL_T_LV L;
+    fxl__rr_seek(tri, dY, xl, cl, &rr);
+#if FXL_T_BILINEAR
+    {
+        /* the 2 x 2 block at the first pixel (one refill less a span: 0.3
+         * Cortex-M4 instructions a pixel of the rolled floor) */
+        const uint32_t r = fxl__rr_recip(rr.q);
+        FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, r), fxl__rr_coord(rr.b, r));
+    }
+#else
+    FXL_T_LV_INIT(&L, &tri->level[0], 0u, 0u);
+#endif
+#endif
 
     (void)xr;
-    /* both levels' state set up once (the walk's test keeps them current) */
-    {
-        const int level = lod >> 8;
-        cur = &tri->level[level];
-        cur2 = level + 1 < tri->nlevels ? cur + 1 : cur;
-        FXL_T_LV_INIT(&L, cur, 0u, 0u);
-        FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
-    }
     for (;;) {
+        int32_t cnt;
+        uint32_t q, a, b, dq, da, db;
+        uint16_t *end;
+#if FXL_T_MIPLIN
         uint32_t f;
         int level;
-        int32_t cnt;
-        const fxl__level_t *lv;
+#endif
         if (rr.left == 0)
             fxl__rr_next(tri, dY, xl, &rr);
+#if FXL_T_MIPLIN
         if (x == xg) {
             lod = rr_lod(tri, dY, &rr);
             xg += grid;
@@ -1073,119 +1085,66 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
         level = lod >> 8;
         if (level + 1 >= tri->nlevels)
             f = 0;
-        lv = &tri->level[level];
-        if (lv != cur) {
-            cur = lv;
-            FXL_T_LV_INIT(&L, lv, 0u, 0u);
+        if (&tri->level[level] != cur) {
+            cur = &tri->level[level];
+            FXL_T_LV_INIT(&L, cur, 0u, 0u);
         }
-        if (f != 0u && lv + 1 != cur2) {
-            cur2 = lv + 1;
-            FXL_T_LV_INIT(&L2, lv + 1, 0u, 0u);
+        if (f != 0u && cur + 1 != cur2) {
+            cur2 = cur + 1;
+            FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
         }
-        cnt = cr - x;
-        cnt = rr.left < cnt ? rr.left : cnt;
+#endif
+        cnt = cr - x < rr.left ? cr - x : rr.left;
+#if FXL_T_MIPLIN
         cnt = xg - x < cnt ? xg - x : cnt;
+#endif
+        q = rr.q;
+        a = rr.a;
+        b = rr.b;
+        dq = rr.dq;
+        da = rr.da;
+        db = rr.db;
+        end = dst + cnt;
+#if !FXL_T_DEPTH && !FXL_T_MIPLIN
         {
-            uint32_t q = rr.q, a = rr.a, b = rr.b;
-            const uint32_t dq = rr.dq, da = rr.da, db = rr.db;
-            uint16_t *const end = dst + cnt;
-            while (dst != end) {
-                const uint32_t r = fxl__rr_recip_tab(q);
-                const uint32_t u = fxl__rr_coord(a, r) >> level, v = fxl__rr_coord(b, r) >> level;
-#if FXL_T_DEPTH
-                const uint32_t zz = fast_z((int64_t)sz) >> 16;
-                if (zz > *zb) {
-                    *zb = (uint16_t)zz;
-#endif
-                    uint32_t c;
-                    if (f != 0u)
-                        c = compact565(lerp565x(FXL_T_RR_TAP(&L, u, v), FXL_T_RR_TAP(&L2, u >> 1, v >> 1), f));
-                    else
-#if FXL_T_BILINEAR
-                        c = compact565(FXL_T_RR_TAP(&L, u, v));
-#else
-                        c = L.tex[FXL__IDX_MASKS(u, v << L.lw, L.mu16, L.mv16)];
-#endif
-                    *dst = FXL_T_OUT(c);
-#if FXL_T_DEPTH
-                    written++;
-                }
-                zb++;
-                sz += gz;
-#endif
-                dst++;
-                q += dq;
-                a += da;
-                b += db;
-            }
-            rr.q = q;
-            rr.a = a;
-            rr.b = b;
-        }
-        rr.x += cnt;
-        rr.left -= cnt;
-        x += cnt;
-        if (x >= cr)
-            break;
-    }
-#else
-    fxl__rr_t rr;
-    FXL_T_LV L;
-    int32_t x = cl;
-#if !FXL_T_BILINEAR
-    uint32_t wm, vs, hm;
-#endif
-
-    (void)xr;
-    fxl__rr_seek(tri, dY, xl, cl, &rr);
-    FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, fxl__rr_recip(rr.q)),
-                  fxl__rr_coord(rr.b, fxl__rr_recip(rr.q)));
-#if !FXL_T_BILINEAR
-    /* FXL__IDX_MASKS's texel as column | row << lw: the column's mask and
-     * the row's shift and mask (AND with a shifted operand on a Cortex-M) */
-    wm = L.mu16 >> 16;
-    vs = 16u - L.lw;
-    hm = L.mv16 >> 16;
-#endif
-    for (;;) {
-        const int32_t cnt = cr - x < rr.left ? cr - x : rr.left;
-        uint32_t q = rr.q, a = rr.a, b = rr.b;
-        const uint32_t dq = rr.dq, da = rr.da, db = rr.db;
-        uint16_t *const end = dst + cnt;
-#if !FXL_T_DEPTH
-        {
-#if FXL_T_BILINEAR
-            const uint32_t st[3] = {dq, da, db}, *const msk = 0;
-#else
-            const uint32_t st[3] = {dq, da, db}, msk[3] = {wm, vs, hm};
-#endif
-            FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L, msk);
+            const uint32_t st[3] = {dq, da, db};
+            FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L);
             dst = end;
             q += dq * (uint32_t)cnt;
             a += da * (uint32_t)cnt;
             b += db * (uint32_t)cnt;
         }
-#endif
+#else
         while (dst != end) {
             const uint32_t r = fxl__rr_recip_tab(q);
-            const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
-#if FXL_T_DEPTH
-            const uint32_t z = fast_z((int64_t)sz);
-#endif
-#if FXL_T_BILINEAR && FXL_T_DEPTH
-            written += FXL_T_PIX1(dst, zb, z, &L, u, v);
-#elif FXL_T_BILINEAR
-            (void)FXL_T_PIX1(dst, 0, 0u, &L, u, v);
+#if FXL_T_MIPLIN
+            const uint32_t u = fxl__rr_coord(a, r) >> level, v = fxl__rr_coord(b, r) >> level;
 #else
+            const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
+#endif
+#if FXL_T_MIPLIN
 #if FXL_T_DEPTH
-            if ((z >> 16) > *zb) {
-                *zb = (uint16_t)(z >> 16);
-                *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+            const uint32_t zz = fast_z((int64_t)sz) >> 16;
+            if (zz > *zb) {
+                *zb = (uint16_t)zz;
+#endif
+                uint32_t c;
+                if (f != 0u)
+                    c = compact565(lerp565x(FXL_T_RR_TAP(&L, u, v), FXL_T_RR_TAP(&L2, u >> 1, v >> 1), f));
+                else
+#if FXL_T_BILINEAR
+                    c = compact565(FXL_T_RR_TAP(&L, u, v));
+#else
+                    c = L.tex[FXL__IDX_MASKS(u, v << L.lw, L.mu16, L.mv16)];
+#endif
+                *dst = FXL_T_OUT(c);
+#if FXL_T_DEPTH
                 written++;
             }
-#else
-            *dst = FXL_T_OUT(L.tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
 #endif
+#else
+            /* one level with depth (without it: FXL_T_RRLOOP) */
+            written += FXL_T_PIX1(dst, zb, fast_z((int64_t)sz), &L, u, v);
 #endif
 #if FXL_T_DEPTH
             zb++;
@@ -1196,17 +1155,16 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
             a += da;
             b += db;
         }
-        x += cnt;
-        if (x >= cr)
-            break;
+#endif
         rr.q = q;
         rr.a = a;
         rr.b = b;
-        rr.x = x;
-        rr.left = 0;
-        fxl__rr_next(tri, dY, xl, &rr);
+        rr.x += cnt;
+        rr.left -= cnt;
+        x += cnt;
+        if (x >= cr)
+            break;
     }
-#endif
     if (tri->stats) {
         tri->stats->divisions++;   /* as draw_span_rr */
 #if FXL_T_DEPTH

@@ -60,7 +60,7 @@
 
 /* Reciprocal runs for FXL_PERSP_AUTO (docs/design.md): a triangle whose
  * every segment would be short (a floor receding to the horizon) takes an
- * approximate 1/q at every pixel instead, a 32-bit division and three
+ * approximate 1/q at every pixel instead, a 32-bit division and four
  * multiplies, within (|u| + |v|) 2^-18 texel: the 40-degree-rolled floor
  * at 1.19x subdiv16's Cortex-M4 instructions instead of 2.66x (trilinear
  * 1.16x instead of 2.20x). 1.4 KB of Cortex-M4 code at -Os (the
