@@ -56,7 +56,7 @@
 static inline int32_t fxl__auto_log2_q8(uint32_t q32)
 {
     const int msb = 31 - fxl__clz32_inline(q32);
-    return (int32_t)msb * 256 + fxl__log2_frac_q8[(q32 >> (msb - 8)) & 0xFFu];
+    return (int32_t)msb * 256 + FXL__LOG2_FRAC_Q8((q32 >> (msb - 8)) & 0xFFu);
 }
 
 /* The cases of the per-triangle choice that need no bound, inline in the

@@ -77,6 +77,25 @@ const uint8_t fxl__log2_frac_q8[256] = {
     244, 245, 246, 247, 247, 248, 249, 249, 250, 251, 252, 252, 253, 254, 255, 255,
 };
 
+/* round(256 log2(m / 256)), m = 256 + i: floor(512 log2(m / 256)) bit by
+ * bit (square the q30 value; at 2 or more the bit is 1, halve), then
+ * rounded (r = floor(512 L) + 1) / 2, which is round(256 L)). The
+ * truncated squarings give the table's value at every i (test_fixed). */
+uint32_t fxl__log2_frac_q8_calc(uint32_t i)
+{
+    uint32_t x = (256u + (i & 255u)) << 22, bits = 0;   /* m / 256 in q30, < 2^31 */
+    int k;
+    for (k = 0; k < 9; k++) {
+        x = (uint32_t)(((uint64_t)x * x) >> 30);   /* < 4 in q30: < 2^32 */
+        bits <<= 1;
+        if (x >= 0x80000000u) {
+            bits |= 1u;
+            x >>= 1;
+        }
+    }
+    return (bits + 1u) >> 1;
+}
+
 int32_t fxl__log2_q8(uint64_t x)
 {
     return x ? fxl__log2_q8_inline(x) : INT32_MIN / 2;

@@ -93,7 +93,7 @@ static inline int32_t fxl__log2_q8_inline(uint64_t x)
 {
     const int msb = 63 - fxl__clz64_inline(x);
     const uint32_t frac = (uint32_t)(msb >= 8 ? (x >> (msb - 8)) : (x << (8 - msb))) & 0xFFu;
-    return (int32_t)msb * 256 + fxl__log2_frac_q8[frac];
+    return (int32_t)msb * 256 + FXL__LOG2_FRAC_Q8(frac);
 }
 
 /* fxl__log2_q8_inline's value for a 32-bit x >= 256, in 32-bit operations:
@@ -101,7 +101,7 @@ static inline int32_t fxl__log2_q8_inline(uint64_t x)
 static inline int32_t fxl__log2_q8_u32(uint32_t x)
 {
     const int msb = 31 - fxl__clz32_inline(x);
-    return (int32_t)msb * 256 + fxl__log2_frac_q8[(x >> (msb - 8)) & 0xFFu];
+    return (int32_t)msb * 256 + FXL__LOG2_FRAC_Q8((x >> (msb - 8)) & 0xFFu);
 }
 
 /* fxl__log2_q8_inline's value for any 32-bit x > 0, in 32-bit operations:
@@ -115,7 +115,7 @@ static inline int32_t fxl__log2_q8_32(uint32_t x)
 #else
     const int msb = 31 - fxl__clz32_inline(x);
     const uint32_t frac = (msb >= 8 ? x >> (msb - 8) : x << (8 - msb)) & 0xFFu;
-    return (int32_t)msb * 256 + fxl__log2_frac_q8[frac];
+    return (int32_t)msb * 256 + FXL__LOG2_FRAC_Q8(frac);
 #endif
 }
 

@@ -325,5 +325,15 @@ fxl__span_fn fxl__pick_span_fn(fxl__tri_t *tri, fxl__seg_fn fn);
 int32_t fxl__log2_q8(uint64_t x);
 /* its table: round(256 log2(1 + i / 256)), i = 0..255 (persp.c) */
 extern const uint8_t fxl__log2_frac_q8[256];
+/* The same values computed (persp.c; test_fixed checks all 256): nine
+ * squarings where the table is 256 bytes. Size-optimised builds use it,
+ * the others the table (a load where this is ~50 Cortex-M4
+ * instructions). */
+uint32_t fxl__log2_frac_q8_calc(uint32_t i);
+#if defined(__OPTIMIZE_SIZE__)
+#define FXL__LOG2_FRAC_Q8(i) fxl__log2_frac_q8_calc(i)
+#else
+#define FXL__LOG2_FRAC_Q8(i) fxl__log2_frac_q8[i]
+#endif
 
 #endif

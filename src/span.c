@@ -30,6 +30,33 @@
 #define FXL__V_MIP (FXL_FAST_MIP && FXL_HAVE_MIPMAP && FXL__FAST_SPANS)
 #define FXL__V(bil, z, sw)                                                                                  \
     (((bil) ? FXL__V_BL : FXL__V_PT) && ((z) ? FXL__V_Z : FXL__V_NOZ) && ((sw) ? FXL__V_SWP : FXL__V_NAT))
+/* Size-optimised builds (no fast spans) keep one pixel loop a filter and
+ * depth for both target formats, the store swapping by the target's shift
+ * (fl_t, bl_t: osh), and one bilinear loop for draws with depth and
+ * without, where both are kept: a NULL depth row skips the test
+ * (FXL_T_DEPTH 2; its branch is small beside a bilinear sample, where the
+ * point loop's registers spilled). That costs ~2 Cortex-M4 instructions a
+ * pixel and saves ~700 and ~160 bytes (issue 4's -Os budget).
+ * FXL__VB(bil, z): a variant of that filter and depth is kept, in either
+ * format. */
+#define FXL__FMT_RUNTIME (!FXL__FAST_SPANS)
+#define FXL__VB(bil, z) (FXL__V(bil, z, 0) || FXL__V(bil, z, 1))
+/* FXL_T_SWAP of the native variants, FXL_T_DEPTH of bilinear's with depth
+ * (plain numbers: clang warns of a constant ?: in a condition) */
+#if FXL__FMT_RUNTIME
+#define FXL__SWAP_NAT 2
+#else
+#define FXL__SWAP_NAT 0
+#endif
+#if FXL__FMT_RUNTIME && FXL__VB(1, 0)
+#define FXL__DEPTH_BL 2
+#else
+#define FXL__DEPTH_BL 1
+#endif
+/* from fxl__fast_id's value: its depth bit, and the store's byte shift
+ * (8 on byte-swapped targets, else 0) */
+#define FXL__FAST_ID_DEPTH(id) ((((id) - 1) >> 1) & 1)
+#define FXL__FAST_ID_OSH(id) ((uint32_t)(((id) - 1) & 4) << 1)
 /* What the shared helpers are built for: a one-level variant of the
  * filter (FXL__V_ANY_PT, _BL); any specialised walk (FXL__V_ANY), one
  * without depth (_NOZ) and one with (_Z). */
@@ -186,6 +213,9 @@ typedef struct bl {
      * hfv these are, and the footprint hkey (uu >> 16), ha, hd in it */
     const uint16_t *ht0, *ht1;
     uint32_t hv, hfv, hkey, ha, hd;
+#endif
+#if FXL__FMT_RUNTIME
+    uint32_t osh;   /* as fl_t's */
 #endif
 } bl_t;
 
@@ -920,6 +950,9 @@ typedef struct fl {
     const uint16_t *tex;
     uint32_t lw, shu;
     uint32_t mu16, mv16;
+#if FXL__FMT_RUNTIME
+    uint32_t osh;   /* the store's byte shift: 8 on swapped targets, else 0 */
+#endif
 } fl_t;
 
 #if FXL__V_ANY_PT
@@ -1890,15 +1923,14 @@ static FXL__NOINLINE int32_t rr_lod(const fxl__tri_t *tri, int32_t dY, const fxl
  * grid point at or left of cl (a span's walk from xl holds it there). */
 static int32_t rr_start(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t cl, fxl__rr_t *rr)
 {
-    if (tri->nlevels > 1 && tri->lod_per_segment) {
-        int32_t lod;
-        fxl__rr_seek(tri, dY, xl, FXL__AUTO_LOD_GRID(cl, xl), rr);
+    const int grid = tri->nlevels > 1 && tri->lod_per_segment;
+    int32_t lod = tri->lod_q8_tri;
+    fxl__rr_seek(tri, dY, xl, grid ? FXL__AUTO_LOD_GRID(cl, xl) : cl, rr);
+    if (grid) {
         lod = rr_lod(tri, dY, rr);
         fxl__rr_advance(tri, dY, xl, cl, rr);
-        return lod;
     }
-    fxl__rr_seek(tri, dY, xl, cl, rr);
-    return tri->lod_q8_tri;
+    return lod;
 }
 #endif
 
@@ -1908,17 +1940,17 @@ static int32_t rr_start(const fxl__tri_t *tri, int32_t dY, int32_t xl, int32_t c
 typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 
 /* the variants, as FXL__V (top of the file) selects them */
-#if FXL__V(0, 0, 0)
+#if FXL__FMT_RUNTIME ? FXL__VB(0, 0) : FXL__V(0, 0, 0)
 #define FXL_T_LOOP loop_point
 #define FXL_T_SPAN span_point
 #define FXL_T_SEG seg_point
 #define FXL_T_BILINEAR 0
 #define FXL_T_MIPLIN 0
 #define FXL_T_DEPTH 0
-#define FXL_T_SWAP 0
+#define FXL_T_SWAP FXL__SWAP_NAT
 #include "span_fast.h"
 #endif
-#if FXL__V(0, 0, 1)
+#if !FXL__FMT_RUNTIME && FXL__V(0, 0, 1)
 #define FXL_T_LOOP loop_point_swap
 #define FXL_T_SPAN span_point_swap
 #define FXL_T_SEG seg_point_swap
@@ -1928,17 +1960,17 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#if FXL__V(0, 1, 0)
+#if FXL__FMT_RUNTIME ? FXL__VB(0, 1) : FXL__V(0, 1, 0)
 #define FXL_T_LOOP loop_point_z
 #define FXL_T_SPAN span_point_z
 #define FXL_T_SEG seg_point_z
 #define FXL_T_BILINEAR 0
 #define FXL_T_MIPLIN 0
 #define FXL_T_DEPTH 1
-#define FXL_T_SWAP 0
+#define FXL_T_SWAP FXL__SWAP_NAT
 #include "span_fast.h"
 #endif
-#if FXL__V(0, 1, 1)
+#if !FXL__FMT_RUNTIME && FXL__V(0, 1, 1)
 #define FXL_T_LOOP loop_point_z_swap
 #define FXL_T_SPAN span_point_z_swap
 #define FXL_T_SEG seg_point_z_swap
@@ -1948,17 +1980,17 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#if FXL__V(1, 0, 0)
+#if FXL__FMT_RUNTIME ? FXL__VB(1, 0) && !FXL__VB(1, 1) : FXL__V(1, 0, 0)
 #define FXL_T_LOOP loop_bilin
 #define FXL_T_SPAN span_bilin
 #define FXL_T_SEG seg_bilin
 #define FXL_T_BILINEAR 1
 #define FXL_T_MIPLIN 0
 #define FXL_T_DEPTH 0
-#define FXL_T_SWAP 0
+#define FXL_T_SWAP FXL__SWAP_NAT
 #include "span_fast.h"
 #endif
-#if FXL__V(1, 0, 1)
+#if !FXL__FMT_RUNTIME && FXL__V(1, 0, 1)
 #define FXL_T_LOOP loop_bilin_swap
 #define FXL_T_SPAN span_bilin_swap
 #define FXL_T_SEG seg_bilin_swap
@@ -1968,17 +2000,17 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
-#if FXL__V(1, 1, 0)
+#if FXL__FMT_RUNTIME ? FXL__VB(1, 1) : FXL__V(1, 1, 0)
 #define FXL_T_LOOP loop_bilin_z
 #define FXL_T_SPAN span_bilin_z
 #define FXL_T_SEG seg_bilin_z
 #define FXL_T_BILINEAR 1
 #define FXL_T_MIPLIN 0
-#define FXL_T_DEPTH 1
-#define FXL_T_SWAP 0
+#define FXL_T_DEPTH FXL__DEPTH_BL
+#define FXL_T_SWAP FXL__SWAP_NAT
 #include "span_fast.h"
 #endif
-#if FXL__V(1, 1, 1)
+#if !FXL__FMT_RUNTIME && FXL__V(1, 1, 1)
 #define FXL_T_LOOP loop_bilin_z_swap
 #define FXL_T_SPAN span_bilin_z_swap
 #define FXL_T_SEG seg_bilin_z_swap
@@ -2127,6 +2159,18 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define IF_FMT_1 IF_SWP
 #define IF_V(bil, z, sw, x) IF_FILT_##bil(IF_DEPTH_##z(IF_FMT_##sw(x)))
 #define ONE(bil, z, sw, name) FAST_ENTRY(IF_V(bil, z, sw, seg_##name), IF_V(bil, z, sw, span_##name##_pick))
+/* Size builds: a row of a kept variant names its loop (FXL__FMT_RUNTIME):
+ * bilinear, the one with depth where that is kept. */
+#define RT_SEG_01 seg_point_z
+#define RT_SEG_11 seg_bilin_z
+#define RT_SEG_00 seg_point
+#if FXL__VB(1, 1)
+#define RT_SEG_10 seg_bilin_z
+#else
+#define RT_SEG_10 seg_bilin
+#endif
+#define RT_SEG(bil, z) RT_SEG_##bil##z
+#define RT(bil, z, sw) FAST_ENTRY(IF_V(bil, z, sw, RT_SEG(bil, z)), 0)
 #define TWO(bil, z, sw, name)                                                                               \
     FAST_ENTRY(IF_V(bil, z, sw, IF_MIP(SEG_GENERIC)), IF_V(bil, z, sw, IF_MIP(span_##name##_pick)))
 /* The span column exists only where the specialised walks are built. */
@@ -2142,6 +2186,16 @@ static const struct {
 #endif
 } fast_tab[17] = {
     FAST_ENTRY(0, 0),
+#if FXL__FMT_RUNTIME
+    RT(0, 0, 0),
+    RT(1, 0, 0),
+    RT(0, 1, 0),
+    RT(1, 1, 0),
+    RT(0, 0, 1),
+    RT(1, 0, 1),
+    RT(0, 1, 1),
+    RT(1, 1, 1),
+#else
     ONE(0, 0, 0, point),
     ONE(1, 0, 0, bilin),
     ONE(0, 1, 0, point_z),
@@ -2150,6 +2204,7 @@ static const struct {
     ONE(1, 0, 1, bilin_swap),
     ONE(0, 1, 1, point_z_swap),
     ONE(1, 1, 1, bilin_z_swap),
+#endif
     TWO(0, 0, 0, pml),
     TWO(1, 0, 0, tri),
     TWO(0, 1, 0, pml_z),

@@ -174,6 +174,22 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
     const uint16_t zz = (uint16_t)(z >> 16);                                                                \
     z += dz
 #endif
+#if FXL_T_DEPTH == 2
+/* size builds' one loop for draws with depth and without (zb NULL) */
+#define FXL_T_PIXEL(i)                                                                                      \
+    do {                                                                                                    \
+        FXL_T_ZNEXT(zz);                                                                                    \
+        if (!zb || zz > zb[i]) {                                                                            \
+            uint32_t c = FXL_T_TEXEL();                                                                     \
+            if (zb)                                                                                         \
+                zb[i] = (uint16_t)zz;                                                                       \
+            dst[i] = FXL_T_OUT(c);                                                                          \
+        } else {                                                                                            \
+            rejected++;                                                                                     \
+        }                                                                                                   \
+        FXL_T_ADVANCE();                                                                                    \
+    } while (0)
+#else
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
         FXL_T_ZNEXT(zz);                                                                                    \
@@ -186,6 +202,7 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
         }                                                                                                   \
         FXL_T_ADVANCE();                                                                                    \
     } while (0)
+#endif
 #else
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \

@@ -952,6 +952,21 @@ static void check_sdiv64_loop(int64_t n, int64_t d)
     TEST_ASSERT_TRUE_MESSAGE(fxl__sdiv64_loop(n, d) == n / d, msg);
 }
 
+/* The log2 table is round(256 log2(1 + i / 256)), and the size builds'
+ * computed form (nine truncated squarings) gives the same 256 values. */
+#if FXL_HAVE_MIPMAP || FXL_HAVE_AUTO
+static void test_log2_frac_table_and_its_computed_form(void)
+{
+    int i;
+    for (i = 0; i < 256; i++) {
+        const long want = lround(256.0 * log2(1.0 + i / 256.0));
+        snprintf(msg, sizeof msg, "i %d", i);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, fxl__log2_frac_q8[i], msg);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE((uint32_t)want, fxl__log2_frac_q8_calc((uint32_t)i), msg);
+    }
+}
+#endif
+
 /* recip_run.h's reciprocal, 2^62 / q for q in [2^31, 2^32): relative
  * error in (-2^-18, +2^-30) and below 2^31 (as an int32 it is positive),
  * at every bucket's ends and on a stride through all q (every q was
@@ -1063,6 +1078,9 @@ int main(void)
     RUN_TEST(test_mul_halves_match_64bit_products);
     RUN_TEST(test_persp_lo32_word_forms_match_64bit);
     RUN_TEST(test_div_ffffffff_table_is_exact);
+#if FXL_HAVE_MIPMAP || FXL_HAVE_AUTO
+    RUN_TEST(test_log2_frac_table_and_its_computed_form);
+#endif
     RUN_TEST(test_rr_recip_within_its_bound);
     RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
     return UNITY_END();

@@ -64,9 +64,9 @@
  * multiplies, within (|u| + |v|) 2^-18 texel: the 40-degree-rolled floor
  * at 1.19x subdiv16's Cortex-M4 instructions instead of 2.66x (trilinear
  * 1.16x instead of 2.20x). 1.4 KB of Cortex-M4 code at -Os (the
- * every-feature core is 17,856 B with it, 16,374 B without), 18 KB at -O2
- * (a run walk per variant and a 1 KB seed table); without them such
- * triangles take segments. */
+ * every-feature core is 16,342 B with it), 18 KB at -O2 (a run walk per
+ * variant and a 1 KB seed table); without them such triangles take
+ * segments. */
 #ifndef FXL_HAVE_RR
 #define FXL_HAVE_RR FXL_HAVE_AUTO
 #endif
@@ -90,8 +90,9 @@
  * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 226 KB for all
  * (docs/bench/footprint.txt: 231,386 B linked; 86,142 B with
  * FXL_FAST_NATIVE 0 and FXL_FAST_NO_DEPTH 0); at -Os a pixel loop of
- * ~0.2 KB. A product that drives one panel format, or always draws with
- * depth, leaves the rest out.
+ * ~0.2 KB a filter and depth, shared by both formats (bilinear: one loop
+ * with depth and without). A product that drives one panel format, or
+ * always draws with depth, leaves the rest out.
  * A left-out combination is drawn by the generic walk to the same pixels, bit
  * for bit, only slower; without FXL_HAVE_GENERIC it is FXL_ERR_UNSUPPORTED. */
 #ifndef FXL_FAST_NATIVE      /* FXL_PIXFMT_RGB565 targets */
