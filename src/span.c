@@ -2441,14 +2441,14 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         if (full) {
             n = (int32_t)1 << ki;
             div = n;
-            for (i = 0; i < np; i++)
-                pv[i] = (int64_t)((uint64_t)pv[i] + (ki == k ? (uint64_t)tri->gpxN[i] : (uint64_t)tri->gpx[i] * (uint32_t)n));
         } else {
             n = xr - x;
             div = n - 1;   /* the last segment ends on the last pixel */
-            for (i = 0; i < np; i++)
-                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint64_t)(int64_t)div);
         }
+        /* div >= 0 pixels on (a 64 x 32 multiply, modular: for a full
+         * segment of 2^k it is gpxN) */
+        for (i = 0; i < np; i++)
+            pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
         correct(tri, pv, &p1);
 #define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
