@@ -219,9 +219,8 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
     }
 }
 
-/* Reciprocal runs (recip_run.h) serve the triangle: one level or two
- * blended (the walks of one nearest level per segment have none), repeat
- * or mirror axes, no colours, not uv_wide (raster.c's clamp and needle
+/* Reciprocal runs (recip_run.h) serve the triangle: any levels (one, the
+ * nearest of several, or two blended), repeat or mirror axes, no colours, not uv_wide (raster.c's clamp and needle
  * cases, which divide at every pixel, never get here), and their error, under (|u| + |v|) 2^-18 + 260
  * units (q16 texels), within the budget less its margins. |u| + |v| of
  * the rebased vertices is within the ranges plus a period a repeat axis
@@ -230,8 +229,8 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
 static int rr_fits(const fxl__tri_t *tri)
 {
     uint32_t uv;
-    if (fxl__signed_u(tri) || fxl__signed_v(tri) || (tri->nlevels > 1 && !tri->mip_linear) || tri->uv_wide ||
-        tri->has_color || tri->auto_duv >= ((uint64_t)1 << 29))
+    if (fxl__signed_u(tri) || fxl__signed_v(tri) || tri->uv_wide || tri->has_color ||
+        tri->auto_duv >= ((uint64_t)1 << 29))
         return 0;
     /* in 32 bits: the ranges below 2^29, the periods at most 2^30 */
     uv = (uint32_t)tri->auto_duv + ((((uint32_t)1 << tri->tex->log2_w) + ((uint32_t)1 << tri->tex->log2_h)) << 17);

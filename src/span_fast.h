@@ -1198,6 +1198,95 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
 }
 #endif
 
+#if FXL_HAVE_RR && FXL_HAVE_MIPMAP && !FXL_T_MIPLIN
+#define FXL_T_RRN FXL__CAT(FXL_T_SPAN, _rrn)
+/* AUTO's reciprocal runs on the nearest of several levels
+ * (FXL_MIP_NEAREST): the level of the LOD on AUTO's grid (rr_lod, rounded
+ * as seg_levels rounds it), the run's u, v shifted by it, a pixel at a
+ * time (FXL_T_PIX1): draw_span_rr's values. Apart from FXL_T_RR, whose
+ * one-level loops keep their registers. */
+static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                    int32_t cr)
+{
+    const fxl_target_t *tg = tri->target;
+    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
+    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
+    uint16_t *dst = tg->pixels + clidx;
+#if FXL_T_DEPTH
+    uint16_t *zb = tg->depth + clidx;
+    uint64_t sz = (uint64_t)fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
+    const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
+#else
+    uint16_t *const zb = 0;
+    const uint32_t z = 0u;
+#endif
+    uint32_t written = 0;
+    fxl__rr_t rr;
+    int32_t x = cl;
+    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
+    int32_t lod = rr_start(tri, dY, xl, cl, &rr);
+    /* the next grid point: a LOD there */
+    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : INT32_MAX;
+    int level = (lod + 128) >> 8;
+    FXL_T_LV L;
+
+    FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
+    (void)xr;
+    for (;;) {
+        int32_t cnt;
+        uint32_t q, a, b, dq, da, db;
+        uint16_t *end;
+        if (rr.left == 0)
+            fxl__rr_next(tri, dY, xl, &rr);
+        if (x == xg) {
+            lod = rr_lod(tri, dY, &rr);
+            xg += grid;
+            if ((lod + 128) >> 8 != level) {
+                level = (lod + 128) >> 8;
+                FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
+            }
+        }
+        cnt = cr - x < rr.left ? cr - x : rr.left;
+        cnt = xg - x < cnt ? xg - x : cnt;
+        q = rr.q;
+        a = rr.a;
+        b = rr.b;
+        dq = rr.dq;
+        da = rr.da;
+        db = rr.db;
+        end = dst + cnt;
+        while (dst != end) {
+            const uint32_t r = fxl__rr_recip_tab(q);
+#if FXL_T_DEPTH
+            const uint32_t z = fast_z((int64_t)sz);
+#endif
+            written += FXL_T_PIX1(dst, zb, z, &L, fxl__rr_coord(a, r) >> level, fxl__rr_coord(b, r) >> level);
+#if FXL_T_DEPTH
+            zb++;
+            sz += gz;
+#endif
+            dst++;
+            q += dq;
+            a += da;
+            b += db;
+        }
+        rr.q = q;
+        rr.a = a;
+        rr.b = b;
+        rr.x += cnt;
+        rr.left -= cnt;
+        x += cnt;
+        if (x >= cr)
+            break;
+    }
+    if (tri->stats) {
+        tri->stats->divisions++;   /* as draw_span_rr */
+        tri->stats->pixels += written;
+        tri->stats->spans++;
+    }
+}
+#endif
+
 #define FXL_T_WZ 0
 #include "span_walk.h"
 #if FXL_T_DEPTH && FXL__ZROW_WALK
@@ -1221,6 +1310,10 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
         return FXL_T_RR;
 #endif
 #if !FXL_T_MIPLIN
+#if FXL_HAVE_RR && FXL_HAVE_MIPMAP
+    if (tri->auto_rr && tri->nlevels > 1)
+        return FXL_T_RRN;   /* the nearest level */
+#endif
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
         fxl__span_fn walk;
 #if FXL_HAVE_RR
@@ -1290,6 +1383,9 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_BATCH_AUTO
 #undef FXL_T_LEAN
 #undef FXL_T_RR
+#ifdef FXL_T_RRN
+#undef FXL_T_RRN
+#endif
 #ifdef FXL_T_RRLOOP
 #undef FXL_T_RRLOOP
 #endif

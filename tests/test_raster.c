@@ -1296,8 +1296,9 @@ static uint32_t probe_index_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
  * walk, against the double-precision reference, and within the runs' own
  * bound, (|u| + |v|) 2^-18 + 260 q16 units); and on a 640-pixel-wide
  * target, where spans cross the runs' 256-pixel blocks, the fast walks
- * draw the generic walk's pixels, point and bilinear on one level, and
- * trilinear and point-mip-linear on nine (the LOD on AUTO's grid), with
+ * draw the generic walk's pixels, point and bilinear on one level and on
+ * the nearest of nine, and trilinear and point-mip-linear on nine (the LOD
+ * on AUTO's grid), with
  * and without depth, unclipped, behind a clip that starts in a span's
  * second block, and in bands of 7 rows. */
 void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
@@ -1309,7 +1310,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
     fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
-    int b, k, i, zd, c, f, rr_tris = 0, rr_mip_tris = 0, rr_agree = 0;
+    int b, k, i, zd, c, f, rr_tris = 0, rr_mip_tris = 0, rr_near_tris = 0, rr_agree = 0;
     double worst = 0, worst_rr = 0;
     char msg[200];
     TEST_NEEDS(FXL_HAVE_RR);
@@ -1372,21 +1373,23 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
             v[i].u /= 4;
             v[i].v /= 4;
         }
-        for (f = 0; f < 4; f++)
+        for (f = 0; f < 6; f++)
         for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
             for (c = 0; c < 3; c++) {
                 const fxl_rect_t cr = {301, 0, 597, RH};
+                const int bil = f == 1 || f == 2 || f == 5;
                 int y0, y;
                 /* f 0, point: the texel index the generic walk computes (the
-                 * probe); 1 bilinear, 2 trilinear, 3 point-mip-linear: its
-                 * own pixel loops */
-                if ((f == 1 || f == 2) && !FXL_HAVE_BILINEAR)
+                 * probe); 1 bilinear, 2 trilinear, 3 point-mip-linear, 4
+                 * point and 5 bilinear on the nearest level: its own pixel
+                 * loops */
+                if (bil && !FXL_HAVE_BILINEAR)
                     continue;
                 if (f >= 2 && !FXL_HAVE_MIPMAP)
                     continue;
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 256, 256, FXL_TEXFMT_RGB565, f >= 2 ? 9 : 1));
-                d.filter = f == 1 || f == 2 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
-                d.mip = f >= 2 ? FXL_MIP_LINEAR : FXL_MIP_NONE;
+                d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+                d.mip = f >= 4 ? FXL_MIP_NEAREST : (f >= 2 ? FXL_MIP_LINEAR : FXL_MIP_NONE);
                 d.depth = zd ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;
                 fxl_target_init(&t, gen, RW, RH, RW, drawable_rgb565());
                 fxl_target_clear(&t, 0xDEAD);
@@ -1435,6 +1438,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                     rr_tris += probe_rr;
                 if (f == 3 && zd == 0 && c == 0)
                     rr_mip_tris += probe_rr;   /* point-mip-linear: every build with levels */
+                if (f == 4 && zd == 0 && c == 0)
+                    rr_near_tris += probe_rr;   /* point, nearest level */
                 for (i = 0; i < RW * RH; i++)
                     if (fast[i] != gen[i]) {
                         snprintf(msg, sizeof msg,
@@ -1445,11 +1450,14 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 rr_agree++;
             }
     }
-    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs (%d with nine levels); %d renders compared",
-             rr_tris, NT, rr_mip_tris, rr_agree);
+    snprintf(msg, sizeof msg,
+             "%d of %d triangles took reciprocal runs (%d with nine levels blended, %d on the nearest); %d renders "
+             "compared",
+             rr_tris, NT, rr_mip_tris, rr_near_tris, rr_agree);
     TEST_MESSAGE(msg);
-    /* 21 and 27 of the 40 with this seed */
-    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 4 && (!FXL_HAVE_MIPMAP || rr_mip_tris >= NT / 4), msg);
+    /* 21, 27 and 27 of the 40 with this seed */
+    TEST_ASSERT_TRUE_MESSAGE(rr_tris >= NT / 4 && (!FXL_HAVE_MIPMAP || (rr_mip_tris >= NT / 4 && rr_near_tris >= NT / 4)),
+                             msg);
 }
 
 /* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with

@@ -16,9 +16,11 @@
  *       under the name "scene/method/filter" (run with --collect-atstart=no
  *       --toggle-collect=fxl_draw_triangle so only the draw calls count).
  *   fixel-bench gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1]
+ *                        [--mip none|nearest|linear]
  *       the scenes' triangles, textures and the configuration list as C
  *       arrays for the firmware in bench/ (both sides use the same data);
- *       --meshes 1 adds the front-end benchmark's meshes.
+ *       --meshes 1 adds the front-end benchmark's meshes; --mip as for draw
+ *       (point --mip nearest: the nearest of the texture's levels).
  *   fixel-bench ram
  *       the memory the caller provides per scene (frame, depth, bands,
  *       texture level 0 and whole chain, vertex data).
@@ -107,8 +109,17 @@ typedef struct options {
     const char *host_ir, *m4, *m0, *rv32, *csv, *plot_dir;
     const char *fw_filters;
     int fw_meshes;
-    const char *mip;   /* draw: none|nearest|linear overrides the filter's mip mode */
+    const char *mip;   /* draw, gen-fw: none|nearest|linear overrides the filter's mip mode */
 } options_t;
+
+/* The filter's mip mode, or the one --mip names (draw, gen-fw) */
+static uint8_t mip_of(const options_t *o, const filter_t *f)
+{
+    if (!o->mip)
+        return f->mip;
+    return strcmp(o->mip, "nearest") == 0 ? FXL_MIP_NEAREST
+                                          : (strcmp(o->mip, "linear") == 0 ? FXL_MIP_LINEAR : FXL_MIP_NONE);
+}
 
 static void usage(FILE *f)
 {
@@ -122,7 +133,7 @@ static void usage(FILE *f)
             "      one frame of each configuration, for callgrind:\n"
             "      valgrind --tool=callgrind --collect-atstart=no \\\n"
             "               --toggle-collect=fxl_draw_triangle fixel-bench draw --scene floor\n"
-            "  gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1]\n"
+            "  gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1] [--mip none|nearest|linear]\n"
             "      scenes, textures and configurations as C arrays for the firmware in bench/\n"
             "  ram                     caller-provided memory per scene\n"
             "  frontend-run            the 3D front end alone, for callgrind\n"
@@ -711,9 +722,7 @@ static int cmd_draw(const options_t *o)
                 if (!selected(o->method, methods[mi].name) || !selected(o->filter, filters[fi].name))
                     continue;
                 draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
-                if (o->mip)
-                    d.mip = strcmp(o->mip, "nearest") == 0 ? FXL_MIP_NEAREST
-                                                           : (strcmp(o->mip, "linear") == 0 ? FXL_MIP_LINEAR : FXL_MIP_NONE);
+                d.mip = mip_of(o, &filters[fi]);
                 (void)fxl_target_clear(&fr.target, 0);
                 (void)fxl_target_clear_depth(&fr.target);
                 if (draw_scene(&s, &d, &fr.target) != FXL_OK)
@@ -985,7 +994,7 @@ static int cmd_gen_fw(const char *path, const options_t *o)
                     !selected(o->method, methods[mi].name))
                     continue;
                 fprintf(f, "    {%u, %d, %u, %u, \"%s %s %s\"},\n", (unsigned)si, methods[mi].persp,
-                        filters[fi].filter, filters[fi].mip, scenes[si], methods[mi].name, filters[fi].name);
+                        filters[fi].filter, mip_of(o, &filters[fi]), scenes[si], methods[mi].name, filters[fi].name);
                 ncfg++;
             }
     fprintf(f, "};\nconst uint32_t bench_ncfg = %u;\n", (unsigned)ncfg);
