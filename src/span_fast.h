@@ -1200,6 +1200,24 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
 
 #if FXL_HAVE_RR && FXL_HAVE_MIPMAP && !FXL_T_MIPLIN
 #define FXL_T_RRN FXL__CAT(FXL_T_SPAN, _rrn)
+#if !FXL_T_DEPTH
+#define FXL_T_RRNLOOP FXL__CAT(FXL_T_SPAN, _rrnloop)
+/* FXL_T_RRLOOP's pixels on level `level`: u, v shifted by it. Out of line
+ * for the same reason (the walk's frame spilled). */
+static FXL__NOINLINE void FXL_T_RRNLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                        const uint32_t *st, FXL_T_LV *L, int level)
+{
+    uint16_t *const end = dst + n;
+    do {
+        const uint32_t r = fxl__rr_recip_tab(q);
+        (void)FXL_T_PIX1(dst, 0, 0u, L, fxl__rr_coord(a, r) >> level, fxl__rr_coord(b, r) >> level);
+        dst++;
+        q += st[0];
+        a += st[1];
+        b += st[2];
+    } while (dst != end);
+}
+#endif
 /* AUTO's reciprocal runs on the nearest of several levels
  * (FXL_MIP_NEAREST): the level of the LOD on AUTO's grid (rr_lod, rounded
  * as seg_levels rounds it), the run's u, v shifted by it, a pixel at a
@@ -1216,9 +1234,6 @@ static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t 
     uint16_t *zb = tg->depth + clidx;
     uint64_t sz = (uint64_t)fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
     const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
-#else
-    uint16_t *const zb = 0;
-    const uint32_t z = 0u;
 #endif
     uint32_t written = 0;
     fxl__rr_t rr;
@@ -1255,21 +1270,28 @@ static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t 
         da = rr.da;
         db = rr.db;
         end = dst + cnt;
+#if FXL_T_DEPTH
         while (dst != end) {
             const uint32_t r = fxl__rr_recip_tab(q);
-#if FXL_T_DEPTH
-            const uint32_t z = fast_z((int64_t)sz);
-#endif
-            written += FXL_T_PIX1(dst, zb, z, &L, fxl__rr_coord(a, r) >> level, fxl__rr_coord(b, r) >> level);
-#if FXL_T_DEPTH
+            written += FXL_T_PIX1(dst, zb, fast_z((int64_t)sz), &L, fxl__rr_coord(a, r) >> level,
+                                  fxl__rr_coord(b, r) >> level);
             zb++;
             sz += gz;
-#endif
             dst++;
             q += dq;
             a += da;
             b += db;
         }
+#else
+        {
+            const uint32_t st[3] = {dq, da, db};
+            FXL_T_RRNLOOP(dst, cnt, q, a, b, st, &L, level);
+            dst = end;
+            q += dq * (uint32_t)cnt;
+            a += da * (uint32_t)cnt;
+            b += db * (uint32_t)cnt;
+        }
+#endif
         rr.q = q;
         rr.a = a;
         rr.b = b;
@@ -1281,7 +1303,7 @@ static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t 
     }
     if (tri->stats) {
         tri->stats->divisions++;   /* as draw_span_rr */
-        tri->stats->pixels += written;
+        tri->stats->pixels += FXL_T_DEPTH ? written : (uint32_t)(cr - cl);
         tri->stats->spans++;
     }
 }
@@ -1385,6 +1407,9 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_RR
 #ifdef FXL_T_RRN
 #undef FXL_T_RRN
+#endif
+#ifdef FXL_T_RRNLOOP
+#undef FXL_T_RRNLOOP
 #endif
 #ifdef FXL_T_RRLOOP
 #undef FXL_T_RRLOOP
