@@ -1061,10 +1061,12 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
     fxl__rr_t rr;
     int32_t x = cl;
 #if FXL_T_MIPLIN
-    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
+    const int32_t grid = (int32_t)1 << FXL__AUTO_LOD_LOG2;
     int32_t lod = rr_start(tri, dY, xl, cl, &rr);
-    /* the next grid point: a LOD there */
-    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : INT32_MAX;
+    /* the next grid point: a LOD there; with one LOD for the triangle the
+     * span's end, never reached (not INT32_MAX: xg - x overflowed where x
+     * is negative, a target with its origin left of the frame's) */
+    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : cr;
     const fxl__level_t *cur = &tri->level[lod >> 8], *cur2 = (lod >> 8) + 1 < tri->nlevels ? cur + 1 : cur;
     FXL_T_LV L, L2;
     /* both levels' state set up once (the loop's tests keep them current) */
@@ -1238,10 +1240,12 @@ static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t 
     uint32_t written = 0;
     fxl__rr_t rr;
     int32_t x = cl;
-    const int32_t grid = tri->lod_per_segment ? (int32_t)1 << FXL__AUTO_LOD_LOG2 : INT32_MAX;
+    const int32_t grid = (int32_t)1 << FXL__AUTO_LOD_LOG2;
     int32_t lod = rr_start(tri, dY, xl, cl, &rr);
-    /* the next grid point: a LOD there */
-    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : INT32_MAX;
+    /* the next grid point: a LOD there; with one LOD for the triangle the
+     * span's end, never reached (not INT32_MAX: xg - x overflowed where x
+     * is negative, a target with its origin left of the frame's) */
+    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : cr;
     int level = (lod + 128) >> 8;
     FXL_T_LV L;
 

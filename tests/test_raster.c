@@ -1298,9 +1298,12 @@ static uint32_t probe_index_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
  * target, where spans cross the runs' 256-pixel blocks, the fast walks
  * draw the generic walk's pixels, point and bilinear on one level and on
  * the nearest of nine, and trilinear and point-mip-linear on nine (the LOD
- * on AUTO's grid), with
- * and without depth, unclipped, behind a clip that starts in a span's
- * second block, and in bands of 7 rows. */
+ * on AUTO's grid, or one for the triangle), with and without depth (the
+ * depth written compared too), unclipped, behind a clip that starts in a
+ * span's second block, in bands of 7 rows, and on a target whose origin is
+ * left of the frame's (spans from negative x: with one LOD for the
+ * triangle the walks' grid end was INT32_MAX, and xg - x overflowed into
+ * a write past the row). */
 void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
 {
     enum { RW = 640, RH = 200, NT = 40, BAND = 7 };
@@ -1367,6 +1370,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
     rr_tris = 0;
     for (k = 0; k < NT; k++) {
         fxl_vertex_t v[3];
+        /* odd triangles: one LOD for the whole triangle */
+        d.lod = k & 1 ? FXL_LOD_TRIANGLE : FXL_LOD_SEGMENT;
         rr_floor_tri(v, RW, RH);
         /* a 256-texel texture: a quarter of the repeats keeps the texel ranges of the 64-texel case */
         for (i = 0; i < 3; i++) {
@@ -1375,7 +1380,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
         }
         for (f = 0; f < 6; f++)
         for (zd = 0; zd < (FXL_HAVE_DEPTH ? 2 : 1); zd++)
-            for (c = 0; c < 3; c++) {
+            for (c = 0; c < 4; c++) {
                 const fxl_rect_t cr = {301, 0, 597, RH};
                 const int bil = f == 1 || f == 2 || f == 5;
                 int y0, y;
@@ -1400,6 +1405,8 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                 }
                 if (c == 1)
                     fxl_target_set_clip(&t, &cr);
+                if (c == 3)
+                    fxl_target_set_origin(&t, -64, 0);   /* spans from negative x */
                 probe_last_tri = NULL;
                 probe_rr = 0;
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL,
@@ -1431,8 +1438,15 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                     }
                     if (c == 1)
                         fxl_target_set_clip(&t, &cr);
+                    if (c == 3)
+                        fxl_target_set_origin(&t, -64, 0);
                     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
                     pixels_to_native(fast, RW * RH, t.format);
+                    /* and the depth they wrote */
+                    if (zd && memcmp(zf, zg, sizeof zf) != 0) {
+                        snprintf(msg, sizeof msg, "triangle %d filter %d clip %d: depth differs", k, f, c);
+                        TEST_FAIL_MESSAGE(msg);
+                    }
                 }
                 if (f == 0 && zd == 0 && c == 0)
                     rr_tris += probe_rr;

@@ -417,10 +417,11 @@ static void fz_decode_vertices(fz_reader *r, fz_case *c)
     uint32_t m, mb, i;
     int32_t prev_x, prev_y;
 
-    /* 0..5 free (of those, a byte of 41..87: v1 on v0's row at its depth;
-     * 41, so that no input of test_fuzz_regress.c changes meaning: their
-     * bytes here are 0, 1, 40, 88, 91, 127, 128, 183, 216, 240 and 255),
-     * 6: two vertices equal, 7: collinear */
+    /* 0..5 free (of those, a byte of 41..87: v1 on v0's row at its depth,
+     * 152..175: a receding floor; so that no input of test_fuzz_regress.c
+     * changes meaning: their bytes here are 0, 1, 40, 50, 88, 91, 127,
+     * 128, 144, 183, 216, 240 and 255), 6: two vertices equal, 7:
+     * collinear */
     mb = fz_u8(r);
     m = mb % 8u;
     prev_x = c->origin_x * 65536;
@@ -444,6 +445,35 @@ static void fz_decode_vertices(fz_reader *r, fz_case *c)
         c->v[1].inv_w = c->v[0].inv_w;
         if (mb >= 64u)
             c->v[1].v = c->v[0].v;
+    } else if (m <= 5u && mb >= 152u && mb < 176u) {
+        /* a floor receding to the horizon, rolled (AUTO's reciprocal runs):
+         * two near vertices 8 to 39 target widths either side of a point
+         * below the target, one far vertex (1/w 24 to 87 times less) in
+         * its upper half, u and v across 16 to 79 repeats */
+        const int64_t dx = 16 + fz_u8(r) % 48u, dy = (int64_t)(fz_u8(r) % 65u) - 32;
+        const int64_t k = (int64_t)(8 + fz_u8(r) % 32u) * c->w / 16 + 1;
+        const int64_t cx = c->origin_x + (int64_t)(fz_u16(r) % (uint32_t)(c->w + 1));
+        const int64_t cy = c->origin_y + c->h + c->h / 16;
+        const uint32_t q = 0x01000000u + fz_u32(r) % 0x40000000u;
+        const int32_t su = (int32_t)(16 + fz_u8(r) % 64u) * 65536, sv = (int32_t)(16 + fz_u8(r) % 64u) * 65536;
+        const int64_t xs[3] = {cx - k * dx, cx + k * dx,
+                               c->origin_x + c->w / 4 + (int64_t)(fz_u16(r) % (uint32_t)(c->w / 2 + 1))};
+        const int64_t ys[3] = {cy - k * dy, cy + k * dy,
+                               c->origin_y + c->h / 4 + (int64_t)(fz_u16(r) % (uint32_t)(c->h / 4 + 1))};
+        for (i = 0; i < 3; i++) {
+            const int64_t x = xs[i] * 65536, y = ys[i] * 65536;
+            c->v[i].x = x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : (int32_t)x);
+            c->v[i].y = y > INT32_MAX ? INT32_MAX : (y < INT32_MIN ? INT32_MIN : (int32_t)y);
+        }
+        c->v[0].inv_w = c->v[1].inv_w = q;
+        c->v[2].inv_w = q / (24u + fz_u8(r) % 64u);
+        /* the decoded u, v scaled below 2^23: the sums stay in int32 */
+        c->v[0].u /= 256;
+        c->v[0].v /= 256;
+        c->v[1].u = c->v[0].u + su;
+        c->v[1].v = c->v[0].v;
+        c->v[2].u = c->v[0].u + su / 2;
+        c->v[2].v = c->v[0].v + sv;
     } else if (m == 6) {
         c->v[2].x = c->v[0].x;
         c->v[2].y = c->v[0].y;
