@@ -2302,9 +2302,10 @@ static int seg_levels(const fxl__tri_t *tri, int32_t lod, fxl__seg_t *seg)
 #if FXL_HAVE_RR
 /* AUTO's reciprocal runs (recip_run.h) in the generic walk: every pixel a
  * one-pixel segment with the run's u, v and the exact z, the values the
- * fast walks' FXL_T_RR gives. One level or two blended, repeat or mirror
- * axes, no colours (auto.c). Out of line: inlined into fxl__draw_span its
- * frame (~200 bytes) was under every generic walk's. */
+ * fast walks' FXL_T_RR (one level, two blended) and FXL_T_RRN (the nearest
+ * of several) give. Repeat or mirror axes, no colours (auto.c). Out of
+ * line: inlined into fxl__draw_span its frame (~200 bytes) was under every
+ * generic walk's. */
 static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t cl,
                                        int32_t cr)
 {

@@ -49,8 +49,10 @@
 /* a texel as the target stores it */
 #if FXL_T_SWAP == 2
 /* either format, by the level state's shift osh (0 or 8; FXL__FMT_RUNTIME
- * in span.c): c | c, or c's bytes swapped */
-#define FXL_T_OUT(c) ((uint16_t)(((c) << L->osh) | ((c) >> L->osh)))
+ * in span.c): c c' = c * 0x10001 holds c twice, so its low half is c and
+ * its bits 8..23 c's bytes swapped (a multiply and a shift, where c << osh
+ * | c >> osh took three) */
+#define FXL_T_OUT(c) ((uint16_t)(((uint32_t)(c) * 0x10001u) >> L->osh))
 #elif FXL_T_SWAP
 #define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
 #else
