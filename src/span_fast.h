@@ -1004,13 +1004,15 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 #if FXL_HAVE_RR
 #if !FXL_T_DEPTH && !FXL_T_MIPLIN
 #define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
+#define FXL_T_RRLOOPB FXL__CAT(FXL_T_SPAN, _rrloopb)
 /* A run's pixels on one level without depth, out of line: in the run
  * walk's frame GCC spilled ~4 Cortex-M4 instructions a pixel more. st: the
- * steps of q, a and b. A point texel is FXL__IDX_MASKS's as column | row
- * << lw: the column's mask and the row's shift and mask (AND with a
- * shifted operand on a Cortex-M). */
-static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                       const uint32_t *st, FXL_T_LV *L)
+ * steps of q, a and b; u and v shifted right by level (a mip level of
+ * FXL_MIP_NEAREST, FXL_T_RRNLOOP; 0 folds away in FXL_T_RRLOOP). A point
+ * texel is FXL__IDX_MASKS's as column | row << lw: the column's mask and
+ * the row's shift and mask (AND with a shifted operand on a Cortex-M). */
+static FXL__UNSWITCH void FXL_T_RRLOOPB(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                        const uint32_t *st, FXL_T_LV *L, const int level)
 {
 #if !FXL_T_BILINEAR
     const uint16_t *const tex = L->tex;
@@ -1019,7 +1021,7 @@ static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uin
     uint16_t *const end = dst + n;
     do {
         const uint32_t r = fxl__rr_recip_tab(q);
-        const uint32_t u = fxl__rr_coord(a, r), v = fxl__rr_coord(b, r);
+        const uint32_t u = fxl__rr_coord(a, r) >> level, v = fxl__rr_coord(b, r) >> level;
 #if FXL_T_BILINEAR
         (void)FXL_T_PIX1(dst, 0, 0u, L, u, v);
 #else
@@ -1031,6 +1033,21 @@ static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uin
         b += st[2];
     } while (dst != end);
 }
+
+static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                       const uint32_t *st, FXL_T_LV *L)
+{
+    FXL_T_RRLOOPB(dst, n, q, a, b, st, L, 0);
+}
+
+#if FXL_HAVE_MIPMAP
+#define FXL_T_RRNLOOP FXL__CAT(FXL_T_SPAN, _rrnloop)
+static FXL__NOINLINE void FXL_T_RRNLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                        const uint32_t *st, FXL_T_LV *L, int level)
+{
+    FXL_T_RRLOOPB(dst, n, q, a, b, st, L, level);
+}
+#endif
 #endif
 
 #if FXL_T_MIPLIN
@@ -1043,12 +1060,16 @@ static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uin
 #endif
 
 /* AUTO's reciprocal runs (recip_run.h): from cl, chunks of pixels that
- * share a run (and, with two levels blended, a LOD of AUTO's grid: rr_lod,
- * span.c, with the batch walk's choice of levels and weight), each one
- * loop of a reciprocal, two products and the pixel with the run state in
- * locals. The values of the generic walk's draw_span_rr (span.c). */
-static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
-                                   int32_t cr)
+ * share a run (and, with levels, a LOD of AUTO's grid: rr_lod, span.c; two
+ * levels blended with the batch walk's choice of levels and weight, or
+ * with `nearest` the level it rounds to, as seg_levels, the run's u, v
+ * shifted by it), each one loop of a reciprocal, two products and the
+ * pixel with the run state in locals. The values of the generic walk's
+ * draw_span_rr (span.c). Forced inline into FXL_T_RR and FXL_T_RRN, each
+ * with its constant `nearest`: one level keeps its registers. */
+#define FXL_T_RRW FXL__CAT(FXL_T_SPAN, _rrw)
+static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t cl, int32_t cr,
+                                    const int nearest)
 {
     const fxl_target_t *tg = tri->target;
     const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
@@ -1076,20 +1097,36 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
     FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
 #else
     FXL_T_LV L;
-    fxl__rr_seek(tri, dY, xl, cl, &rr);
-#if FXL_T_BILINEAR
-    {
-        /* the 2 x 2 block at the first pixel (one refill less a span: 0.3
-         * Cortex-M4 instructions a pixel of the rolled floor) */
-        const uint32_t r = fxl__rr_recip(rr.q);
-        FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, r), fxl__rr_coord(rr.b, r));
-    }
-#else
-    FXL_T_LV_INIT(&L, &tri->level[0], 0u, 0u);
+    /* with `nearest`: the grid's next point (one LOD for the triangle: the
+     * span's end, never reached) and the level */
+    int32_t xg = cr;
+    int level = 0;
+    (void)level;   /* without levels or depth */
+#if FXL_HAVE_MIPMAP
+    int32_t lod = 0;
+    if (nearest) {
+        lod = rr_start(tri, dY, xl, cl, &rr);
+        if (tri->lod_per_segment)
+            xg = FXL__AUTO_LOD_GRID(cl, xl) + ((int32_t)1 << FXL__AUTO_LOD_LOG2);
+        level = (lod + 128) >> 8;
+        FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
+    } else
 #endif
+    {
+        fxl__rr_seek(tri, dY, xl, cl, &rr);
+#if FXL_T_BILINEAR
+        {
+            /* the 2 x 2 block at the first pixel (one refill less a span:
+             * 0.3 Cortex-M4 instructions a pixel of the rolled floor) */
+            const uint32_t r = fxl__rr_recip(rr.q);
+            FXL_T_LV_INIT(&L, &tri->level[0], fxl__rr_coord(rr.a, r), fxl__rr_coord(rr.b, r));
+        }
+#else
+        FXL_T_LV_INIT(&L, &tri->level[0], 0u, 0u);
+#endif
+    }
 #endif
 
-    (void)xr;
     for (;;) {
         int32_t cnt;
         uint32_t q, a, b, dq, da, db;
@@ -1100,6 +1137,16 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
 #endif
         if (rr.left == 0)
             fxl__rr_next(tri, dY, xl, &rr);
+#if !FXL_T_MIPLIN && FXL_HAVE_MIPMAP
+        if (nearest && x == xg) {
+            lod = rr_lod(tri, dY, &rr);
+            xg += (int32_t)1 << FXL__AUTO_LOD_LOG2;
+            if ((lod + 128) >> 8 != level) {
+                level = (lod + 128) >> 8;
+                FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
+            }
+        }
+#endif
 #if FXL_T_MIPLIN
         if (x == xg) {
             lod = rr_lod(tri, dY, &rr);
@@ -1120,9 +1167,8 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
         }
 #endif
         cnt = cr - x < rr.left ? cr - x : rr.left;
-#if FXL_T_MIPLIN
-        cnt = xg - x < cnt ? xg - x : cnt;
-#endif
+        if (FXL_T_MIPLIN || nearest)
+            cnt = xg - x < cnt ? xg - x : cnt;
         q = rr.q;
         a = rr.a;
         b = rr.b;
@@ -1133,7 +1179,12 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
 #if !FXL_T_DEPTH && !FXL_T_MIPLIN
         {
             const uint32_t st[3] = {dq, da, db};
-            FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L);
+#if FXL_HAVE_MIPMAP
+            if (nearest)
+                FXL_T_RRNLOOP(dst, cnt, q, a, b, st, &L, level);
+            else
+#endif
+                FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L);
             dst = end;
             q += dq * (uint32_t)cnt;
             a += da * (uint32_t)cnt;
@@ -1169,7 +1220,7 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
 #endif
 #else
             /* one level with depth (without it: FXL_T_RRLOOP) */
-            written += FXL_T_PIX1(dst, zb, fast_z((int64_t)sz), &L, u, v);
+            written += FXL_T_PIX1(dst, zb, fast_z((int64_t)sz), &L, u >> level, v >> level);
 #endif
 #if FXL_T_DEPTH
             zb++;
@@ -1200,119 +1251,24 @@ static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t x
         tri->stats->spans++;
     }
 }
-#endif
 
-#if FXL_HAVE_RR && FXL_HAVE_MIPMAP && !FXL_T_MIPLIN
-#define FXL_T_RRN FXL__CAT(FXL_T_SPAN, _rrn)
-#if !FXL_T_DEPTH
-#define FXL_T_RRNLOOP FXL__CAT(FXL_T_SPAN, _rrnloop)
-/* FXL_T_RRLOOP's pixels on level `level`: u, v shifted by it. Out of line
- * for the same reason (the walk's frame spilled). */
-static FXL__NOINLINE void FXL_T_RRNLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                        const uint32_t *st, FXL_T_LV *L, int level)
+static FXL__NOINLINE void FXL_T_RR(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
+                                   int32_t cr)
 {
-    uint16_t *const end = dst + n;
-    do {
-        const uint32_t r = fxl__rr_recip_tab(q);
-        (void)FXL_T_PIX1(dst, 0, 0u, L, fxl__rr_coord(a, r) >> level, fxl__rr_coord(b, r) >> level);
-        dst++;
-        q += st[0];
-        a += st[1];
-        b += st[2];
-    } while (dst != end);
+    (void)xr;
+    FXL_T_RRW(tri, row, xl, cl, cr, 0);
 }
-#endif
-/* AUTO's reciprocal runs on the nearest of several levels
- * (FXL_MIP_NEAREST): the level of the LOD on AUTO's grid (rr_lod, rounded
- * as seg_levels rounds it), the run's u, v shifted by it, a pixel at a
- * time (FXL_T_PIX1): draw_span_rr's values. Apart from FXL_T_RR, whose
- * one-level loops keep their registers. */
+
+#if FXL_HAVE_MIPMAP && !FXL_T_MIPLIN
+#define FXL_T_RRN FXL__CAT(FXL_T_SPAN, _rrn)
+/* the nearest of several levels (FXL_MIP_NEAREST) */
 static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t xl, int32_t xr, int32_t cl,
                                     int32_t cr)
 {
-    const fxl_target_t *tg = tri->target;
-    const int32_t clidx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
-    const int32_t dY = row * FXL__ONE + FXL__HALF - tri->Y0;
-    uint16_t *dst = tg->pixels + clidx;
-#if FXL_T_DEPTH
-    uint16_t *zb = tg->depth + clidx;
-    uint64_t sz = (uint64_t)fxl__plane_eval(&tri->z, cl * FXL__ONE + FXL__HALF - tri->X0, dY);
-    const uint64_t gz = (uint64_t)tri->gpx[FXL__PZ];
-#endif
-    uint32_t written = 0;
-    fxl__rr_t rr;
-    int32_t x = cl;
-    const int32_t grid = (int32_t)1 << FXL__AUTO_LOD_LOG2;
-    int32_t lod = rr_start(tri, dY, xl, cl, &rr);
-    /* the next grid point: a LOD there; with one LOD for the triangle the
-     * span's end, never reached (not INT32_MAX: xg - x overflowed where x
-     * is negative, a target with its origin left of the frame's) */
-    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : cr;
-    int level = (lod + 128) >> 8;
-    FXL_T_LV L;
-
-    FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
     (void)xr;
-    for (;;) {
-        int32_t cnt;
-        uint32_t q, a, b, dq, da, db;
-        uint16_t *end;
-        if (rr.left == 0)
-            fxl__rr_next(tri, dY, xl, &rr);
-        if (x == xg) {
-            lod = rr_lod(tri, dY, &rr);
-            xg += grid;
-            if ((lod + 128) >> 8 != level) {
-                level = (lod + 128) >> 8;
-                FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
-            }
-        }
-        cnt = cr - x < rr.left ? cr - x : rr.left;
-        cnt = xg - x < cnt ? xg - x : cnt;
-        q = rr.q;
-        a = rr.a;
-        b = rr.b;
-        dq = rr.dq;
-        da = rr.da;
-        db = rr.db;
-        end = dst + cnt;
-#if FXL_T_DEPTH
-        while (dst != end) {
-            const uint32_t r = fxl__rr_recip_tab(q);
-            written += FXL_T_PIX1(dst, zb, fast_z((int64_t)sz), &L, fxl__rr_coord(a, r) >> level,
-                                  fxl__rr_coord(b, r) >> level);
-            zb++;
-            sz += gz;
-            dst++;
-            q += dq;
-            a += da;
-            b += db;
-        }
-#else
-        {
-            const uint32_t st[3] = {dq, da, db};
-            FXL_T_RRNLOOP(dst, cnt, q, a, b, st, &L, level);
-            dst = end;
-            q += dq * (uint32_t)cnt;
-            a += da * (uint32_t)cnt;
-            b += db * (uint32_t)cnt;
-        }
-#endif
-        rr.q = q;
-        rr.a = a;
-        rr.b = b;
-        rr.x += cnt;
-        rr.left -= cnt;
-        x += cnt;
-        if (x >= cr)
-            break;
-    }
-    if (tri->stats) {
-        tri->stats->divisions++;   /* as draw_span_rr */
-        tri->stats->pixels += FXL_T_DEPTH ? written : (uint32_t)(cr - cl);
-        tri->stats->spans++;
-    }
+    FXL_T_RRW(tri, row, xl, cl, cr, 1);
 }
+#endif
 #endif
 
 #define FXL_T_WZ 0
@@ -1413,6 +1369,12 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_RR
 #ifdef FXL_T_RRN
 #undef FXL_T_RRN
+#endif
+#ifdef FXL_T_RRW
+#undef FXL_T_RRW
+#endif
+#ifdef FXL_T_RRLOOPB
+#undef FXL_T_RRLOOPB
 #endif
 #ifdef FXL_T_RRNLOOP
 #undef FXL_T_RRNLOOP

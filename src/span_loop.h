@@ -176,33 +176,26 @@ uint32_t FXL_T_FNAME(uint16_t *dst, uint16_t *zb, int32_t n, uint32_t z, uint32_
 #endif
 #if FXL_T_DEPTH == 2
 /* size builds' one loop for draws with depth and without (zb NULL) */
-#define FXL_T_PIXEL(i)                                                                                      \
-    do {                                                                                                    \
-        FXL_T_ZNEXT(zz);                                                                                    \
-        if (!zb || zz > zb[i]) {                                                                            \
-            uint32_t c = FXL_T_TEXEL();                                                                     \
-            if (zb)                                                                                         \
-                zb[i] = (uint16_t)zz;                                                                       \
-            dst[i] = FXL_T_OUT(c);                                                                          \
-        } else {                                                                                            \
-            rejected++;                                                                                     \
-        }                                                                                                   \
-        FXL_T_ADVANCE();                                                                                    \
-    } while (0)
+#define FXL_T_ZPASS(zz, i) (!zb || (zz) > zb[i])
+#define FXL_T_ZSTORE(zz, i)                                                                                 \
+    if (zb)                                                                                                 \
+    zb[i] = (uint16_t)(zz)
 #else
+#define FXL_T_ZPASS(zz, i) ((zz) > zb[i])
+#define FXL_T_ZSTORE(zz, i) zb[i] = (uint16_t)(zz)
+#endif
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
         FXL_T_ZNEXT(zz);                                                                                    \
-        if (zz > zb[i]) {                                                                                   \
+        if (FXL_T_ZPASS(zz, i)) {                                                                           \
             uint32_t c = FXL_T_TEXEL();                                                                     \
-            zb[i] = (uint16_t)zz;                                                                           \
+            FXL_T_ZSTORE(zz, i);                                                                            \
             dst[i] = FXL_T_OUT(c);                                                                          \
         } else {                                                                                            \
             rejected++;                                                                                     \
         }                                                                                                   \
         FXL_T_ADVANCE();                                                                                    \
     } while (0)
-#endif
 #else
 #define FXL_T_PIXEL(i)                                                                                      \
     do {                                                                                                    \
@@ -421,6 +414,8 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LOOPFN, _segs)(uint16_t *dst, const fxl
 #undef FXL_T_PIXEL
 #ifdef FXL_T_ZNEXT
 #undef FXL_T_ZNEXT
+#undef FXL_T_ZPASS
+#undef FXL_T_ZSTORE
 #endif
 #undef FXL_T_TEXEL
 #undef FXL_T_STEP
