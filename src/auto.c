@@ -220,8 +220,9 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
 }
 
 /* Reciprocal runs (recip_run.h) serve the triangle: any levels (one, the
- * nearest of several, or two blended), repeat or mirror axes, no colours, not uv_wide (raster.c's clamp and needle
- * cases, which divide at every pixel, never get here), and their error, under (|u| + |v|) 2^-18 + 260
+ * nearest of several, or two blended), repeat or mirror axes, no colours,
+ * not uv_wide (raster.c's clamp and needle cases, which divide at every
+ * pixel, never get here), and their error, under (|u| + |v|) 2^-18 + 260
  * units (q16 texels), within the budget less its margins. |u| + |v| of
  * the rebased vertices is within the ranges plus a period a repeat axis
  * (two a mirror one); below 2^29 - 2^16 it keeps a and b within int32. */

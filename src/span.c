@@ -1893,6 +1893,13 @@ static inline int32_t fast_lod(const fxl__tri_t *tri, int64_t q0, const fxl__pt_
 #endif
 
 #if FXL_HAVE_MIPMAP
+/* The level nearest a LOD (q8, clamped): rounded half up. Every walk's
+ * FXL_MIP_NEAREST choice. */
+static inline int lod_nearest(int32_t lod)
+{
+    return (lod + 128) >> 8;
+}
+
 /* A segment's LOD from lod_at's value: the bias added, clamped to the
  * levels (the generic and the fast walks, bit for bit the same). */
 static inline int32_t seg_lod(const fxl__tri_t *tri, int32_t lod)
@@ -2292,7 +2299,7 @@ static int seg_levels(const fxl__tri_t *tri, int32_t lod, fxl__seg_t *seg)
         seg->lod_frac_q8 = (uint32_t)lod & 255u;
         seg->lvl2 = level + 1 < tri->nlevels ? &tri->level[level + 1] : 0;
     } else {
-        level = (lod + 128) >> 8;
+        level = lod_nearest(lod);
     }
     seg->lvl = &tri->level[level];
     return level;

@@ -334,7 +334,6 @@ static FXL__NOINLINE int32_t FXL_T_RUN(const fxl__tri_t *tri, const int autoseg,
     return x;
 }
 
-
 /* The common cases in one loop: segments on one level (no LOD per
  * segment), of 2^k >= 2 pixels or of adaptive lengths (autoseg, a
  * constant: one copy each). The same values as the batch walk below, bit for bit;
@@ -1000,7 +999,6 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 }
 #endif
 
-
 #if FXL_HAVE_RR
 #if !FXL_T_DEPTH && !FXL_T_MIPLIN
 #define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
@@ -1083,33 +1081,35 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
 #endif
     fxl__rr_t rr;
     int32_t x = cl;
-#if FXL_T_MIPLIN
-    const int32_t grid = (int32_t)1 << FXL__AUTO_LOD_LOG2;
-    int32_t lod = rr_start(tri, dY, xl, cl, &rr);
-    /* the next grid point: a LOD there; with one LOD for the triangle the
-     * span's end, never reached (not INT32_MAX: xg - x overflowed where x
-     * is negative, a target with its origin left of the frame's) */
-    int32_t xg = tri->lod_per_segment ? FXL__AUTO_LOD_GRID(cl, xl) + grid : cr;
-    const fxl__level_t *cur = &tri->level[lod >> 8], *cur2 = (lod >> 8) + 1 < tri->nlevels ? cur + 1 : cur;
-    FXL_T_LV L, L2;
-    /* both levels' state set up once (the loop's tests keep them current) */
-    FXL_T_LV_INIT(&L, cur, 0u, 0u);
-    FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
-#else
-    FXL_T_LV L;
-    /* with `nearest`: the grid's next point (one LOD for the triangle: the
-     * span's end, never reached) and the level */
-    int32_t xg = cr;
+    /* with levels (two blended, or the nearest): the LOD, and the next
+     * grid point, where it is taken again; with one LOD for the triangle
+     * the span's end, never reached (not INT32_MAX: xg - x overflowed
+     * where x is negative, a target with its origin left of the frame's) */
+    const int levels = FXL_T_MIPLIN || nearest;
+    int32_t lod = 0, xg = cr;
     int level = 0;
+    FXL_T_LV L;
+#if FXL_T_MIPLIN
+    const fxl__level_t *cur, *cur2;
+    FXL_T_LV L2;
+#endif
+    (void)lod;
     (void)level;   /* without levels or depth */
 #if FXL_HAVE_MIPMAP
-    int32_t lod = 0;
-    if (nearest) {
+    if (levels) {
         lod = rr_start(tri, dY, xl, cl, &rr);
         if (tri->lod_per_segment)
             xg = FXL__AUTO_LOD_GRID(cl, xl) + ((int32_t)1 << FXL__AUTO_LOD_LOG2);
-        level = (lod + 128) >> 8;
+#if FXL_T_MIPLIN
+        cur = &tri->level[lod >> 8];
+        cur2 = (lod >> 8) + 1 < tri->nlevels ? cur + 1 : cur;
+        /* both levels' state set up once (the loop's tests keep them current) */
+        FXL_T_LV_INIT(&L, cur, 0u, 0u);
+        FXL_T_LV_INIT(&L2, cur2, 0u, 0u);
+#else
+        level = lod_nearest(lod);
         FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
+#endif
     } else
 #endif
     {
@@ -1125,7 +1125,6 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
         FXL_T_LV_INIT(&L, &tri->level[0], 0u, 0u);
 #endif
     }
-#endif
 
     for (;;) {
         int32_t cnt;
@@ -1133,25 +1132,22 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
         uint16_t *end;
 #if FXL_T_MIPLIN
         uint32_t f;
-        int level;
 #endif
         if (rr.left == 0)
             fxl__rr_next(tri, dY, xl, &rr);
-#if !FXL_T_MIPLIN && FXL_HAVE_MIPMAP
-        if (nearest && x == xg) {
+#if FXL_HAVE_MIPMAP
+        if (levels && x == xg) {
             lod = rr_lod(tri, dY, &rr);
             xg += (int32_t)1 << FXL__AUTO_LOD_LOG2;
-            if ((lod + 128) >> 8 != level) {
-                level = (lod + 128) >> 8;
+#if !FXL_T_MIPLIN
+            if (lod_nearest(lod) != level) {
+                level = lod_nearest(lod);
                 FXL_T_LV_INIT(&L, &tri->level[level], 0u, 0u);
             }
+#endif
         }
 #endif
 #if FXL_T_MIPLIN
-        if (x == xg) {
-            lod = rr_lod(tri, dY, &rr);
-            xg += grid;
-        }
         /* span_walk.h's choice: weight lod_frac >> 3, none at the top level */
         f = ((uint32_t)lod & 255u) >> 3;
         level = lod >> 8;
@@ -1167,7 +1163,7 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
         }
 #endif
         cnt = cr - x < rr.left ? cr - x : rr.left;
-        if (FXL_T_MIPLIN || nearest)
+        if (levels)
             cnt = xg - x < cnt ? xg - x : cnt;
         q = rr.q;
         a = rr.a;
@@ -1289,21 +1285,18 @@ static FXL__NOINLINE void FXL_T_RRN(const fxl__tri_t *tri, int32_t row, int32_t 
 static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 {
     (void)tri;   /* the mip-linear variants have only the batch walk (and runs) */
-#if FXL_HAVE_RR && FXL_T_MIPLIN
-    if (tri->auto_rr)
+#if FXL_HAVE_RR
+    if (tri->auto_rr) {
+#if FXL_HAVE_MIPMAP && !FXL_T_MIPLIN
+        if (tri->nlevels > 1)
+            return FXL_T_RRN;   /* the nearest level */
+#endif
         return FXL_T_RR;
+    }
 #endif
 #if !FXL_T_MIPLIN
-#if FXL_HAVE_RR && FXL_HAVE_MIPMAP
-    if (tri->auto_rr && tri->nlevels > 1)
-        return FXL_T_RRN;   /* the nearest level */
-#endif
     if (!(FXL_HAVE_MIPMAP && tri->nlevels > 1)) {
         fxl__span_fn walk;
-#if FXL_HAVE_RR
-        if (tri->auto_rr)
-            return FXL_T_RR;
-#endif
 #if FXL_HAVE_QUAD
         if (tri->auto_quad)
             return FXL__CAT(FXL_T_LEAN, _quad);   /* its own corrections (lean_next_*_g) */

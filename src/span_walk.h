@@ -221,7 +221,7 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
                 if (level + 1 >= tri->nlevels)
                     f = 0;
 #else
-                level = (lod + 128) >> 8;
+                level = lod_nearest(lod);
 #endif
                 lv = &tri->level[level];
                 du = shift_step_u32(du, level);
