@@ -42,10 +42,31 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
                            uint16_t *depth, int32_t band_rows, fxl_band_tri_t *tris,
                            uint32_t tri_cap, fxl_band_bin_t *bins, uint32_t bin_cap)
 {
+    int32_t band_count;
     if (b == NULL || panel == NULL || panel->preset == NULL || buf0 == NULL || buf1 == NULL ||
         buf0 == buf1 || tris == NULL || tri_cap == 0 || band_rows <= 0 || (bins == NULL && bin_cap > 0))
         return FXL_ERR_ARG;
     if (band_rows > panel->height || panel->width > FXL_TARGET_MAX_DIM) return FXL_ERR_RANGE;
+    band_count = (panel->height + band_rows - 1) / band_rows;
+    /* Every band's target sits at origin (0, y0): refused up front when the
+     * last one's y0 is beyond what a target allows, rather than mid-frame
+     * with part of it on the wire. */
+    if ((int64_t)(band_count - 1) * band_rows > FXL_TARGET_MAX_ORIGIN) return FXL_ERR_RANGE;
+    if (bin_cap > 0 && bin_cap < (uint32_t)band_count) return FXL_ERR_NOMEM;
+    {
+        /* A band the core cannot draw into (a depth band in a build without
+         * FXL_HAVE_DEPTH) is refused now rather than mid-frame. */
+        fxl_band_t probe;
+        fxl_target_t t;
+        fxl_status_t st;
+        probe.panel = panel;
+        probe.width = panel->width;
+        probe.depth = depth;
+        st = band_target(&probe, buf0, 0, band_rows, &t);
+        if (st != FXL_OK) return st;
+    }
+    /* Only a binding that is whole is written: after an error b is as it
+     * was. */
     b->panel = panel;
     b->buf[0] = buf0;
     b->buf[1] = buf1;
@@ -53,9 +74,7 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     b->width = panel->width;
     b->height = panel->height;
     b->band_rows = band_rows;
-    b->band_count = (panel->height + band_rows - 1) / band_rows;
-    if (b->band_count > 65535) return FXL_ERR_RANGE;
-    if (bin_cap > 0 && bin_cap < (uint32_t)b->band_count) return FXL_ERR_NOMEM;
+    b->band_count = band_count;
     b->tris = tris;
     /* Triangle and entry indices are uint16 with FXL_BAND_NONE as the end. */
     b->tri_cap = tri_cap > FXL_BAND_MAX_TRIS ? FXL_BAND_MAX_TRIS : tri_cap;
@@ -63,13 +82,6 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     b->bin_cap = bin_cap > 0xFFFFu ? 0xFFFFu : bin_cap;
     b->seq[0] = 0;
     b->seq[1] = 0;
-    {
-        /* A band the core cannot draw into (a depth band in a build without
-         * FXL_HAVE_DEPTH) is refused now rather than mid-frame. */
-        fxl_target_t t;
-        const fxl_status_t st = band_target(b, buf0, 0, band_rows, &t);
-        if (st != FXL_OK) return st;
-    }
     return fxl_band_begin(b);
 }
 

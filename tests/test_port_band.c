@@ -618,6 +618,27 @@ void test_band_api_errors(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 241, f->store, 4, NULL, 0));
     /* Fewer entries than the 10 band headers. */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, f->bins, 9));
+    /* A frame taller than a target's origin reaches is refused at init,
+     * not mid-frame with part of it sent, and a failed init leaves the
+     * binding it replaces as it was (panel fields set by hand: no preset
+     * is that tall). */
+    {
+        fxl_band_t before;
+        const int32_t w = f->panel.width, h = f->panel.height;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, NULL, 0));
+        memcpy(&before, &f->band, sizeof before);
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, f->bins, 9));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &f->band, sizeof before);
+        f->panel.width = 16;
+        f->panel.height = FXL_TARGET_MAX_ORIGIN + 17;   /* last 16-row band at y0 = 16400 */
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 16, f->store, 4, NULL, 0));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &f->band, sizeof before);
+        f->panel.height = FXL_TARGET_MAX_ORIGIN + 16;   /* last band at y0 = 16384 */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 16, f->store, 4, NULL, 0));
+        TEST_ASSERT_EQUAL_INT(1025, f->band.band_count);
+        f->panel.width = w;
+        f->panel.height = h;
+    }
 
     need_band_draws();   /* the rest adds draws in the panel's format */
     /* a depth band in a build without depth: refused at init, not mid-frame */
