@@ -123,6 +123,10 @@ static int preset_ok(const fxl_panel_preset_t *pr)
 {
     unsigned r;
     if (pr->width == 0 || pr->height == 0 || (pr->init == NULL && pr->init_count > 0)) return 0;
+    /* Every step is checked before the first command goes out: one found
+     * bad by fxl_dcs_run would leave the controller half-initialised. */
+    for (r = 0; r < pr->init_count; r++)
+        if (pr->init[r].n > sizeof(pr->init[r].params)) return 0;
     for (r = 0; r < 4; r++) {
         /* Keep every controller address inside 16 bits. */
         if ((uint32_t)pr->offset[r].x + pr->width > 65535u ||
@@ -194,6 +198,9 @@ fxl_status_t fxl_panel_init(fxl_panel_t *panel, const fxl_port_hal_t *hal,
         st = hal_cmd(hal, (preset->flags & FXL_PANEL_INVERT) ? FXL_DCS_INVON : FXL_DCS_INVOFF, NULL, 0);
     if (st == FXL_OK) st = hal_cmd(hal, FXL_DCS_NORON, NULL, 0);
     if (st == FXL_OK) st = hal_cmd(hal, FXL_DCS_DISPON, NULL, 0);
+    /* A panel whose init failed part-way is in no known state: every call
+     * but fxl_panel_init refuses it (FXL_ERR_ARG) until an init succeeds. */
+    if (st != FXL_OK) panel->preset = NULL;
     return st;
 }
 
@@ -244,6 +251,12 @@ fxl_status_t fxl_panel_write(fxl_panel_t *panel, const void *data, size_t bytes)
     fxl_status_t st;
     if (panel == NULL || panel->preset == NULL || data == NULL || bytes == 0 || (bytes & 1u))
         return FXL_ERR_ARG;
+    /* A 16-bit HAL reads the data as uint16: port.h promises it 2-byte
+     * alignment (misaligned, a Cortex-M0+ faults). (uintptr_t is optional
+     * in C99; without it the check is the caller's.) */
+#ifdef UINTPTR_MAX
+    if ((panel->hal.flags & FXL_PORT_PIXELS_16BIT) && ((uintptr_t)data & 1u)) return FXL_ERR_ARG;
+#endif
     /* One DMA channel, and D/C must not change under a running transfer. */
     st = fxl_panel_wait_idle(panel);
     if (st != FXL_OK) return st;

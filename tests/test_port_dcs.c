@@ -451,6 +451,23 @@ void test_preset_addresses_beyond_16_bits_are_refused(void)
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
 }
 
+/* A preset step with more parameters than a step holds is refused before
+ * anything is sent (not after the reset and the steps before it). */
+void test_preset_step_longer_than_its_parameters_is_refused(void)
+{
+    static fxl_dcs_step_t steps[256];
+    fxl_panel_preset_t pr = fxl_ili9341_240x320;
+    TEST_ASSERT_TRUE(pr.init_count >= 2);
+    memcpy(steps, pr.init, pr.init_count * sizeof steps[0]);
+    pr.init = steps;
+    steps[pr.init_count - 1].n = (uint8_t)(sizeof steps[0].params + 1);
+    start_emu("ili9341");
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, &pr, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+    steps[pr.init_count - 1].n = (uint8_t)sizeof steps[0].params;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &pr, 0));
+}
+
 void test_init_refuses_a_pixel_format_other_than_rgb565(void)
 {
     fxl_panel_preset_t pr = fxl_st7789_240x320;
@@ -485,6 +502,10 @@ void test_hal_failures_become_io_errors(void)
     start_emu("st7789");
     hal.cmd = failing_cmd;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    /* the panel is in no known state: refused until an init succeeds */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_display(&panel, 1));
     tearDown();
 
     start_emu("st7789");
@@ -518,6 +539,10 @@ void test_bad_write_sizes_are_arg_errors(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, buf, 3));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, buf, 0));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, NULL, 2));
+    /* a HAL sending 16-bit frames reads uint16s: an odd address is refused */
+    panel.hal.flags |= FXL_PORT_PIXELS_16BIT;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_write(&panel, (const unsigned char *)buf + 1, 2));
+    TEST_ASSERT_EQUAL_UINT32(0, panel.started);
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_set_rotation(&panel, 4));
 }
 
@@ -556,6 +581,7 @@ int main(void)
     RUN_TEST(test_init_without_delay_refuses_before_sending_anything);
     RUN_TEST(test_init_refuses_a_pixel_format_other_than_rgb565);
     RUN_TEST(test_preset_addresses_beyond_16_bits_are_refused);
+    RUN_TEST(test_preset_step_longer_than_its_parameters_is_refused);
     RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
     RUN_TEST(test_hal_failures_become_io_errors);
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
