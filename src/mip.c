@@ -236,7 +236,12 @@ fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t
 
     if (storage == NULL || bytes == 0u || width == 0u || height == 0u)
         return FXL_ERR_ARG;
-    if (format == FXL_TEXFMT_I8 && palette == NULL)
+    /* The palette and the key are read as uint16_t: misaligned, that is
+     * undefined behaviour and a HardFault on a Cortex-M0+ (as in
+     * fxl_texture_validate). */
+    if (format == FXL_TEXFMT_I8 && (palette == NULL || ((uintptr_t)palette & 1u) != 0u))
+        return FXL_ERR_ARG;
+    if (key != NULL && ((uintptr_t)key & 1u) != 0u)
         return FXL_ERR_ARG;
     if (space != FXL_MIP_SPACE_STORED && space != FXL_MIP_SPACE_GAMMA22 &&
         space != FXL_MIP_SPACE_SRGB)

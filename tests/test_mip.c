@@ -344,6 +344,16 @@ void test_mip_build_error_paths(void)
                                                        NULL, FXL_MIP_SPACE_STORED));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2,
                                                               NULL, FXL_MIP_SPACE_STORED, &key));
+    {
+        /* a palette or key at an odd address (read as uint16_t): refused,
+         * never read */
+        static uint16_t words[258];
+        const uint16_t *odd = (const uint16_t *)(const void *)((const uint8_t *)words + 1);
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mip_build(g_l8, 5, 2, 2, FXL_TEXFMT_I8, 2, odd,
+                                                         FXL_MIP_SPACE_STORED));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mip_build_keyed(g_l8, 5, 2, 2, FXL_TEXFMT_L8, 2, NULL,
+                                                               FXL_MIP_SPACE_STORED, odd));
+    }
     /* one level: nothing to build, success */
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build(g_l8, 4, 2, 2, FXL_TEXFMT_L8, 1, NULL,
                                                 FXL_MIP_SPACE_STORED));
