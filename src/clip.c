@@ -123,8 +123,7 @@ fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3]
     if (!xf || !in || !out || !n) return FXL_ERR_ARG;
     *n = 0;
     if (!in_range(&in[0]) || !in_range(&in[1]) || !in_range(&in[2])) return FXL_ERR_RANGE;
-    if (xf->guard_q16 <= 0 || xf->guard_q16 > ((int32_t)FXL_GUARD_MAX << 16) || xf->near_q32 <= 0)
-        return FXL_ERR_RANGE;
+    if (!fxl__xform_ok(xf)) return FXL_ERR_RANGE;
     c0 = outcode(xf, &in[0]);
     c1 = outcode(xf, &in[1]);
     c2 = outcode(xf, &in[2]);

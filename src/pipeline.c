@@ -548,10 +548,29 @@ static void project_attr(const fxl_clipvert_t *c, fxl_vertex_t *out)
     out->color = pack_q8(c->r, c->g, c->b);
 }
 
+int fxl__xform_ok(const fxl_xform_t *xf)
+{
+    const int64_t near_max = (int64_t)INT32_MAX * 65536;
+    const int64_t half_max = (int64_t)FXL_TARGET_MAX_DIM * 32768;
+    const int64_t centre_max = ((int64_t)2 * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM) * 32768;
+    int64_t half;
+    if (xf->near_q32 < 65536 || xf->near_q32 > near_max) return 0;
+    if (xf->far_q32 != 0 && (xf->far_q32 <= xf->near_q32 || xf->far_q32 > near_max)) return 0;
+    if (xf->hw_q16 < 32768 || xf->hw_q16 > half_max || xf->hh_q16 < 32768 || xf->hh_q16 > half_max) return 0;
+    if (xf->cx_q16 < -centre_max || xf->cx_q16 > centre_max || xf->cy_q16 < -centre_max ||
+        xf->cy_q16 > centre_max)
+        return 0;
+    /* G * half <= FXL_GUARD_PX pixels (q16 * q16: < 2^24 * 2^28) */
+    half = xf->hw_q16 > xf->hh_q16 ? xf->hw_q16 : xf->hh_q16;
+    return xf->guard_q16 > 0 && xf->guard_q16 <= ((int32_t)FXL_GUARD_MAX << 16) &&
+           (int64_t)xf->guard_q16 * half <= ((int64_t)FXL_GUARD_PX << 32);
+}
+
 fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
 {
     fxl_status_t st;
     if (!xf || !c || !out) return FXL_ERR_ARG;
+    if (!fxl__xform_ok(xf)) return FXL_ERR_RANGE;
     if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
     project_attr(c, out);
     return FXL_OK;

@@ -23,6 +23,12 @@ int64_t fxl__mul_shr_s(int64_t a, int32_t b, unsigned sh, int *ovf);
 int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf);
 /* Clamp to int32 and set *ovf when clamped. */
 int32_t fxl__to_i32(int64_t x, int *ovf);
+/* Is xf within the ranges fxl_pipeline_prepare gives its fields (near in
+ * [2^-16, 2^31) units, far 0 or beyond near, 0 < G, G times the larger half
+ * size at most FXL_GUARD_PX, viewport centre and half sizes within the
+ * target limits)? fxl_xform_project and fxl_clip_triangle refuse a
+ * hand-filled xf outside them: their shifts and sums rely on them. */
+int fxl__xform_ok(const fxl_xform_t *xf);
 /* sin and cos of a in q30 (|error| <= 2^-21 + 2^-29). */
 void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
 /* The same for an angle in 2^-17 turns (any uint32, wraps): half of an

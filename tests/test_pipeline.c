@@ -579,6 +579,65 @@ static void test_project_rejects_w_at_or_behind_near(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
 }
 
+/* A hand-filled fxl_xform_t outside the ranges fxl_pipeline_prepare gives
+ * is refused by the projection and the clipper (it once reached a shift by
+ * ~2^32 with near below 2^-16, a left shift of a negative guard band and
+ * overflowing plane distances), while every edge of those ranges that
+ * prepare produces is accepted. */
+static void test_project_and_clip_refuse_a_hand_filled_xform_out_of_range(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t ok, xf;
+    fxl_clipvert_t c, tri[3], poly[FXL_CLIP_MAX_VERTS];
+    fxl_vertex_t out;
+    uint32_t n;
+    int k;
+    memset(&c, 0, sizeof c);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &ok));
+    c.w = (int64_t)1 << 33;
+    for (k = 0; k < 3; k++)
+        tri[k] = c;
+    tri[1].x = c.w / 2;
+    tri[2].y = c.w / 2;
+    for (k = 0; k < 12; k++) {
+        xf = ok;
+        switch (k) {
+        case 0: xf.near_q32 = 1; break;
+        case 1: xf.near_q32 = 65535; break;
+        case 2: xf.near_q32 = INT64_MAX - 1; break;
+        case 3: xf.far_q32 = INT64_MIN + 1; break;
+        case 4: xf.far_q32 = xf.near_q32; break;
+        case 5: xf.guard_q16 = -1; break;
+        case 6: xf.guard_q16 = 0; break;
+        case 7: xf.guard_q16 = (int32_t)FXL_GUARD_MAX << 16; break; /* G x 160 px > FXL_GUARD_PX */
+        case 8: xf.hw_q16 = 0; break;
+        case 9: xf.hh_q16 = (int64_t)FXL_TARGET_MAX_DIM * 32768 + 1; break;
+        case 10: xf.cx_q16 = INT64_MIN; break;
+        default: xf.cy_q16 = ((int64_t)2 * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM) * 32768 + 1; break;
+        }
+        c.w = xf.near_q32 > 0 && xf.near_q32 < ((int64_t)1 << 50) ? xf.near_q32 : (int64_t)1 << 33;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out), "project");
+        n = 7;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_RANGE, fxl_clip_triangle(&xf, tri, poly, &n), "clip");
+        TEST_ASSERT_EQUAL_UINT32(0, n);
+    }
+    /* prepare's extremes: near 2^-16 and far 2^15 - 2^-16, the smallest and
+     * largest viewports at the farthest origins */
+    p.near_q16 = 1;
+    p.far_q16 = INT32_MAX;
+    for (k = 0; k < 4; k++) {
+        const int32_t side = k & 1 ? FXL_TARGET_MAX_DIM : 1;
+        const int32_t o = k & 2 ? FXL_TARGET_MAX_ORIGIN : -FXL_TARGET_MAX_ORIGIN;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_viewport(&p, o, o, side, side));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+        c.w = xf.near_q32;
+        c.x = c.y = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, tri, poly, &n));
+    }
+}
+
 static void test_prepare_and_clip_report_overflow(void)
 {
     fxl_pipeline_t p;
@@ -1114,6 +1173,7 @@ int main(void)
     RUN_TEST(test_look_at_matches_double);
     RUN_TEST(test_projection_accuracy_target_random_meshes);
     RUN_TEST(test_project_rejects_w_at_or_behind_near);
+    RUN_TEST(test_project_and_clip_refuse_a_hand_filled_xform_out_of_range);
     RUN_TEST(test_prepare_and_clip_report_overflow);
     RUN_TEST(test_emit_culls_by_screen_winding);
     RUN_TEST(test_emit_triangle_through_eye_plane_stays_in_guard_band);

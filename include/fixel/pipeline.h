@@ -320,12 +320,19 @@ fxl_status_t fxl_xform_clip(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_cl
 fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec3_t *out);
 /* Perspective divide and viewport mapping of a vertex with w >= near.
  * FXL_ERR_RANGE for w < near (including w <= 0) or |x|, |y| beyond the
- * guard band by more than the clipper's rounding. */
+ * guard band by more than the clipper's rounding, and for an xf (filled by
+ * hand) outside the ranges fxl_pipeline_prepare gives: near in [2^-16,
+ * 2^15) (q32: [2^16, 2^47)), far 0 or beyond near and below 2^15, half
+ * sizes in [0.5, FXL_TARGET_MAX_DIM / 2] px, centres within
+ * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM / 2 px, 0 < G <= FXL_GUARD_MAX
+ * with G times the larger half size <= FXL_GUARD_PX. */
 fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out);
 /* Sutherland-Hodgman against near, far (if set) and the guard band, in that
  * order; attributes interpolated linearly in clip space. Each intersection
  * is computed from the inside vertex, so an edge shared by two triangles is
- * cut at the same point in both (watertight). *n = 0 when nothing is left. */
+ * cut at the same point in both (watertight). *n = 0 when nothing is left.
+ * FXL_ERR_RANGE for a vertex coordinate at FXL_CLIP_LIMIT_Q32 or beyond,
+ * and for an xf outside fxl_pipeline_prepare's ranges (fxl_xform_project). */
 fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n);
 
