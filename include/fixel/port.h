@@ -210,8 +210,11 @@ fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel);
  * referenced and must outlive the panel (a modified copy of a preset needs
  * static storage too). Forgets every transfer (started = done = 0): stop
  * any DMA of this panel first. Errors: FXL_ERR_ARG (NULL panel, hal,
- * preset, hal->cmd or hal->pixels, rotation > 3, bad preset),
- * FXL_ERR_UNSUPPORTED (hal->delay_ms NULL; nothing is sent), FXL_ERR_IO. */
+ * preset, hal->cmd or hal->pixels, rotation > 3, bad preset: a zero size,
+ * an address beyond 16 bits, a step of more than 15 parameters; nothing is
+ * sent), FXL_ERR_UNSUPPORTED (hal->delay_ms NULL; nothing is sent),
+ * FXL_ERR_IO. After FXL_ERR_IO the panel is refused (FXL_ERR_ARG) by every
+ * call but fxl_panel_init until an init succeeds. */
 fxl_status_t fxl_panel_init(fxl_panel_t *panel, const fxl_port_hal_t *hal,
                             const fxl_panel_preset_t *preset, unsigned rotation);
 /* Change rotation (MADCTL); width/height follow. Waits for transfers. */
@@ -223,7 +226,8 @@ fxl_status_t fxl_panel_set_window(fxl_panel_t *panel, int32_t x, int32_t y, int3
 /* Send pixel bytes after fxl_panel_set_window (in the layout of
  * fxl_panel_pixel_format). Waits for the previous transfer, starts this one
  * and returns; `data` must stay unchanged until fxl_panel_wait_idle (or the
- * next panel call) returns. FXL_ERR_ARG on NULL/odd/zero bytes. */
+ * next panel call) returns. FXL_ERR_ARG on NULL/odd/zero bytes, and on
+ * data at an odd address when the HAL sends 16-bit frames. */
 fxl_status_t fxl_panel_write(fxl_panel_t *panel, const void *data, size_t bytes);
 /* Wait until every started transfer has completed (calls hal->wait). */
 fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel);
@@ -298,10 +302,11 @@ typedef struct fxl_band {
  * tri_cap and bin_cap count entries of tris and bins (not bytes: see
  * FXL_BAND_TRI_BYTES, FXL_BAND_BIN_BYTES), and at most 65535 of each are
  * used (16-bit links). bins may be NULL with bin_cap 0 (fallback
- * only). Errors: FXL_ERR_ARG (NULL/zero), FXL_ERR_RANGE (band_rows > height
- * or more than 65535 bands), FXL_ERR_NOMEM (bin_cap below one header per
- * band while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build
- * without FXL_HAVE_DEPTH). */
+ * only). Errors: FXL_ERR_ARG (NULL/zero), FXL_ERR_RANGE (band_rows > height,
+ * width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
+ * FXL_TARGET_MAX_ORIGIN), FXL_ERR_NOMEM (bin_cap below one header per band
+ * while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build without
+ * FXL_HAVE_DEPTH). On an error *b is left unchanged. */
 fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, uint16_t *buf1,
                            uint16_t *depth, int32_t band_rows, fxl_band_tri_t *tris,
                            uint32_t tri_cap, fxl_band_bin_t *bins, uint32_t bin_cap);

@@ -103,7 +103,9 @@ uint32_t fxl_mip_size(uint32_t width, uint32_t height, fxl_texfmt_t format, uint
 /* Build levels 1 .. levels-1 in place: `storage` already holds level 0 and has
  * room for fxl_mip_size() bytes. Level n is the 2x2 box average of level n-1
  * (1x2 / 2x1 once a side reaches 1), each channel rounded to nearest. I8
- * levels average palette colours and store the nearest palette entry. */
+ * levels average palette colours and store the nearest palette entry.
+ * FXL_ERR_ARG for NULL storage, a zero side, an unknown format or space, an
+ * I8 palette that is NULL or at an odd address, or (RGB565) odd storage. */
 fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                            fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                            fxl_mip_space_t space);
@@ -111,7 +113,8 @@ fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width
  * NULL is fxl_mip_build): a level-n texel is transparent when at least half
  * of its sources are (2 of 4, 1 of 2), otherwise the average of its opaque
  * sources, nudged off the key value (RGB565: blue LSB flipped, L8: one code,
- * I8: the key index is never chosen). */
+ * I8: the key index is never chosen). A key at an odd address is
+ * FXL_ERR_ARG. */
 fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                                  fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                                  fxl_mip_space_t space, const uint16_t *key);
