@@ -230,10 +230,14 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
 static int rr_fits(const fxl__tri_t *tri)
 {
     uint32_t uv;
+    /* A side of 2^12 texels or more alone passes the limit below (its
+     * period is 2^28 q16 units, twice that for mirror): refused first, so
+     * the sum fits 32 bits (with FXL_TEX_MAX_LOG2 14, two periods of 2^14
+     * wrapped it to 0 and such triangles took runs whose a, b overflowed). */
     if (fxl__signed_u(tri) || fxl__signed_v(tri) || tri->uv_wide || tri->has_color ||
-        tri->auto_duv >= ((uint64_t)1 << 29))
+        tri->auto_duv >= ((uint64_t)1 << 29) || tri->tex->log2_w >= 12 || tri->tex->log2_h >= 12)
         return 0;
-    /* in 32 bits: the ranges below 2^29, the periods at most 2^30 */
+    /* in 32 bits: the ranges below 2^29, the periods at most 2^29 */
     uv = (uint32_t)tri->auto_duv + ((((uint32_t)1 << tri->tex->log2_w) + ((uint32_t)1 << tri->tex->log2_h)) << 17);
     return uv <= ((uint32_t)1 << 29) - ((uint32_t)1 << 16) &&
            (int32_t)(uv >> 18) + 260 <= budget_less_margins(tri->draw, FXL_Q16_ONE / 64);

@@ -1291,6 +1291,63 @@ static uint32_t probe_index_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
     return probe_texel_index_z(tri, s);
 }
 
+/* AUTO on the largest square texture this build accepts (1 <<
+ * FXL_TEX_MAX_LOG2 texels a side): rolled floors, every pixel within the
+ * budget. Reciprocal runs need |u| + |v| plus a
+ * period an axis below 2^29 q16 units; summed in 32 bits, the periods of a
+ * 2^14-texel square wrapped to 0, and with FXL_TEX_MAX_LOG2 14 such floors
+ * took runs whose numerators overflowed (errors of 10^4 texels here;
+ * config_tests.sh runs this in its tex14 configuration). The probe draws:
+ * the one texel given is never read. */
+void test_auto_on_the_largest_texture_keeps_its_budget(void)
+{
+    static uint8_t texel;
+    static uint16_t buf[320 * 240];
+    const int side = 1 << FXL_TEX_MAX_LOG2;
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    int k, i, x, y, covered = 0, rr_tris = 0;
+    double worst = 0;
+    char msg[200];
+    TEST_NEEDS(FXL_HAVE_AUTO);
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    lcg_state = 6161u;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, &texel, (uint32_t)side, (uint32_t)side, FXL_TEXFMT_L8, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.depth = 0;
+    d.persp = FXL_PERSP_AUTO;
+    for (k = 0; k < 40; k++) {
+        fxl_vertex_t v[3];
+        /* the runs test's floors (1,600 to 4,800 texels of range), their
+         * periods scaled from a 64-texel texture to this one, then moved
+         * 0.6 of a period on: coordinates past 2^13 texels, where the
+         * runs' 32-bit numerators would not hold them */
+        rr_floor_tri(v, 320, 240);
+        for (i = 0; i < 3; i++) {
+            v[i].u = (fxl_q16_t)((int64_t)v[i].u * 64 / side + 39322);
+            v[i].v = (fxl_q16_t)((int64_t)v[i].v * 64 / side + 39322);
+        }
+        probe_target(&t, buf, 320, 240);
+        probe_rr = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_rr));
+        rr_tris += probe_rr;
+        for (y = 0; y < 240; y++)
+            for (x = 0; x < 320; x++)
+                if (probe_count[y * 320 + x]) {
+                    const double e = probe_error_at(v, side, 0, 320, x, y);
+                    worst = e > worst ? e : worst;
+                    covered++;
+                }
+    }
+    snprintf(msg, sizeof msg, "%d-texel texture: max error %.4f texels over %d pixels (budget 0.25), %d of 40 triangles took runs",
+             side, worst, covered, rr_tris);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(covered > 40 * 1000);
+    TEST_ASSERT_TRUE_MESSAGE(worst <= 0.25, msg);
+}
+
 /* AUTO's reciprocal runs (recip_run.h) on floor-like triangles, whose
  * segments would all be short: every pixel within the budget (generic
  * walk, against the double-precision reference, and within the runs' own
@@ -2991,6 +3048,7 @@ int main(void)
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
     RUN_TEST(test_auto_reciprocal_runs_agree_and_stay_within_budget);
+    RUN_TEST(test_auto_on_the_largest_texture_keeps_its_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
