@@ -992,7 +992,10 @@ static uint32_t fz_probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
 static int fz_state_init(fz_state *s)
 {
     size_t words = (size_t)FZ_CANARY * 2u + (size_t)(FZ_MAX_DIM + 8) * FZ_MAX_DIM;
-    size_t tex_bytes = (size_t)FZ_TEX_MAX_TEXELS0 * 2u * 4u / 3u + 64u;
+    /* a chain of at most 2^16 level-0 texels: every level at least halves
+     * the one before, so below 2^17 texels (4/3 of level 0 held only for
+     * square-ish chains: 16384 x 4 with FXL_TEX_MAX_LOG2 14 needs 1.37) */
+    size_t tex_bytes = (size_t)FZ_TEX_MAX_TEXELS0 * 2u * 2u + 64u;
     memset(s, 0, sizeof *s);
     if (fz_guard_alloc(&s->texmem, tex_bytes) || fz_guard_alloc(&s->palmem, 512))
         return -1;
@@ -1046,8 +1049,13 @@ static void fz_place_texture(fz_state *s, fz_case *c)
     for (L = 0; L < nl; L++)
         texels += 1u << ((lw > L ? lw - L : 0u) + (lh > L ? lh - L : 0u));
     bytes = (size_t)texels * bpp;
-    if (bytes > s->texmem.bytes)
-        bytes = s->texmem.bytes;
+    if (bytes > s->texmem.bytes) {
+        /* the harness's own invariant (fz_state_init): a chain cut short
+         * here would let the core read past it as if it were the core's fault */
+        fprintf(stderr, "fuzz harness: texture chain of %zu bytes exceeds its %zu-byte buffer\n", bytes,
+                s->texmem.bytes);
+        abort();
+    }
     dst = c->tex_at_start ? s->texmem.base : s->texmem.base + s->texmem.bytes - bytes;
     for (i = 0; i < bytes; i++)
         dst[i] = (uint8_t)(fz_xs(&x) >> 24);
