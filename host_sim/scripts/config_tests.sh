@@ -15,7 +15,8 @@
 # min-panel, draws byte-swapped targets only: tests that check native
 # pixels draw in left_out.h's drawable_rgb565() order and convert. Each also
 # runs fixel-fuzz (FXL_CONFIG_FUZZ_CASES, default 200000 cases), whose
-# status check holds the core to the same model.
+# status check holds the core to the same model. One more, tex14, keeps
+# every feature and raises FXL_TEX_MAX_LOG2 to its largest value, 14.
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
@@ -44,12 +45,15 @@ config_defines() {
         # walks): tests that want native pixels draw swapped and convert
         # (left_out.h, drawable_rgb565)
         echo FXL_HAVE_MIPMAP FXL_HAVE_GENERIC FXL_HAVE_AUTO FXL_FAST_NATIVE ;;
+    tex14) # every feature, textures up to 16384 texels a side (the
+        # largest FXL_TEX_MAX_LOG2): limits that scale with it
+        echo FXL_TEX_MAX_LOG2=14 ;;
     *) return 1 ;;
     esac
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do
@@ -60,9 +64,15 @@ for name in "${names[@]}"; do
     dir="$out/$name"
     rm -rf "$dir"
     mkdir -p "$dir"
-    for d in $defs; do printf '#define %s 0\n' "$d"; done >"$dir/config.h"
+    # NAME: #define NAME 0 (left out); NAME=VALUE: #define NAME VALUE
+    for d in $defs; do
+        case "$d" in
+        *=*) printf '#define %s %s\n' "${d%%=*}" "${d#*=}" ;;
+        *) printf '#define %s 0\n' "$d" ;;
+        esac
+    done >"$dir/config.h"
     t0=$SECONDS
-    echo "== $name: $(echo $defs | sed 's/ / 0, /g') 0"
+    echo "== $name: $(for d in $defs; do case "$d" in *=*) echo "$d" ;; *) echo "$d=0" ;; esac; done | paste -sd' ')"
     if ! cmake -S . -B "$dir/build" -DFXL_CONFIG_FILE="$(cd "$dir" && pwd)/config.h" >"$dir/configure.log" 2>&1 ||
         ! cmake --build "$dir/build" -j "$jobs" >"$dir/build.log" 2>&1; then
         grep -E 'error|Error' "$dir/build.log" "$dir/configure.log" | head -n 20
