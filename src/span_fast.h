@@ -495,8 +495,10 @@ static FXL__UNSWITCH void FXL_T_LEAN(const fxl__tri_t *tri, const int autoseg, c
             zz += dz * off;
 #endif
         }
-        /* a < b whenever xl <= cl < cr <= xr (the caller's contract); the
-         * test keeps a broken caller from writing a negative count */
+        /* a < b without a test: the caller (raster.c) passes xl <= cl <
+         * cr <= xr, the first segment reaches cl (x0 above, or
+         * fxl__auto_first), and later ones start before cr. A broken caller
+         * would write a negative count's n & 3 pixels: keep that contract. */
 #if FXL_HAVE_QUAD
 #define FXL_T_QUAD_PICK(call_q, call) (quad ? (call_q) : (call))
 #else
@@ -679,14 +681,15 @@ static FXL__HOT_INLINE uint32_t FXL_T_LRUN(uint64_t *ps, uint32_t *pc, int32_t m
  * made instead of stored in a batch and read back, and a pixel is the
  * point loop's on one row: bit for bit the batches' values, without the v
  * axis, the batch's stores and loads and its set-up.
- * The span starts at pixel x of the row (pix and, with depth, zb point
- * there; zz is the row's one depth); k is the segment length's log2.
+ * The span starts at pixel x of the row; pix and, with depth, zb point at
+ * its pixel cl, inside the clip (a pointer left of it could lie before the
+ * buffer); zz is the row's one depth; k is the segment length's log2.
  * Returns the pixels written. */
 static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, const uint16_t *row, uint16_t *pix,
                                          uint16_t *zb, uint32_t zz, int k, int32_t x, int32_t cl, int32_t cr,
                                          int32_t xr)
 {
-    const int32_t N = (int32_t)1 << k, x0 = x;
+    const int32_t N = (int32_t)1 << k;
     const uint32_t su = FXL__IDX_TOPU ? 16u - L->lw : 0u;
     const uint32_t shu = L->shu, mu16 = L->mu16;
     const int32_t r = au->r;
@@ -708,8 +711,8 @@ static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, 
         /* whole segments inside [cl, cr) before the span's last pixel */
         m = k >= 2 && x >= cl ? ((cr < xr - 1 ? cr : xr - 1) - x) >> k : 0;
         if (m > 0) {
-            uint16_t *const d = pix + (x - x0);
-            uint16_t *const z = FXL_T_DEPTH ? zb + (x - x0) : 0;
+            uint16_t *const d = pix + (x - cl);
+            uint16_t *const z = FXL_T_DEPTH ? zb + (x - cl) : 0;
             /* copies for subdiv16, k == 4 (the depth variants on 32-bit
              * cores, where the benchmark draws without depth, keep only
              * the general one: ~2 KB of Cortex-M4 code each) */
@@ -746,9 +749,9 @@ static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, 
                 a = cl;
             }
             m = (x + n < cr ? x + n : cr) - a;
-            d = pix + (a - x0);
+            d = pix + (a - cl);
 #if FXL_T_DEPTH
-            z = zb + (a - x0);
+            z = zb + (a - cl);
 #endif
             for (; m >= 4; m -= 4) {
                 FXL_T_LPIX(0);
@@ -865,7 +868,7 @@ static FXL__NOINLINE int FXL__CAT(FXL_T_ROWC, _body)(const fxl__tri_t *tri, int3
         rowc_value(av.s, av.r, av.k, av.half, 0) == s.v) {
         /* one texel row for the whole span (FXL_T_LROW) */
         const uint16_t *const trow = L.tex + (((s.v << L.lw) & L.mv16) >> 16);
-        written = FXL_T_LROW(&au, &L, trow, tg->pixels + (rowidx + x0), FXL_T_DEPTH ? tg->depth + (rowidx + x0) : 0,
+        written = FXL_T_LROW(&au, &L, trow, tg->pixels + (rowidx + cl), FXL_T_DEPTH ? tg->depth + (rowidx + cl) : 0,
                              FXL_T_DEPTH ? s.z >> 16 : 0u, k, x0, cl, cr, xr);
     } else
 #endif
