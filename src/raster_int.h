@@ -160,7 +160,8 @@ typedef struct fxl__tri {
      * Bit 1: a clamp or border axis with a vertex near or past the 2^15
      * texels its saturated int32 coordinates hold; every pixel is then a
      * correction point (raster.c). Bit 2: some plane's gradient is kept
-     * modulo 2^64 and is 2^38 units a sub-pixel or more (setup.c, gradient:
+     * modulo 2^64 and is 2^38 units a sub-pixel or more (2^(42 - S) for
+     * S > 4, so that 2^S sub-pixels of it fit int64; setup.c, gradient:
      * a needle, its attribute range within ~2^-11 px across); its values
      * are right, but segment bounds and the per-segment LOD, which read
      * the gradients' size, are not: every pixel is a correction point and

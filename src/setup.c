@@ -73,6 +73,12 @@ typedef struct area {
 #else
 #define FXL__SETUP_INLINE inline
 #endif
+/* log2 of the "huge" gradient, units a sub-pixel: 2^38 a sub-pixel is 2^42
+ * units a pixel at S = 4, which is what the per-pixel readers (gx * ONE in
+ * lod_setup, auto.c, auto.h) need to stay within int64; at S = 5, 6 the
+ * same 2^42 a pixel is 2^37, 2^36 a sub-pixel. */
+#define FXL__HUGE_LOG2 (FXL__S > 4 ? 42 - FXL__S : 38)
+
 static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
 {
     const fxl__div64_t *dv = &det->abs;
@@ -88,7 +94,8 @@ static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
         const uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;   /* < 2^62 */
         uint64_t rem, q = fxl__div64_by(a, dv, &rem);
         /* the general path's test below, on floor(|N| 2^PF / den) */
-        if ((q >> (38 + FXL__PF)) && q >= ((uint64_t)1 << (38 + FXL__PF)) + (N < 0 ? (uint64_t)1 << FXL__PF : 0u))
+        if ((q >> (FXL__HUGE_LOG2 + FXL__PF)) &&
+            q >= ((uint64_t)1 << (FXL__HUGE_LOG2 + FXL__PF)) + (N < 0 ? (uint64_t)1 << FXL__PF : 0u))
             det->huge = 4u;
         if (2u * rem >= (uint64_t)den)
             q++;
@@ -96,7 +103,7 @@ static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
     }
     qi = fxl__sdiv64(N, den);
     r = N - qi * den;
-    if ((uint64_t)(qi + ((int64_t)1 << 38)) >> 39)   /* qi < -2^38 or qi >= 2^38 */
+    if ((uint64_t)(qi + ((int64_t)1 << FXL__HUGE_LOG2)) >> (FXL__HUGE_LOG2 + 1))   /* |qi| beyond 2^HUGE */
         det->huge = 4u;
     return (int64_t)(((uint64_t)qi << FXL__PF) + (uint64_t)div_frac(r, den, FXL__PF));
 }

@@ -29,7 +29,8 @@
  *   divided at every pixel whatever `persp` says: such coordinates
  *   saturate, and cannot be stepped between. So is a needle: a sliver so
  *   thin that some attribute plane changes by 2^38 of its units a
- *   sub-pixel (its whole range within ~2^-11 px across), whose gradients
+ *   sub-pixel (2^(42 - FXL_SUBPIXEL_BITS) at 5 and 6 bits: 2^42 a pixel at
+ *   most; its whole range within ~2^-11 px across), whose gradients
  *   are held modulo 2^64 - exact values, but no size for segment bounds
  *   or the per-segment LOD to read; it takes FXL_LOD_TRIANGLE's LOD.
  * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
