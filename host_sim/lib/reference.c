@@ -407,8 +407,8 @@ double ref_chord_bound(const fxl_vertex_t tri[3], uint32_t log2_w, uint32_t log2
     double X[3], Y[3], q[3], su[3], sv[3], det, qx, sux, svx, nu = 0, nv = 0, qmin = 1e300;
     int i;
     for (i = 0; i < 3; i++) {
-        X[i] = ref_snap(tri[i].x) / 16.0;
-        Y[i] = ref_snap(tri[i].y) / 16.0;
+        X[i] = ref_snap(tri[i].x) / (double)REF_S;
+        Y[i] = ref_snap(tri[i].y) / (double)REF_S;
         q[i] = (double)tri[i].inv_w;
         su[i] = tri[i].u / 65536.0 * ldexp(1.0, (int)log2_w) * q[i];
         sv[i] = tri[i].v / 65536.0 * ldexp(1.0, (int)log2_h) * q[i];

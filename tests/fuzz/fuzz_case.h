@@ -1198,6 +1198,7 @@ static int fz_check_writes(const fz_case *c, const fz_state *s, const uint16_t *
 
 /* ---- check 7: texel values --------------------------------------------------- */
 
+#define FZ_ONE ((int64_t)1 << FXL_SUBPIXEL_BITS)   /* sub-pixels a pixel */
 #define FZ_TEXEL_SPAN 16   /* widest footprint (texels an axis) check 7 examines */
 
 /* The whole periods (repeat) or pairs of them (mirror) setup.c rebases an
@@ -1327,7 +1328,7 @@ static void fz_gouraud_range(const fz_gouraud *g, int64_t fx, int64_t fy, int lo
         const fz_case *cs = &g->cs[ch >> 1];
         double val[2] = {0, 0}, e[2], l, h;
         (void)ref_uv_at(cs->v, (double)fx + 0.5, (double)fy + 0.5, g->affine, &val[0], &val[1], NULL, NULL);
-        fz_exact_bound(cs, fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)g->L, g->affine, e);
+        fz_exact_bound(cs, fx * FZ_ONE + FZ_ONE / 2, fy * FZ_ONE + FZ_ONE / 2, FZ_ONE * (int64_t)g->L, g->affine, e);
         l = floor(val[ch == 1] - e[ch == 1] - g->chord[ch >> 1]);
         h = floor(val[ch == 1] + e[ch == 1] + g->chord[ch >> 1]);
         /* (a bound that is not finite allows the whole channel) */
@@ -1363,6 +1364,7 @@ static int fz_gradient_huge(const fz_case *c)
 {
     const fxl_draw_t *d = &c->draw;
     const int affine = d->persp == FXL_PERSP_AFFINE;
+    const int hl = FXL_SUBPIXEL_BITS > 4 ? 42 - FXL_SUBPIXEL_BITS : 38;
     double X[3], Y[3], q[3], det, worst = 0;
     uint32_t mx = 0;
     int i, p, sh;
@@ -1415,7 +1417,8 @@ static int fz_gradient_huge(const fz_case *c)
         g = (nx > ny ? nx : ny) / fabs(det);
         worst = g > worst ? g : worst;
     }
-    return worst >= ldexp(1.001, 38) ? 2 : (worst >= ldexp(0.999, 38) ? 1 : 0);
+    /* setup.c's FXL__HUGE_LOG2: 2^42 units a pixel, 2^38 a sub-pixel at S <= 4 */
+    return worst >= ldexp(1.001, hl) ? 2 : (worst >= ldexp(0.999, hl) ? 1 : 0);
 }
 
 /* The frame column of the first pixel of the triangle's span on frame row
@@ -1610,7 +1613,7 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
                 FZ_FAIL("pixel (%d,%d) written on a zero-area triangle", col, row);
             /* a segment's ends are up to L pixels from the pixel: the
              * planes' rounding grows with the distance from their anchor */
-            fz_exact_bound(c, fx * 16 + 8, fy * 16 + 8, 16 * (int64_t)L, affine, e);
+            fz_exact_bound(c, fx * FZ_ONE + FZ_ONE / 2, fy * FZ_ONE + FZ_ONE / 2, FZ_ONE * (int64_t)L, affine, e);
             e[0] += chord;
             e[1] += chord;
             if (d->persp == FXL_PERSP_AUTO) {

@@ -1417,14 +1417,14 @@ static int fzp_check_emitted_geometry(const fz_pcase *pc, const fxl_pipeline_t *
         if (!inside)
             continue;
         /* twice the signed area in pixels (y down), and how far moving each
-         * vertex by d (snapping, 1/32 px, plus the tolerance) can change it */
+         * vertex by d (snapping, half a sub-pixel, plus the tolerance) can change it */
         area = ((pr[1].sx - pr[0].sx) * (pr[2].sy - pr[0].sy) - (pr[2].sx - pr[0].sx) * (pr[1].sy - pr[0].sy)) /
                (65536.0 * 65536.0);
         for (k = 0; k < 3; k++) {
             e = fmax(e, fmax(pr[k].tx, pr[k].ty) / 65536.0);
             l1 += (fabs(pr[(k + 1) % 3].sx - pr[k].sx) + fabs(pr[(k + 1) % 3].sy - pr[k].sy)) / 65536.0;
         }
-        d = e + 1.0 / 32.0;
+        d = e + ldexp(1.0, -(FXL_SUBPIXEL_BITS + 1));
         margin = 4.0 * d * l1 + 16.0 * d * d;
         if (p->cull == FXL_CULL_CW ? area > -margin : p->cull == FXL_CULL_CCW && area < margin)
             continue; /* culled, or too close to tell */
