@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "unity.h"
+#include "test_features.h"
 #include "crc32.h"
 
 /* The shared sources, as one unit: the test build globs only tests/. */
@@ -146,6 +147,7 @@ static void test_expected_file_lists_init_and_every_frame_in_order(void)
 static void test_wire_crc_of_every_frame_equals_expected_file(void)
 {
     uint32_t i, refused = 0;
+    TEST_NEEDS_DEFAULT_GRID();
     load_expected();
     init_app();
     TEST_ASSERT_GREATER_THAN(fw_frame_count, expected_count);

@@ -35,6 +35,7 @@
 
 #include "unity.h"
 #include "fuzz/fuzz_pipe.h"
+#include "test_features.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -401,6 +402,10 @@ static void expect_outcome(int bad, const char *msg, const fz_outcome *o, int wa
     char m2[FZ_MSG + 120];
     snprintf(m2, sizeof m2, "%s: %s", what, bad ? msg : "ok");
     TEST_ASSERT_TRUE_MESSAGE(!bad, m2);
+    /* the recorded status and count are the default grid's (replays run
+     * clean on any grid) */
+    if (!FXL_TEST_DEFAULT_GRID)
+        return;
     TEST_ASSERT_EQUAL_INT_MESSAGE(want, o->status, what);
     if (want_written >= 0)
         TEST_ASSERT_EQUAL_INT_MESSAGE(want_written, (int)o->written, what);

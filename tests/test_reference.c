@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "unity.h"
+#include "test_features.h"
 #include "reference.h"
 
 void setUp(void) {}
@@ -38,6 +39,7 @@ static void tri3(fxl_vertex_t t[3], double x0, double y0, double x1, double y1, 
 
 void test_snap_rounds_to_nearest_sixteenth_ties_up(void)
 {
+    TEST_NEEDS_DEFAULT_GRID();
     /* one grid unit = 1/16 px = 4096 in q16; half a unit = 2048 */
     TEST_ASSERT_EQUAL_INT32(8, ref_snap(PX(0.5)));
     TEST_ASSERT_EQUAL_INT32(8, ref_snap(PX(0.5) + 2047));   /* below the tie */
@@ -187,8 +189,9 @@ void test_zero_area_triangle_draws_nothing(void)
     uint8_t mask[16 * 16];
     tri3(t, 0.5, 0.5, 8.5, 4.5, 4.5, 2.5); /* collinear */
     TEST_ASSERT_EQUAL_INT(0, (int)ref_coverage_mask(t, 0, 0, 16, 16, mask));
-    /* distinct before snapping, identical after: (0.5 + 1/64) snaps to 0.5 */
-    tri3(t, 0.5, 0.5, 0.5 + 1.0 / 64, 8.5, 0.5, 8.5);
+    /* distinct before snapping, identical after: 0.5 plus a quarter of a
+     * grid unit (1/64 px on the default grid) snaps to 0.5 */
+    tri3(t, 0.5, 0.5, 0.5 + ldexp(1.0, -(FXL_SUBPIXEL_BITS + 2)), 8.5, 0.5, 8.5);
     TEST_ASSERT_EQUAL_INT(0, (int)ref_coverage_mask(t, 0, 0, 16, 16, mask));
 }
 
@@ -227,11 +230,14 @@ void test_coverage_equals_literal_rule_on_random_triangles(void)
         double x[3], y[3];
         uint8_t mask[24 * 24];
         for (k = 0; k < 3; ++k) {
-            /* coarse grids (1/2, 1/4 px) put many centres exactly on edges */
+            /* coarse grids (1/2, 1/4 px) put many centres exactly on edges;
+             * on the build's sub-pixel grid, so the literal rule on these
+             * values is the rule on the snapped ones (1/2 px only at 1 bit) */
+            const double grid = n % 2 || FXL_SUBPIXEL_BITS < 2 ? 2.0 : 4.0;
             seed = seed * 1664525u + 1013904223u;
-            x[k] = (double)((seed >> 8) % 41u) / (n % 2 ? 2.0 : 4.0) - 1.0;
+            x[k] = (double)((seed >> 8) % 41u) / grid - 1.0;
             seed = seed * 1664525u + 1013904223u;
-            y[k] = (double)((seed >> 8) % 41u) / (n % 2 ? 2.0 : 4.0) - 1.0;
+            y[k] = (double)((seed >> 8) % 41u) / grid - 1.0;
             t[k] = vtx(x[k], y[k], K20, 0, 0);
         }
         (void)ref_coverage_mask(t, -2, -2, 24, 24, mask);

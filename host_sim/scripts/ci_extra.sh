@@ -9,7 +9,8 @@
 #   3. host_sim/scripts/config_matrix.sh: the core compiles warning-free in
 #      every documented configuration (FXL_HAVE_*, FXL_FAST_*);
 #      host_sim/scripts/config_tests.sh: the whole test suite and 200,000
-#      fuzz cases pass in eight reduced ones and with FXL_TEX_MAX_LOG2 14
+#      fuzz cases pass in eight reduced ones, with FXL_TEX_MAX_LOG2 14 and
+#      with FXL_SUBPIXEL_BITS 1 and 6
 #      (every FXL_HAVE_* option left
 #      out at least once, four without the generic walk, one of them an SPI
 #      panel's with byte-swapped walks only, and point, swapped and

@@ -15,8 +15,10 @@
 # min-panel, draws byte-swapped targets only: tests that check native
 # pixels draw in left_out.h's drawable_rgb565() order and convert. Each also
 # runs fixel-fuzz (FXL_CONFIG_FUZZ_CASES, default 200000 cases), whose
-# status check holds the core to the same model. One more, tex14, keeps
-# every feature and raises FXL_TEX_MAX_LOG2 to its largest value, 14.
+# status check holds the core to the same model. Three more keep every
+# feature and take a numeric option to its limit: tex14 (FXL_TEX_MAX_LOG2
+# 14), sub1 and sub6 (FXL_SUBPIXEL_BITS 1 and 6: tests of golden values,
+# which are the 1/16 px grid's, report IGNORE there; test_features.h).
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
@@ -48,12 +50,17 @@ config_defines() {
     tex14) # every feature, textures up to 16384 texels a side (the
         # largest FXL_TEX_MAX_LOG2): limits that scale with it
         echo FXL_TEX_MAX_LOG2=14 ;;
+    sub6) # every feature, vertices on a 1/64 px grid (the finest
+        # FXL_SUBPIXEL_BITS; golden images are the 1/16 grid's: skipped)
+        echo FXL_SUBPIXEL_BITS=6 ;;
+    sub1) # every feature, vertices on a 1/2 px grid (the coarsest)
+        echo FXL_SUBPIXEL_BITS=1 ;;
     *) return 1 ;;
     esac
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14 sub1 sub6)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do

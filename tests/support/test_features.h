@@ -22,4 +22,14 @@ void test_needs_draw(const char *missing);
             TEST_IGNORE_MESSAGE("needs " #flag ", left out of this build by its configuration");         \
     } while (0)
 
+/* Golden values (image CRCs, recorded results) are the default 1/16 px
+ * grid's: with another FXL_SUBPIXEL_BITS vertices snap elsewhere, so a test
+ * of them reports IGNORE there (config_tests.sh's sub6 runs the rest). */
+#define FXL_TEST_DEFAULT_GRID (FXL_SUBPIXEL_BITS == 4)
+#define TEST_NEEDS_DEFAULT_GRID()                                                                          \
+    do {                                                                                                   \
+        if (!FXL_TEST_DEFAULT_GRID)                                                                        \
+            TEST_IGNORE_MESSAGE("needs FXL_SUBPIXEL_BITS 4: its golden values are the 1/16 px grid's");  \
+    } while (0)
+
 #endif
