@@ -6,6 +6,7 @@
  * up planes (setup.c), walk rows with exact edges (edge.c), hand each
  * clipped span to span.c.
  */
+#include <stddef.h>
 #include "raster_int.h"
 #include "persp.h"
 #include "auto.h"
@@ -433,7 +434,8 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw, cons
         fxl_vertex_t tv[3];
         int k;
         for (k = 0; k < 3; k++) {
-            uint16_t ix = idx[3 * i + (uint32_t)k];
+            /* size_t: 3 i wraps 32 bits past 1.4 x 10^9 triangles */
+            uint16_t ix = idx[(size_t)3 * i + (size_t)k];
             if (ix >= vert_count)
                 return FXL_ERR_RANGE;
             tv[k] = verts[ix];

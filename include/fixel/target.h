@@ -50,7 +50,10 @@ typedef struct fxl_target {
     fxl_pixfmt_t format;
 } fxl_target_t;
 
-/* Bytes of a pixel (or depth) buffer for w x h: use it to size static arrays. */
+/* Bytes of a pixel (or depth) buffer for w x h with stride w: use it to
+ * size static arrays. With a stride s > w the buffer needs
+ * FXL_TARGET_BYTES(s, h - 1) + FXL_TARGET_BYTES(w, 1), i.e. s * h * 2 is
+ * enough: rows are s pixels apart. */
 #define FXL_TARGET_BYTES(w, h) ((uint32_t)(w) * (uint32_t)(h) * 2u)
 
 /* Initialise: origin (0, 0), clip = whole buffer, no depth buffer. */
