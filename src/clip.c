@@ -117,13 +117,20 @@ static int in_range(const fxl_clipvert_t *v)
 fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n)
 {
+    if (!xf || !in || !out || !n) return FXL_ERR_ARG;
+    *n = 0;
+    if (!fxl__xform_ok(xf)) return FXL_ERR_RANGE;
+    return fxl__clip_triangle(xf, in, out, n);
+}
+
+fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
+                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n)
+{
     fxl_clipvert_t buf[2][CLIP_SCRATCH];
     int c0, c1, c2, cur = 0, pl;
     uint32_t count = 3, i;
-    if (!xf || !in || !out || !n) return FXL_ERR_ARG;
     *n = 0;
     if (!in_range(&in[0]) || !in_range(&in[1]) || !in_range(&in[2])) return FXL_ERR_RANGE;
-    if (!fxl__xform_ok(xf)) return FXL_ERR_RANGE;
     c0 = outcode(xf, &in[0]);
     c1 = outcode(xf, &in[1]);
     c2 = outcode(xf, &in[2]);

@@ -753,7 +753,8 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
             fxl__texgen_finish(&p->texgen, (const int32_t(*)[3])vt, tc);
             for (k = 0; k < 3; k++) { cv[k].u = tc[k].u; cv[k].v = tc[k].v; }
         }
-        if ((st = fxl_clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
+        /* xf is fxl_pipeline_prepare's: the unchecked forms */
+        if ((st = fxl__clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
         if (n < 3) {
             if (stats) { stats->triangles++; stats->culled_outside++; }
             continue;
@@ -763,8 +764,10 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                 if ((st = project_cached(&xf, cache, ncache, idx3[k], &poly[k], &scr[k])) != FXL_OK)
                     return st;
         } else {
-            for (k = 0; k < n; k++)
-                if ((st = fxl_xform_project(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
+            for (k = 0; k < n; k++) {
+                if ((st = project_pos(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
+                project_attr(&poly[k], &scr[k]);
+            }
         }
         for (k = 1; k + 1 < n; k++) {
             fxl_vertex_t tri[3];

@@ -29,6 +29,11 @@ int32_t fxl__to_i32(int64_t x, int *ovf);
  * target limits)? fxl_xform_project and fxl_clip_triangle refuse a
  * hand-filled xf outside them: their shifts and sums rely on them. */
 int fxl__xform_ok(const fxl_xform_t *xf);
+/* fxl_clip_triangle for an xf known good (the mesh path's, from
+ * fxl_pipeline_prepare): no argument or xf checks, ~2% of a vertex's
+ * Cortex-M4 instructions. */
+fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
+                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n);
 /* sin and cos of a in q30 (|error| <= 2^-21 + 2^-29). */
 void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
 /* The same for an angle in 2^-17 turns (any uint32, wraps): half of an
