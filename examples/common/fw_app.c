@@ -176,8 +176,10 @@ fxl_status_t fw_app_frame(fw_app_t *a, int scene, uint32_t frame, fw_result_t *r
     r->stats.pixels = r->stats.spans = r->stats.divisions = r->stats.generic = 0;
     spi_mock_restart(&a->spi);
     fw_mark_frame();
-    st = fw_scene_setup(&a->scenes, scene, frame, a->panel.width, a->panel.height, &a->view);
-    if (st == FXL_OK) st = fxl_band_begin(&a->band);
+    /* the band first: after a failed set-up the frame below renders
+     * empty, not the previous frame's triangles with a half-set draw */
+    st = fxl_band_begin(&a->band);
+    if (st == FXL_OK) st = fw_scene_setup(&a->scenes, scene, frame, a->panel.width, a->panel.height, &a->view);
     ctx.band = &a->band;
     ctx.draw = &a->view.draw;
     ctx.count = 0;

@@ -49,9 +49,12 @@ void Reset_Handler(void)
     uint32_t *src = &_sidata, *dst = &_sdata;
     while (dst < &_edata) *dst++ = *src++;
     for (dst = &_sbss; dst < &_ebss; dst++) *dst = 0;
-    /* Enable the FPU (CP10/CP11 full access): the hard-float ABI may touch it. */
+#if defined(__ARM_FP)
+    /* Enable the FPU (CP10/CP11 full access): the hard-float ABI may touch
+     * it. Only where there is one: on an ARMv6-M core CPACR is reserved. */
     *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
     __asm__ volatile("dsb\n\tisb");
+#endif
     fw_semihost_exit(main());
 }
 
