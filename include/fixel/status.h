@@ -17,7 +17,8 @@ typedef enum fxl_status {
     FXL_ERR_RANGE = -2,       /* a number outside its documented range */
     FXL_ERR_UNSUPPORTED = -3, /* valid request this build or texture cannot serve */
     FXL_ERR_NOMEM = -4,       /* caller-provided memory is too small */
-    FXL_ERR_BUSY = -5,        /* port: a transfer is still in flight */
+    FXL_ERR_BUSY = -5,        /* port: for HAL callbacks to report a busy bus (the driver
+                               * returns it as FXL_ERR_IO; fixel itself waits instead) */
     FXL_ERR_IO = -6           /* port: a HAL callback reported failure */
 } fxl_status_t;
 
