@@ -23,14 +23,21 @@ static int64_t floor_px(int64_t q16)
     return q16 >= 0 ? q16 / 65536 : -((-q16 + 65535) / 65536);
 }
 
-/* The target of the band of `rows` rows from frame row y0: buffer buf in
- * the format the panel's HAL sends as it is, with the depth band if any. */
+/* The target of a band of `rows` rows from frame row y0, `width` pixels
+ * wide: buffer buf in the format the panel's HAL sends as it is, with the
+ * depth band if any. */
+static fxl_status_t target_of(const fxl_panel_t *panel, int32_t width, uint16_t *depth, uint16_t *buf, int32_t y0,
+                              int32_t rows, fxl_target_t *t)
+{
+    fxl_status_t st = fxl_target_init(t, buf, width, rows, width, fxl_panel_pixel_format(panel));
+    if (st == FXL_OK) st = fxl_target_set_origin(t, 0, y0);
+    if (st == FXL_OK && depth != NULL) st = fxl_target_set_depth(t, depth);
+    return st;
+}
+
 static fxl_status_t band_target(const fxl_band_t *b, uint16_t *buf, int32_t y0, int32_t rows, fxl_target_t *t)
 {
-    fxl_status_t st = fxl_target_init(t, buf, b->width, rows, b->width, fxl_panel_pixel_format(b->panel));
-    if (st == FXL_OK) st = fxl_target_set_origin(t, 0, y0);
-    if (st == FXL_OK && b->depth != NULL) st = fxl_target_set_depth(t, b->depth);
-    return st;
+    return target_of(b->panel, b->width, b->depth, buf, y0, rows, t);
 }
 
 static int binning(const fxl_band_t *b)
@@ -56,13 +63,8 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     {
         /* A band the core cannot draw into (a depth band in a build without
          * FXL_HAVE_DEPTH) is refused now rather than mid-frame. */
-        fxl_band_t probe;
         fxl_target_t t;
-        fxl_status_t st;
-        probe.panel = panel;
-        probe.width = panel->width;
-        probe.depth = depth;
-        st = band_target(&probe, buf0, 0, band_rows, &t);
+        const fxl_status_t st = target_of(panel, panel->width, depth, buf0, 0, band_rows, &t);
         if (st != FXL_OK) return st;
     }
     /* Only a binding that is whole is written: after an error b is as it

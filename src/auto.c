@@ -215,7 +215,7 @@ void fxl__auto_vertices(fxl__tri_t *tri, const fxl_vertex_t v[3], uint32_t xrang
         if (w > 1)
             cap = 32 - fxl__clz32_inline((uint32_t)w - 1u);
         tri->auto_w = w;
-        tri->auto_cap = (int8_t)(cap < 8 ? cap : 8);
+        tri->auto_cap = (int8_t)(cap < FXL__AUTO_CAP_MAX ? cap : FXL__AUTO_CAP_MAX);
     }
 }
 

@@ -566,14 +566,19 @@ int fxl__xform_ok(const fxl_xform_t *xf)
            (int64_t)xf->guard_q16 * half <= ((int64_t)FXL_GUARD_PX << 32);
 }
 
+/* fxl_xform_project without its checks (the mesh path's prepared xf) */
+static fxl_status_t project_vertex(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
+{
+    const fxl_status_t st = project_pos(xf, c, out);
+    if (st == FXL_OK) project_attr(c, out);
+    return st;
+}
+
 fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out)
 {
-    fxl_status_t st;
     if (!xf || !c || !out) return FXL_ERR_ARG;
     if (!fxl__xform_ok(xf)) return FXL_ERR_RANGE;
-    if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
-    project_attr(c, out);
-    return FXL_OK;
+    return project_vertex(xf, c, out);
 }
 
 /* ---- the mesh path ------------------------------------------------------------ */
@@ -764,10 +769,8 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                 if ((st = project_cached(&xf, cache, ncache, idx3[k], &poly[k], &scr[k])) != FXL_OK)
                     return st;
         } else {
-            for (k = 0; k < n; k++) {
-                if ((st = project_pos(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
-                project_attr(&poly[k], &scr[k]);
-            }
+            for (k = 0; k < n; k++)
+                if ((st = project_vertex(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
         }
         for (k = 1; k + 1 < n; k++) {
             fxl_vertex_t tri[3];

@@ -321,7 +321,7 @@ fxl_status_t fxl__draw_valid(fxl_target_t *target, const fxl_draw_t *draw, const
     tri.auto_rr = 0;
     /* set by fxl__auto_vertices unless it settles the triangle as affine;
      * read (clamped) below for every AUTO draw with a gridded LOD */
-    tri.auto_cap = 8;
+    tri.auto_cap = FXL__AUTO_CAP_MAX;
     tri.depth_test = (draw->depth & FXL_DEPTH_TEST) != 0;
     tri.depth_write = (draw->depth & FXL_DEPTH_WRITE) != 0;
     tri.swap = target->format == FXL_PIXFMT_RGB565_SWAP;

@@ -76,6 +76,9 @@ typedef struct fxl__recip {
 /* Everything the span loops need for one triangle. */
 struct fxl__lean;   /* span.c: the lean walks' position */
 
+/* AUTO's longest segment, log2 (256 pixels): auto_cap's ceiling */
+#define FXL__AUTO_CAP_MAX 8
+
 typedef struct fxl__tri {
     const fxl_draw_t *draw;
     const fxl_texture_t *tex;    /* NULL: untextured */
@@ -107,7 +110,7 @@ typedef struct fxl__tri {
     uint8_t auto_seg;
     uint64_t auto_duv;           /* range u + range v of the vertices, q16 texels of level 0 */
     int32_t auto_w;              /* the widest span (bounding box), px, < 2^17 */
-    int8_t auto_cap;             /* longest log2 length: the least <= 8 with 2^cap >= auto_w */
+    int8_t auto_cap;             /* longest log2 length: the least <= FXL__AUTO_CAP_MAX with 2^cap >= auto_w */
     uint32_t auto_gx32;          /* ceil(|q_x| per pixel >> PF), saturated at 2^31 */
     int32_t auto_t0;             /* q8 log2 terms of the bound common to all rows */
     int64_t auto_n[2];           /* N_u, N_v at Y0, units of 2^-29 of their largest value */

@@ -549,15 +549,21 @@ static void test_projection_accuracy_target_random_meshes(void)
     TEST_ASSERT_TRUE(worst_iw < ldexp(1, -20));
 }
 
+/* A default 320 x 240 pipeline, its transform, and a zeroed clip vertex. */
+static void prepared_320x240(fxl_pipeline_t *p, fxl_xform_t *xf, fxl_clipvert_t *c)
+{
+    memset(c, 0, sizeof *c);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(p, 320, 240));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(p, xf));
+}
+
 static void test_project_rejects_w_at_or_behind_near(void)
 {
     fxl_pipeline_t p;
     fxl_xform_t xf;
     fxl_clipvert_t c;
     fxl_vertex_t out;
-    memset(&c, 0, sizeof c);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    prepared_320x240(&p, &xf, &c);
     c.w = 0;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
     c.w = -((int64_t)1 << 32);
@@ -592,9 +598,7 @@ static void test_project_and_clip_refuse_a_hand_filled_xform_out_of_range(void)
     fxl_vertex_t out;
     uint32_t n;
     int k;
-    memset(&c, 0, sizeof c);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &ok));
+    prepared_320x240(&p, &ok, &c);
     c.w = (int64_t)1 << 33;
     for (k = 0; k < 3; k++)
         tri[k] = c;
