@@ -3028,6 +3028,116 @@ void test_needle_slivers_interpolate_their_attributes_in_every_mode(void)
     TEST_ASSERT_TRUE_MESSAGE(col_px > 1000 || !FXL_HAVE_GENERIC, msg);
 }
 
+/* The needle threshold (setup.c, gradient): a triangle without uv_wide
+ * bit 2 must have every plane gradient within 2^42 plane units a pixel,
+ * the size the segment bounds and the per-segment LOD read 16 pixels'
+ * worth of in int64 (auto.c, auto.h, span.c lod_setup). Oblique needles on
+ * the build's own sub-pixel grid, a few sub-pixels across their long edge,
+ * give gradients of every size up to ~2^50 units a sub-pixel. Until the
+ * forty-third session the threshold was 2^38 units a sub-pixel on every
+ * grid: 2^44 a pixel on the 1/64 grid (FXL_SUBPIXEL_BITS 6), which this
+ * test catches there (the sub6 configuration of config_tests.sh); on the
+ * 1/16 grid the two thresholds are the same. */
+static uint64_t probe_grad_max;   /* largest |gradient| of the draw, plane units a sub-pixel (FXL__PF bits) */
+static int probe_grad_flagged, probe_grad_seen;
+static uint64_t grad_abs(int64_t g)
+{
+    return g < 0 ? (uint64_t)0 - (uint64_t)g : (uint64_t)g;
+}
+
+static uint32_t probe_gradients(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    const fxl__plane_t *pl[4] = {&tri->q, &tri->z, &tri->a[FXL__AU], &tri->a[FXL__AV]};
+    int i;
+    probe_grad_seen = 1;
+    probe_grad_flagged = (tri->uv_wide & 4u) != 0;
+    probe_grad_max = 0;
+    for (i = 0; i < 4; i++) {
+        if (grad_abs(pl[i]->gx) > probe_grad_max)
+            probe_grad_max = grad_abs(pl[i]->gx);
+        if (grad_abs(pl[i]->gy) > probe_grad_max)
+            probe_grad_max = grad_abs(pl[i]->gy);
+    }
+    return (uint32_t)s->n;
+}
+
+void test_needles_flag_gradients_beyond_what_a_pixel_holds(void)
+{
+    static uint16_t texels[64 * 64], buf[W * H], zbuf[W * H];
+    /* 2^42 units a pixel, and the rounding of one gradient (half a unit
+     * of its FXL__PF fraction bits, a sub-pixel) on top */
+    const uint64_t limit = ((uint64_t)1 << (42 + FXL__PF)) + ((uint64_t)1 << (FXL__PF + FXL__S));
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    char msg[160];
+    int n, flagged = 0, near_limit = 0, drawn = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    fxl_draw_defaults(&d);
+    d.texture = &tex;
+    d.persp = 16;
+    d.depth = FXL_HAVE_DEPTH ? FXL_DEPTH_TEST | FXL_DEPTH_WRITE : 0;   /* the z plane too */
+    if (left_out_feature(&d, &tex, drawable_rgb565(), 0) != NULL)
+        d.depth = 0;
+    if (left_out_feature(&d, &tex, drawable_rgb565(), 0) != NULL)
+        TEST_IGNORE_MESSAGE("textured draws left out of this build");
+    for (n = 0; n < 20000; n++) {
+        /* sub-pixel units, along the lattice direction (1, b) (or (b, 1)):
+         * the short edge P1 P2, m steps, passes through the pixel centre C
+         * (j steps from P1; it covers C when the fill rule takes that
+         * edge), the far vertex P0 is K steps along and off units across:
+         * the area is m off / 2 sub-pixels squared, the long edge up to
+         * 2^14 px */
+        const int32_t b = (int32_t)(rnd() % 41u) - 20, m = 2 + (int32_t)(rnd() % 4u);
+        const int32_t j = 1 + (int32_t)(rnd() % (uint32_t)(m - 1));
+        const int32_t K = (int32_t)(rnd() % ((16384u * FXL__ONE) / (uint32_t)(abs(b) + 1))) + 2 * FXL__ONE;
+        const int32_t off = 1 + (int32_t)(rnd() % (1u << (rnd() % (13u + FXL__S))));
+        const int steep = (int)(rnd() & 1u), sx = rnd() & 1u ? 1 : -1, sy = rnd() & 1u ? 1 : -1;
+        const int32_t CX = (20 + (int32_t)(rnd() % 24u)) * FXL__ONE + FXL__ONE / 2;
+        const int32_t CY = (16 + (int32_t)(rnd() % 16u)) * FXL__ONE + FXL__ONE / 2;
+        const int32_t along[3] = {K - j, -j, m - j}, across[3] = {(K - j) * b + off, -j * b, (m - j) * b};
+        int32_t X[3], Y[3];
+        fxl_vertex_t v[3];
+        int i;
+        for (i = 0; i < 3; i++) {
+            X[i] = CX + sx * (steep ? across[i] : along[i]);
+            Y[i] = CY + sy * (steep ? along[i] : across[i]);
+        }
+        for (i = 0; i < 3; i++) {
+            v[i].x = X[i] * (1 << (16 - FXL__S));
+            v[i].y = Y[i] * (1 << (16 - FXL__S));
+            v[i].inv_w = 0x10000000u + (rnd() << 5);
+            v[i].u = ((int32_t)(rnd() % 16777216u) - 8388608) * 32;   /* +-4096 texels */
+            v[i].v = ((int32_t)(rnd() % 16777216u) - 8388608) * 32;
+            v[i].color = 0xFFFF;
+        }
+        probe_target(&t, buf, W, H);
+        if (d.depth) {
+            t.depth = zbuf;
+            memset(zbuf, 0, sizeof zbuf);
+        }
+        probe_grad_seen = 0;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_gradients));
+        if (!probe_grad_seen)
+            continue;   /* no pixel centre covered */
+        drawn++;
+        if (probe_grad_flagged) {
+            flagged++;
+            continue;
+        }
+        snprintf(msg, sizeof msg, "needle %d: a gradient of 2^%.2f units a pixel is not flagged", n,
+                 log2((double)probe_grad_max) - FXL__PF + FXL__S);
+        TEST_ASSERT_TRUE_MESSAGE(probe_grad_max <= limit >> FXL__S, msg);
+        near_limit += probe_grad_max >= limit >> (FXL__S + 4);
+    }
+    /* both sides of the threshold are reached, the unflagged side within
+     * 16x of its limit */
+    snprintf(msg, sizeof msg, "%d needles drawn: %d flagged, %d unflagged within 16x of the limit", drawn, flagged,
+             near_limit);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(flagged >= 20 && near_limit >= 20, msg);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -3051,6 +3161,7 @@ int main(void)
     RUN_TEST(test_auto_on_the_largest_texture_keeps_its_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
+    RUN_TEST(test_needles_flag_gradients_beyond_what_a_pixel_holds);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
     RUN_TEST(test_auto_budget_holds_for_small_and_huge_budgets);
     RUN_TEST(test_auto_budget_holds_on_rows_of_constant_depth);
