@@ -3,6 +3,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "crc32.h"
@@ -336,6 +338,35 @@ static void test_png_errors_are_reported_without_partial_files(void)
     TEST_ASSERT_NULL(f); /* nothing was left behind */
 }
 
+/* A device or FIFO target ("fixel-sim -o /dev/null") is written in place: a
+ * temp file renamed over it replaced the node itself (as root, /dev/null
+ * became a regular file). A FIFO shows it without privileges. */
+static void test_png_write_to_a_fifo_keeps_the_fifo(void)
+{
+    char path[1024], err[256];
+    uint16_t px[4] = {0xF800u, 0x07E0u, 0x001Fu, 0xFFFFu};
+    unsigned char sig[8];
+    struct stat st;
+    ssize_t n;
+    int fd;
+    tmp_path(path, sizeof(path), "test_scene_fifo");
+    (void)remove(path);
+    TEST_ASSERT_EQUAL_INT(0, mkfifo(path, 0600));
+    /* Reader first, so the write end opens at once; a 2x2 PNG fits the pipe. */
+    fd = open(path, O_RDONLY | O_NONBLOCK);
+    TEST_ASSERT_TRUE(fd >= 0);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, pngio_write_rgb565(path, px, 2, 2, 2, FXL_PIXFMT_RGB565, err,
+                                                        sizeof(err)), err);
+    TEST_ASSERT_EQUAL_INT(0, lstat(path, &st));
+    TEST_ASSERT_TRUE_MESSAGE(S_ISFIFO(st.st_mode), "the FIFO was replaced by a file");
+    n = read(fd, sig, sizeof(sig));
+    close(fd);
+    remove(path);
+    TEST_ASSERT_EQUAL_INT(8, (int)n);
+    TEST_ASSERT_EQUAL_UINT8(0x89, sig[0]);
+    TEST_ASSERT_EQUAL_UINT8('P', sig[1]);
+}
+
 static void test_texture_checker_mips_are_box_averages(void)
 {
     /* 64x64 checker with 8-texel cells: level 3 (8x8) averages one whole
@@ -571,6 +602,7 @@ int main(void)
     RUN_TEST(test_crc_target_hashes_clip_rows_only);
     RUN_TEST(test_png_round_trip_expands_565_exactly);
     RUN_TEST(test_png_errors_are_reported_without_partial_files);
+    RUN_TEST(test_png_write_to_a_fifo_keeps_the_fifo);
     RUN_TEST(test_texture_checker_mips_are_box_averages);
     RUN_TEST(test_texture_crate_marks_corners);
     RUN_TEST(test_texture_grid_lines_every_8_texels);

@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 typedef struct png_ctx {
@@ -69,6 +70,8 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
     char *tmp = NULL;
     unsigned char *row = NULL;
     size_t tmp_len;
+    struct stat st;
+    int direct;
     int32_t x, y;
 
     if (path == NULL || pixels == NULL || width <= 0 || height <= 0 || stride < width) {
@@ -89,8 +92,15 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
         set_err(err, err_size, "png write '%s': out of memory", path);
         return -1;
     }
+    /* A device or FIFO (-o /dev/null) is written in place: a temp file
+     * renamed over it would replace the node itself when run as root. */
+    direct = stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
     /* Same directory as the target so rename() stays atomic (one file system). */
-    snprintf(tmp, tmp_len, "%s.tmp%ld", path, (long)getpid());
+    if (direct) {
+        snprintf(tmp, tmp_len, "%s", path);
+    } else {
+        snprintf(tmp, tmp_len, "%s.tmp%ld", path, (long)getpid());
+    }
     fp = fopen(tmp, "wb");
     if (fp == NULL) {
         set_err(err, err_size, "cannot create '%s': %s", tmp, strerror(errno));
@@ -135,7 +145,7 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
         goto fail;
     }
     fp = NULL;
-    if (rename(tmp, path) != 0) {
+    if (!direct && rename(tmp, path) != 0) {
         set_err(err, err_size, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
         goto fail;
     }
@@ -150,7 +160,9 @@ fail:
     if (fp != NULL) {
         fclose(fp);
     }
-    remove(tmp);
+    if (!direct) {
+        remove(tmp);
+    }
     free(tmp);
     free(row);
     return -1;
