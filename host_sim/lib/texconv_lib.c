@@ -135,8 +135,15 @@ int texconv_read_png(const char *path, texconv_image_t *img, char *err, size_t e
         png_set_tRNS_to_alpha(png);
     else if ((color & PNG_COLOR_MASK_ALPHA) == 0)
         png_set_filler(png, 0xFF, PNG_FILLER_AFTER);
-    if (depth == 16)
+    if (depth == 16) {
+        /* Round like png_io.c (v8 = (v16 * 255 + 32767) / 65535): strip_16
+         * keeps the high byte, so 0xFF00 became 255 instead of 254. */
+#ifdef PNG_READ_SCALE_16_TO_8_SUPPORTED
+        png_set_scale_16(png);
+#else
         png_set_strip_16(png);
+#endif
+    }
     if (color == PNG_COLOR_TYPE_GRAY || color == PNG_COLOR_TYPE_GRAY_ALPHA)
         png_set_gray_to_rgb(png);
     png_set_interlace_handling(png);
@@ -637,32 +644,96 @@ static int lookup(const char *s, const char *const *names, int count)
     return -1;
 }
 
+/* Exactly six hex digits (an optional leading '#'): strtoul alone also took
+ * " +1234", "0x1234" and "-00001" (which wrapped to 0xFFFFFFFF). */
 static int parse_rgb(const char *s, uint32_t *out)
 {
-    char *end;
-    unsigned long v;
+    uint32_t v = 0;
+    int i;
     if (s[0] == '#')
         s++;
-    if (strlen(s) != 6)
+    for (i = 0; i < 6; i++) {
+        char c = s[i];
+        uint32_t d;
+        if (c >= '0' && c <= '9')
+            d = (uint32_t)(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            d = (uint32_t)(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F')
+            d = (uint32_t)(c - 'A' + 10);
+        else
+            return -1; /* also the terminator of a short string */
+        v = (v << 4) | d;
+    }
+    if (s[6] != '\0')
         return -1;
-    errno = 0;
-    v = strtoul(s, &end, 16);
-    if (errno != 0 || *end != '\0')
-        return -1;
-    *out = (uint32_t)v;
+    *out = v;
     return 0;
 }
 
+/* A C identifier that is not a C99 keyword ("--name int" emitted
+ * `const fxl_texture_t int = {`, which does not compile). */
 static int is_identifier(const char *s)
 {
+    static const char *const keywords[] = {
+        "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else",
+        "enum", "extern", "float", "for", "goto", "if", "inline", "int", "long", "register",
+        "restrict", "return", "short", "signed", "sizeof", "static", "struct", "switch",
+        "typedef", "union", "unsigned", "void", "volatile", "while", "_Bool", "_Complex",
+        "_Imaginary"};
     const char *p = s;
+    size_t k;
     if (*p == '\0' || (*p >= '0' && *p <= '9'))
         return 0;
     for (; *p != '\0'; p++)
         if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
               *p == '_'))
             return 0;
+    for (k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
+        if (strcmp(s, keywords[k]) == 0)
+            return 0;
     return 1;
+}
+
+/* The directory part of `path` ("." when none) and its last component. */
+static int split_path(const char *path, char *dir, size_t dir_size, const char **base)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n;
+    if (slash == NULL) {
+        snprintf(dir, dir_size, ".");
+        *base = path;
+        return 0;
+    }
+    n = (size_t)(slash - path);
+    if (n == 0)
+        n = 1; /* "/name": the root */
+    if (n >= dir_size)
+        return -1;
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+    *base = slash + 1;
+    return 0;
+}
+
+/* 1 when paths a and b name the same file: the same inode when both exist,
+ * else the same last component in the same directory. Output paths must not
+ * meet each other or the input: "-o x --bin x" left only the blob in x, and
+ * "-o in.png" replaced the image with C source, both with exit status 0. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    char da[4096], db[4096];
+    const char *ba, *bb;
+    if (strcmp(a, b) == 0)
+        return 1;
+    if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    if (split_path(a, da, sizeof da, &ba) != 0 || split_path(b, db, sizeof db, &bb) != 0 ||
+        strcmp(ba, bb) != 0)
+        return 0;
+    return stat(da, &sa) == 0 && stat(db, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
 }
 
 /* Base name of `path` without extension, made into a C identifier. */
@@ -688,14 +759,31 @@ typedef struct outfile {
     const char *path;
     char *tmp;
     FILE *f;
+    int direct;   /* a device or FIFO, written in place (no temp file) */
 } outfile_t;
 
 static int out_open(outfile_t *o, const char *path)
 {
     size_t n = strlen(path) + 16;
+    struct stat st;
     int fd;
     o->path = path;
     o->f = NULL;
+    o->tmp = NULL;
+    o->direct = 0;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        /* "-o /dev/null" made /dev/null.tmp.XXXXXX and renamed it over the
+         * device node (as root). Only regular files get the temp + rename. */
+        if (S_ISDIR(st.st_mode)) {
+            errno = EISDIR;
+            return -1;
+        }
+        o->f = fopen(path, "wb");
+        if (o->f == NULL)
+            return -1;
+        o->direct = 1;
+        return 0;
+    }
     o->tmp = (char *)malloc(n);
     if (o->tmp == NULL)
         return -1;
@@ -727,18 +815,22 @@ static int out_open(outfile_t *o, const char *path)
 static int out_close(outfile_t *o, int discard)
 {
     int bad = discard;
-    if (o->tmp == NULL)
+    if (o->tmp == NULL && !o->direct)
         return -1;
     if (o->f != NULL && fclose(o->f) != 0)
         bad = 1;
     o->f = NULL;
-    if (bad)
+    if (bad && !o->direct)
         unlink(o->tmp);
     return bad ? -1 : 0;
 }
 
 static void out_abandon(outfile_t *o)
 {
+    if (o->direct && o->f != NULL) {
+        fclose(o->f);
+        o->f = NULL;
+    }
     if (o->tmp != NULL) {
         if (o->f != NULL)
             fclose(o->f);
@@ -767,7 +859,7 @@ int texconv_main(int argc, char **argv)
     texconv_opts_t o;
     texconv_image_t img;
     texconv_chain_t chain;
-    outfile_t fc = {NULL, NULL, NULL}, fb = {NULL, NULL, NULL};
+    outfile_t fc = {NULL, NULL, NULL, 0}, fb = {NULL, NULL, NULL, 0};
     int i, v, rc = 0;
 
     texconv_opts_default(&o);
@@ -781,7 +873,7 @@ int texconv_main(int argc, char **argv)
             usage(stdout);
             return 0;
         }
-        if (takes && val == NULL) {
+        if (takes && (val == NULL || val[0] == '\0')) { /* "-o ''" wrote ".tmp.*" then failed */
             fprintf(stderr, "fixel-texconv: %s needs a value\n", a);
             return 2;
         }
@@ -855,7 +947,19 @@ int texconv_main(int argc, char **argv)
         name = name_buf;
     }
     if (!is_identifier(name)) {
-        fprintf(stderr, "fixel-texconv: --name '%s' is not a C identifier\n", name);
+        fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword); "
+                        "choose another with --name\n",
+                name == name_buf ? "the name taken from the input file," : "--name", name);
+        return 2;
+    }
+    if ((out_c != NULL && same_file(out_c, in)) || (out_bin != NULL && same_file(out_bin, in))) {
+        fprintf(stderr, "fixel-texconv: the output %s is the input file; name another\n",
+                out_c != NULL && same_file(out_c, in) ? out_c : out_bin);
+        return 2;
+    }
+    if (out_c != NULL && out_bin != NULL && same_file(out_c, out_bin)) {
+        fprintf(stderr, "fixel-texconv: -o and --bin name the same file (%s); give two paths\n",
+                out_c);
         return 2;
     }
 
@@ -913,8 +1017,8 @@ int texconv_main(int argc, char **argv)
     if (rc == 0 && fb.tmp != NULL && out_commit(&fb) != 0) {
         fprintf(stderr, "fixel-texconv: %s: cannot rename into place: %s\n", out_bin,
                 strerror(errno));
-        if (out_c != NULL)
-            unlink(out_c); /* do not leave half of the pair */
+        if (out_c != NULL && !fc.direct)
+            unlink(out_c); /* do not leave half of the pair (never a device) */
         rc = 1;
     }
     out_abandon(&fc);
