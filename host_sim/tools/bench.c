@@ -52,6 +52,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "bench_lib.h"
 #include "fixel/fixel.h"
@@ -144,6 +145,27 @@ static void usage(FILE *f)
             "  S: floor floor_rolled cube tunnel small_tris quad_near; M: affine subdiv4\n"
             "  subdiv8 subdiv16 subdiv32 subdiv64 exact auto; F: point bilinear trilinear\n"
             "  (details: the comment at the top of host_sim/tools/bench.c)\n");
+}
+
+/* fclose with the write error reported: a full disk or "--csv /dev/full"
+ * used to end in exit status 0 with a truncated file. */
+static int close_out(FILE *f, const char *path)
+{
+    int bad = ferror(f) != 0;
+    if (fclose(f) != 0)
+        bad = 1;
+    if (bad)
+        fprintf(stderr, "fixel-bench: write error on %s\n", path);
+    return bad ? -1 : 0;
+}
+
+/* Remove a partial output, but only a regular file: "gen-fw /dev/full" must
+ * not delete the device node (as root). */
+static void remove_partial(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISREG(st.st_mode))
+        remove(path);
 }
 
 static int selected(const char *want, const char *name)
@@ -574,8 +596,8 @@ static int write_outputs(const options_t *o)
                         r->err.mean, r->err.p99, r->wrong_share, r->psnr, r->max_diff, r->bound, mp, hi, m4,
                         r->m4_src, m0, rv);
             }
-    if (o->csv)
-        fclose(csv);
+    if (o->csv && close_out(csv, o->csv) != 0)
+        return 1;
 
     if (o->plot_dir) {
         char path[1024];
@@ -643,9 +665,9 @@ static int write_outputs(const options_t *o)
                 }
                 fprintf(pp, "\n\n");
             }
-        fclose(sp);
-        fclose(lp);
-        fclose(pp);
+        snprintf(path, sizeof path, "%s/*.dat", o->plot_dir);
+        if ((close_out(sp, path) | close_out(lp, path) | close_out(pp, path)) != 0)
+            return 1;
     }
 
     /* Summary table */
@@ -926,8 +948,8 @@ static int cmd_frontend(const options_t *o)
             }
         meshes_free(&m);
     }
-    if (csv)
-        fclose(csv);
+    if (csv && close_out(csv, o->csv) != 0)
+        return 1;
     return 0;
 }
 
@@ -997,6 +1019,16 @@ static int cmd_gen_fw(const char *path, const options_t *o)
                         filters[fi].filter, mip_of(o, &filters[fi]), scenes[si], methods[mi].name, filters[fi].name);
                 ncfg++;
             }
+    if (ncfg == 0) {
+        /* "bench_cfgs[] = {};" is not C99, and a firmware with nothing to run
+         * is no benchmark: say which selection came out empty. */
+        fprintf(stderr, "fixel-bench: gen-fw: no configuration matches --filters '%s'%s%s%s%s\n",
+                o->fw_filters, o->scene ? " --scene " : "", o->scene ? o->scene : "",
+                o->method ? " --method " : "", o->method ? o->method : "");
+        fclose(f);
+        remove_partial(path);
+        return 1;
+    }
     fprintf(f, "};\nconst uint32_t bench_ncfg = %u;\n", (unsigned)ncfg);
     if (o->fw_meshes) {
         if (gen_fw_meshes(f) != 0) {
@@ -1006,7 +1038,10 @@ static int cmd_gen_fw(const char *path, const options_t *o)
     } else {
         fprintf(f, "\nconst bench_mesh_t bench_meshes[1] = {{0}};\nconst uint32_t bench_nmeshes = 0;\n");
     }
-    fclose(f);
+    if (close_out(f, path) != 0) {
+        remove_partial(path);
+        return 1;
+    }
     return 0;
 }
 
@@ -1061,6 +1096,47 @@ static int cmd_ram(void)
                (unsigned)(tex.texel_count * 2u), (unsigned)(3u * s.tri_count * sizeof(fxl_vertex_t)));
         texture_free(&tex);
         scene_free(&s);
+    }
+    return 0;
+}
+
+/* A misspelt --scene, --method, --filter or --filters selected nothing, and
+ * accuracy, draw and gen-fw ran empty with exit status 0; a bad --mip drew
+ * without mip maps. */
+static int check_names(const options_t *o)
+{
+    const char *bad = NULL, *what = NULL;
+    size_t k;
+    if (o->scene && index_of(scenes, NSCENES, sizeof scenes[0], o->scene) < 0)
+        bad = o->scene, what = "--scene";
+    else if (o->method && index_of(&methods[0].name, NMETHODS, sizeof methods[0], o->method) < 0)
+        bad = o->method, what = "--method";
+    else if (o->filter && index_of(&filters[0].name, NFILTERS, sizeof filters[0], o->filter) < 0)
+        bad = o->filter, what = "--filter";
+    else if (o->mip && strcmp(o->mip, "none") != 0 && strcmp(o->mip, "nearest") != 0 &&
+             strcmp(o->mip, "linear") != 0)
+        bad = o->mip, what = "--mip";
+    if (bad == NULL) {
+        /* --filters: a comma-separated list of filter names */
+        const char *p = o->fw_filters;
+        while (*p != '\0') {
+            size_t n = strcspn(p, ",");
+            int found = 0;
+            for (k = 0; k < NFILTERS; k++)
+                if (strlen(filters[k].name) == n && strncmp(p, filters[k].name, n) == 0)
+                    found = 1;
+            if (!found) {
+                bad = o->fw_filters, what = "--filters";
+                break;
+            }
+            p += n;
+            if (*p == ',')
+                p++;
+        }
+    }
+    if (bad != NULL) {
+        fprintf(stderr, "fixel-bench: unknown %s '%s' (see --help for the names)\n", what, bad);
+        return -1;
     }
     return 0;
 }
@@ -1120,11 +1196,20 @@ int main(int argc, char **argv)
             dst = &o.fw_filters;
         else if (strcmp(a, "--mip") == 0)
             dst = &o.mip;
-        else if (strcmp(a, "--meshes") == 0)
-            o.fw_meshes = atoi(argv[i + 1]);
-        else if (strcmp(a, "--runs") == 0)
-            o.runs = atoi(argv[i + 1]);
-        else {
+        else if (strcmp(a, "--meshes") == 0 || strcmp(a, "--runs") == 0) {
+            /* atoi took "abc" and "-5" for 0 timing runs without a word */
+            char *end;
+            long v = strtol(argv[i + 1], &end, 10);
+            if (end == argv[i + 1] || *end != '\0' || v < 0 || v > 1000000) {
+                fprintf(stderr, "fixel-bench: %s wants a whole number 0..1000000, got '%s'\n", a,
+                        argv[i + 1]);
+                return 2;
+            }
+            if (a[2] == 'm')
+                o.fw_meshes = (int)v;
+            else
+                o.runs = (int)v;
+        } else {
             fprintf(stderr, "fixel-bench: unknown option %s\n", a);
             usage(stderr);
             return 2;
@@ -1132,6 +1217,8 @@ int main(int argc, char **argv)
         if (dst)
             *dst = argv[i + 1];
     }
+    if (check_names(&o) != 0)
+        return 2;
     if (strcmp(cmd, "accuracy") == 0)
         return cmd_accuracy(&o);
     if (strcmp(cmd, "ram") == 0)

@@ -18,6 +18,7 @@
  * nothing was found, 1 otherwise, 2 on usage errors. --long runs 10^8 cases.
  * Build it with -fsanitize=address,undefined for the CI run (ci_extra.sh).
  */
+#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,18 +49,47 @@ static void case_bytes(uint64_t seed, uint64_t index, uint8_t *b, size_t n)
     }
 }
 
+static int hex_digit(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F')
+        return c - 'A' + 10;
+    return -1;
+}
+
+/* Two hex digits per byte, nothing else ("%2x" took "0g" as 00 and "+1"). */
 static int parse_hex(const char *h, uint8_t *b, size_t cap, size_t *n)
 {
     size_t len = strlen(h), i;
     if (len % 2 != 0 || len / 2 > cap)
         return -1;
     for (i = 0; i < len / 2; i++) {
-        unsigned v;
-        if (sscanf(h + 2 * i, "%2x", &v) != 1)
+        int hi = hex_digit(h[2 * i]), lo = hex_digit(h[2 * i + 1]);
+        if (hi < 0 || lo < 0)
             return -1;
-        b[i] = (uint8_t)v;
+        b[i] = (uint8_t)(hi * 16 + lo);
     }
     *n = len / 2;
+    return 0;
+}
+
+/* A whole non-negative number (decimal, 0x hex or 0 octal): strtoull alone
+ * read "abc" as 0 and "1e6" as 1, and "-1" wrapped to 2^64 - 1, so a typo
+ * ran no cases, or one, and exited 0 with "0 finding(s)". */
+static int parse_u64(const char *opt, const char *s, uint64_t *out)
+{
+    char *end;
+    unsigned long long v;
+    errno = 0;
+    v = strtoull(s, &end, 0);
+    if (s[0] < '0' || s[0] > '9' || *end != '\0' || errno != 0) { /* no sign, no blank */
+        fprintf(stderr, "fixel-fuzz: %s wants a non-negative whole number, got '%s'\n", opt, s);
+        return -1;
+    }
+    *out = (uint64_t)v;
     return 0;
 }
 
@@ -88,7 +118,8 @@ int main(int argc, char **argv)
     uint64_t cases = 100000, seed = 1, start = 0, i, findings = 0, stop_after = 10;
     uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0, n_pipe = 0, n_pipe_ok = 0, n_tris = 0, n_placed = 0, n_texel = 0, n_texel_wide = 0;
     uint64_t n_alone = 0, n_alone_px = 0, n_alone_checked = 0;
-    size_t nbytes = 192;
+    size_t nbytes;
+    uint64_t bytes64 = 192;
     const char *replay = NULL;
     int quiet = 0, a;
     uint8_t buf[MAX_BYTES];
@@ -98,27 +129,38 @@ int main(int argc, char **argv)
     double t0;
 
     for (a = 1; a < argc; a++) {
-        if (!strcmp(argv[a], "--cases") && a + 1 < argc)
-            cases = strtoull(argv[++a], NULL, 0);
-        else if (!strcmp(argv[a], "--seed") && a + 1 < argc)
-            seed = strtoull(argv[++a], NULL, 0);
-        else if (!strcmp(argv[a], "--start") && a + 1 < argc)
-            start = strtoull(argv[++a], NULL, 0);
-        else if (!strcmp(argv[a], "--bytes") && a + 1 < argc)
-            nbytes = (size_t)strtoul(argv[++a], NULL, 0);
-        else if (!strcmp(argv[a], "--stop-after") && a + 1 < argc)
-            stop_after = strtoull(argv[++a], NULL, 0);
-        else if (!strcmp(argv[a], "--replay") && a + 1 < argc)
+        uint64_t *num = !strcmp(argv[a], "--cases")        ? &cases
+                      : !strcmp(argv[a], "--seed")         ? &seed
+                      : !strcmp(argv[a], "--start")        ? &start
+                      : !strcmp(argv[a], "--bytes")        ? &bytes64
+                      : !strcmp(argv[a], "--stop-after")   ? &stop_after
+                                                           : NULL;
+        if ((num != NULL || !strcmp(argv[a], "--replay")) && a + 1 >= argc) {
+            fprintf(stderr, "fixel-fuzz: %s needs a value\n", argv[a]);
+            usage();
+            return 2;
+        }
+        if (num != NULL) {
+            if (parse_u64(argv[a], argv[a + 1], num) != 0)
+                return 2;
+            a++;
+        } else if (!strcmp(argv[a], "--replay") && a + 1 < argc)
             replay = argv[++a];
         else if (!strcmp(argv[a], "--long"))
             cases = 100000000u;
         else if (!strcmp(argv[a], "--quiet"))
             quiet = 1;
         else {
+            fprintf(stderr, "fixel-fuzz: unknown option '%s'\n", argv[a]);
             usage();
             return 2;
         }
     }
+    if (cases > UINT64_MAX - start) {
+        fprintf(stderr, "fixel-fuzz: --start + --cases is past 2^64 - 1\n");
+        return 2;
+    }
+    nbytes = bytes64 <= MAX_BYTES ? (size_t)bytes64 : 0;
     if (nbytes < 1 || nbytes > MAX_BYTES) {
         fprintf(stderr, "fixel-fuzz: --bytes must be 1..%d\n", MAX_BYTES);
         return 2;
@@ -133,7 +175,7 @@ int main(int argc, char **argv)
         size_t n;
         int bad;
         if (parse_hex(replay, buf, sizeof buf, &n) != 0) {
-            fprintf(stderr, "fixel-fuzz: --replay wants an even number of hex digits (max %d bytes)\n", MAX_BYTES);
+            fprintf(stderr, "fixel-fuzz: --replay wants hex digits, two per byte (max %d bytes)\n", MAX_BYTES);
             return 2;
         }
         bad = fz_input_run(&pst, buf, n, &o, msg, NULL, 0);

@@ -201,7 +201,7 @@ static int parse_args(int argc, char **argv, options_t *o)
         "--scene", "--persp", "--filter", "--mip",     "--lod",      "--lod-bias", "--size",
         "--depth", "--format", "-o",      "--gallery", "--animate",  "--panel",    "--rotation",
         "--band-rows", "--texture", NULL};
-    int i, v, mip_given = 0;
+    int i, v, mip_given = 0, scene_given = 0, rotation_given = 0, band_rows_given = 0;
     memset(o, 0, sizeof(*o));
     o->scene = "floor";
     o->persp = 16;
@@ -237,6 +237,7 @@ static int parse_args(int argc, char **argv, options_t *o)
                 return -1;
             }
             o->scene = val;
+            scene_given = 1;
         } else if (strcmp(a, "--persp") == 0) {
             if (lookup(persp_names, a, val, &v) != 0) {
                 return -1;
@@ -320,12 +321,14 @@ static int parse_args(int argc, char **argv, options_t *o)
                 return -1;
             }
             o->rotation = (int)n;
+            rotation_given = 1;
         } else if (strcmp(a, "--band-rows") == 0) {
             if (parse_long(val, 1, FXL_TARGET_MAX_DIM, &n) != 0) {
                 fprintf(stderr, "fixel-sim: bad --band-rows '%s'\n", val);
                 return -1;
             }
             o->band_rows = (int)n;
+            band_rows_given = 1;
         } else if (strcmp(a, "--texture") == 0) {
             int t;
             o->texture = -2;
@@ -357,6 +360,36 @@ static int parse_args(int argc, char **argv, options_t *o)
     if (o->animate > 0 && o->out_png == NULL) {
         fprintf(stderr, "fixel-sim: --animate needs -o DIR\n");
         return -1;
+    }
+    /* Options a mode would otherwise drop without a word: --panel drew the
+     * scene's own texture whatever --texture said, --animate always draws
+     * p_cube, and the gallery modes neither read -o nor --texture. */
+    if (o->texture >= 0 && (o->panel != NULL || o->animate > 0 || o->gallery_dir != NULL ||
+                            o->gallery_crc)) {
+        fprintf(stderr, "fixel-sim: --texture applies to a single frame only (not with --panel, "
+                        "--animate or --gallery)\n");
+        return -1;
+    }
+    if (o->animate > 0 && scene_given && strcmp(o->scene, "p_cube") != 0) {
+        fprintf(stderr, "fixel-sim: --animate always turns p_cube; drop --scene\n");
+        return -1;
+    }
+    if ((o->gallery_dir != NULL || o->gallery_crc) && o->out_png != NULL) {
+        fprintf(stderr, "fixel-sim: --gallery writes into its DIR and --gallery-crc to stdout; "
+                        "drop -o\n");
+        return -1;
+    }
+    if (o->panel == NULL && (rotation_given || band_rows_given)) {
+        fprintf(stderr, "fixel-sim: --rotation and --band-rows need --panel\n");
+        return -1;
+    }
+    if (o->panel != NULL) {
+        int pw, ph;
+        if (panel_emu_frame_size(o->panel, o->rotation, &pw, &ph) == 0 && o->band_rows > ph) {
+            fprintf(stderr, "fixel-sim: --band-rows %d is more than the %d rows of %s in rotation "
+                            "%d\n", o->band_rows, ph, o->panel, o->rotation);
+            return -1;
+        }
     }
     return 0;
 }

@@ -31,7 +31,7 @@
  * or a probe leaves the target; after all sweeps, 4 when some method's
  * coverage differed from the exact rule or a draw failed (summary.csv's last
  * column says where; the deliberate counter-example variants excepted);
- * else 0.
+ * 2 on a bad command line or when an output file cannot be written; else 0.
  * Inputs beyond q16 (|x| >= 32768 px) are clipped in double to the guard
  * band +-GUARD px first (Sutherland-Hodgman in screen space; 1/w, u/w, v/w
  * are affine there, so the clipped attributes are exact) - the core itself
@@ -609,15 +609,32 @@ typedef struct sweep_out {
 
 static FILE *open_out(const char *name, const char *ext)
 {
-    char path[512];
+    char path[4096];
     FILE *f;
-    snprintf(path, sizeof path, "%s/%s%s", outdir, name, ext);
+    /* A longer --out was cut short here, so sweeps wrote to clipped names
+     * ("depth_max.da") and overwrote each other, with exit status 0. */
+    if (snprintf(path, sizeof path, "%s/%s%s", outdir, name, ext) >= (int)sizeof path) {
+        fprintf(stderr, "fixel-stability: --out '%s' is too long\n", outdir);
+        exit(2);
+    }
     f = fopen(path, "w");
     if (!f) {
         fprintf(stderr, "fixel-stability: cannot write %s: %s\n", path, strerror(errno));
         exit(2);
     }
     return f;
+}
+
+/* fclose, and stop on a write error (a full disk used to end in status 0). */
+static void close_out(FILE *f, const char *name)
+{
+    int bad = ferror(f) != 0;
+    if (fclose(f) != 0)
+        bad = 1;
+    if (bad) {
+        fprintf(stderr, "fixel-stability: write error on %s/%s*\n", outdir, name);
+        exit(2);
+    }
 }
 
 static void sweep_begin(sweep_out_t *s, const char *name, const char *param)
@@ -681,8 +698,8 @@ static void sweep_end(sweep_out_t *s, const char *variant)
         }
         fprintf(summary, "\n");
     }
-    fclose(s->csv);
-    fclose(s->dat);
+    close_out(s->csv, s->name);
+    close_out(s->dat, s->name);
 }
 
 static void dat_row(sweep_out_t *s, double param, const result_t r[NMETH])
@@ -1182,7 +1199,7 @@ static void sweep_lod(void)
                             exit(3);
                         }
                     }
-    fclose(f);
+    close_out(f, "lod");
     fprintf(stderr, "fixel-stability: sweep lod\n");
 }
 
@@ -1194,7 +1211,10 @@ int main(int argc, char **argv)
             outdir = argv[++a];
         else if (!strcmp(argv[a], "--quick"))
             quick = 1;
-        else {
+        else if (!strcmp(argv[a], "--out") && (a + 1 >= argc || argv[a + 1][0] == '\0')) {
+            fprintf(stderr, "fixel-stability: --out needs a directory\n");
+            return 2;
+        } else {
             const int help = !strcmp(argv[a], "--help") || !strcmp(argv[a], "-h");
             fprintf(help ? stdout : stderr,
                     "usage: fixel-stability [--out DIR] [--quick]\n"
@@ -1225,8 +1245,8 @@ int main(int argc, char **argv)
     sweep_sliver();
     sweep_texsize();
     sweep_lod();
-    fclose(csv_all);
-    fclose(summary);
+    close_out(csv_all, "all");
+    close_out(summary, "summary");
     free(errbuf);
     free(tex_mem);
     fprintf(stderr, "fixel-stability: wrote %s/*.csv\n", outdir);
