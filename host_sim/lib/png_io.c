@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -101,7 +102,16 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
     } else {
         snprintf(tmp, tmp_len, "%s.tmp%ld", path, (long)getpid());
     }
-    fp = fopen(tmp, "wb");
+    if (direct) {
+        fp = fopen(tmp, "wb");
+    } else {
+        /* O_EXCL: the temp name is predictable, so never write through a
+         * file or link someone else put there */
+        const int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+        fp = fd >= 0 ? fdopen(fd, "wb") : NULL;
+        if (fd >= 0 && fp == NULL)
+            close(fd);
+    }
     if (fp == NULL) {
         set_err(err, err_size, "cannot create '%s': %s", tmp, strerror(errno));
         free(tmp);
