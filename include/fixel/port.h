@@ -9,7 +9,11 @@
  *            bytes / 2 16-bit frames, one per uint16 of the (2-byte aligned)
  *            data, most significant bit first. May start a DMA and return
  *            at once; the transfer's end is then reported by calling
- *            fxl_port_transfer_done() (from the DMA interrupt). With
+ *            fxl_port_transfer_done() once its last bit has left the SPI
+ *            (a DMA-complete interrupt usually fires earlier, while the
+ *            SPI still shifts: wait for it to be idle first, as
+ *            docs/porting.md section 11 says; the driver may drive D/C
+ *            low for the next command as soon as the count moves). With
  *            FXL_PORT_PIXELS_SYNC in `flags` the callback returns only when
  *            the bytes are out and the driver counts the completion itself.
  *            Required.
@@ -24,13 +28,17 @@
  *            the transfer still counts as in flight, so every call that waits
  *            gives up again. To recover, stop the DMA in the HAL, then either
  *            report the transfer over with fxl_port_transfer_done() or call
- *            fxl_panel_init() again; a completion that still arrives after
- *            fxl_panel_init() is absorbed (the next write counts from it).
+ *            fxl_panel_init() again. A completion that arrives after
+ *            fxl_panel_init() but before the next fxl_panel_write() is
+ *            absorbed (that write counts from it); one that arrives later
+ *            is taken for that write's, so clear it in the HAL first.
  *            The band renderer needs nothing: it waits only for numbers
  *            in flight.
  * Callbacks return FXL_OK or a negative status; the driver turns a failure
  * into FXL_ERR_IO. The driver never calls cmd() or pixels() while a pixel
- * transfer is in flight, so the HAL needs no queue.
+ * transfer is in flight, so the HAL needs no queue (fxl_dcs_cmd, _window
+ * and _run take a HAL, not a panel, and do not wait: call them only after
+ * fxl_panel_wait_idle() returned FXL_OK).
  *
  * DMA / ISR contract. fxl_port_transfer_done(panel) must be called exactly
  * once per pixels() call that returned FXL_OK (not with FXL_PORT_PIXELS_SYNC).

@@ -105,7 +105,9 @@ uint32_t fxl_mip_size(uint32_t width, uint32_t height, fxl_texfmt_t format, uint
  * (1x2 / 2x1 once a side reaches 1), each channel rounded to nearest. I8
  * levels average palette colours and store the nearest palette entry.
  * FXL_ERR_ARG for NULL storage, a zero side, an unknown format or space, an
- * I8 palette that is NULL or at an odd address, or (RGB565) odd storage. */
+ * I8 palette that is NULL or at an odd address, or (RGB565) odd storage;
+ * FXL_ERR_UNSUPPORTED for a side that is not a power of two;
+ * FXL_ERR_NOMEM when storage_bytes is below fxl_mip_size(). */
 fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                            fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                            fxl_mip_space_t space);
