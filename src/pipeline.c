@@ -723,7 +723,9 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
         int32_t vt[3][3];
         uint32_t n, k, idx3[3];
         for (k = 0; k < 3; k++) {
-            uint32_t idx = idx3[k] = m->idx[3 * t + k];
+            /* size_t: 3 t wraps 32 bits past 1.4 x 10^9 triangles (as in
+             * fxl_draw_indexed) */
+            uint32_t idx = idx3[k] = m->idx[(size_t)3 * t + k];
             fxl_vcache_entry_t local, *e = &local;
             if (idx >= m->vert_count) return FXL_ERR_RANGE;
             if (ncache) {
