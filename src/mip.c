@@ -239,15 +239,15 @@ fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t
     /* The palette and the key are read as uint16_t: misaligned, that is
      * undefined behaviour and a HardFault on a Cortex-M0+ (as in
      * fxl_texture_validate). */
-    if (format == FXL_TEXFMT_I8 && (palette == NULL || ((uintptr_t)palette & 1u) != 0u))
+    if (format == FXL_TEXFMT_I8 && (palette == NULL || !fxl__aligned(palette, 2u)))
         return FXL_ERR_ARG;
-    if (key != NULL && ((uintptr_t)key & 1u) != 0u)
+    if (key != NULL && !fxl__aligned(key, 2u))
         return FXL_ERR_ARG;
     if (space != FXL_MIP_SPACE_STORED && space != FXL_MIP_SPACE_GAMMA22 &&
         space != FXL_MIP_SPACE_SRGB)
         return FXL_ERR_ARG;
     /* RGB565 texels are read as uint16_t: the storage must be aligned. */
-    if (bytes == 2u && ((uintptr_t)storage & 1u) != 0u)
+    if (!fxl__aligned(storage, bytes))
         return FXL_ERR_ARG;
     max_levels = fxl_mip_levels(width, height);
     if (max_levels == 0u)

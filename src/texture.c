@@ -6,21 +6,6 @@
 #include "fixel/texture.h"
 #include "texel.h"
 
-/* Is p a multiple of `bytes` (1 or 2)? The span loops read RGB565 texels
- * and palette entries as uint16_t: misaligned, that is undefined behaviour
- * in C and a HardFault on a Cortex-M0+. (uintptr_t is optional in C99;
- * without it the check is left to the caller.) */
-static int aligned(const void *p, uint32_t bytes)
-{
-#ifdef UINTPTR_MAX
-    return ((uintptr_t)p & (uintptr_t)(bytes - 1u)) == 0u;
-#else
-    (void)p;
-    (void)bytes;
-    return 1;
-#endif
-}
-
 uint32_t fxl_texfmt_bytes(fxl_texfmt_t format)
 {
     switch (format) {
@@ -41,7 +26,7 @@ fxl_status_t fxl_texture_init(fxl_texture_t *t, const void *texels, uint32_t wid
 
     if (t == NULL || texels == NULL || width == 0u || height == 0u)
         return FXL_ERR_ARG;
-    if (fxl_texfmt_bytes(format) == 0u || !aligned(texels, fxl_texfmt_bytes(format)))
+    if (fxl_texfmt_bytes(format) == 0u || !fxl__aligned(texels, fxl_texfmt_bytes(format)))
         return FXL_ERR_ARG;
     if (!fxl__is_pow2(width) || !fxl__is_pow2(height))
         return FXL_ERR_UNSUPPORTED;
@@ -79,11 +64,11 @@ fxl_status_t fxl_texture_validate(const fxl_texture_t *t)
     if (t->log2_w > FXL_TEX_MAX_LOG2 || t->log2_h > FXL_TEX_MAX_LOG2)
         return FXL_ERR_UNSUPPORTED;
     if (fxl_texfmt_bytes((fxl_texfmt_t)t->format) == 0u ||
-        !aligned(t->texels, fxl_texfmt_bytes((fxl_texfmt_t)t->format)))
+        !fxl__aligned(t->texels, fxl_texfmt_bytes((fxl_texfmt_t)t->format)))
         return FXL_ERR_ARG;
     if (t->wrap_u > FXL_WRAP_BORDER || t->wrap_v > FXL_WRAP_BORDER)
         return FXL_ERR_ARG;
-    if (t->format == FXL_TEXFMT_I8 && (t->palette == NULL || !aligned(t->palette, 2u)))
+    if (t->format == FXL_TEXFMT_I8 && (t->palette == NULL || !fxl__aligned(t->palette, 2u)))
         return FXL_ERR_ARG;
     /* Unknown flag bits and a non-zero reserved byte are refused so that
      * future meanings cannot be silently ignored by this version. */
