@@ -68,7 +68,7 @@ test: build
 # build of the core and the port layer (MinSizeRel), its sizes and the
 # no-libc check; shell text for the loops below (CPU and DIR may be $$vars).
 fw_core = echo "==== firmware: $(1) in $(2)"; \
-  $(RUN) $(CMAKE) -S . -B $(2) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/$(3) \
+  $(RUN) $(CMAKE) -S . -B $(2) "-DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/cmake/$(3)" \
     -DFXL_BUILD_HOST=OFF -DFXL_CPU=$(1) $(5) -DCMAKE_BUILD_TYPE=MinSizeRel $(CMAKE_ARGS); \
   $(RUN) $(CMAKE) --build $(2) -j $(JOBS); \
   archives=""; \
