@@ -18,6 +18,7 @@
 
 #include "fixel/config.h"
 #include "fixel/target.h"
+#include "align.h"
 
 /* Layout checks shared by init and by every function that takes a target.
  * Pointer and enum problems are FXL_ERR_ARG, numbers outside their range
@@ -100,7 +101,8 @@ fxl_status_t fxl_target_init(fxl_target_t *t, uint16_t *pixels, int32_t width,
                              int32_t height, int32_t stride, fxl_pixfmt_t format)
 {
     fxl_status_t st;
-    if (t == NULL) {
+    /* odd pixels: every uint16 store misaligned (align.h) */
+    if (t == NULL || !fxl__aligned(pixels, 2u)) {
         return FXL_ERR_ARG;
     }
     st = check_layout(pixels, width, height, stride, (int)format);
@@ -155,6 +157,9 @@ fxl_status_t fxl_target_set_depth(fxl_target_t *t, uint16_t *depth)
     fxl_status_t st = check_target(t);
     if (st != FXL_OK) {
         return st;
+    }
+    if (!fxl__aligned(depth, 2u)) {
+        return FXL_ERR_ARG;
     }
 #if !FXL_HAVE_DEPTH
     if (depth != NULL) {

@@ -14,21 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fixel/texture.h"
-
-/* Is p a multiple of `bytes` (1 or 2)? The span loops read RGB565 texels
- * and palette entries as uint16_t: misaligned, that is undefined behaviour
- * in C and a HardFault on a Cortex-M0+ (texture.c, mip.c). uintptr_t is
- * optional in C99; without it the check is left to the caller. */
-static inline int fxl__aligned(const void *p, uint32_t bytes)
-{
-#ifdef UINTPTR_MAX
-    return ((uintptr_t)p & (uintptr_t)(bytes - 1u)) == 0u;
-#else
-    (void)p;
-    (void)bytes;
-    return 1;
-#endif
-}
+#include "align.h"
 
 /* Power-of-two sizes (texture.c, mip.c). */
 static inline int fxl__is_pow2(uint32_t v)

@@ -137,6 +137,24 @@ static void test_init_rejects_null_and_unknown_format_with_arg(void)
     ASSERT_STATUS(FXL_ERR_ARG, fxl_target_init(&t, pix, W, H, STRIDE, (fxl_pixfmt_t)-1));
 }
 
+/* Pixels and depth values are stored as uint16_t: a buffer at an odd
+ * address (a byte array cast to uint16_t *) would make every store
+ * misaligned, a HardFault on a Cortex-M0+. Refused, and nothing changes. */
+static void test_odd_address_buffers_are_refused_with_arg(void)
+{
+    static uint16_t words[STRIDE * H + 1];
+    uint16_t *odd = (uint16_t *)(void *)((unsigned char *)words + 1);
+    fxl_target_t t = make_target(FXL_PIXFMT_RGB565), before;
+    fxl_target_t fresh;
+    memset(&fresh, 0x5A, sizeof fresh);
+    memcpy(&before, &fresh, sizeof before);
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_init(&fresh, odd, W, H, STRIDE, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &fresh, sizeof fresh);
+    memcpy(&before, &t, sizeof before);
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_set_depth(&t, odd));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &t, sizeof t);
+}
+
 static void test_init_rejects_sizes_with_range(void)
 {
     fxl_target_t t;
@@ -183,7 +201,7 @@ static void test_init_failure_leaves_target_untouched(void)
 {
     fxl_target_t t, before;
     memset(&t, 0x5C, sizeof t);
-    before = t;
+    memcpy(&before, &t, sizeof before);
     ASSERT_STATUS(FXL_ERR_ARG, fxl_target_init(&t, NULL, W, H, STRIDE, FXL_PIXFMT_RGB565));
     ASSERT_STATUS(FXL_ERR_ARG, fxl_target_init(&t, pix, W, H, STRIDE, (fxl_pixfmt_t)9));
     ASSERT_STATUS(FXL_ERR_RANGE, fxl_target_init(&t, pix, 0, H, STRIDE, FXL_PIXFMT_RGB565));
@@ -306,7 +324,7 @@ static void test_set_origin_rejects_out_of_range_and_keeps_target(void)
     size_t i;
     ASSERT_STATUS(FXL_OK, fxl_target_set_origin(&t, 7, 9));
     ASSERT_STATUS(FXL_OK, fxl_target_set_clip(&t, &r));
-    before = t;
+    memcpy(&before, &t, sizeof before);
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         ASSERT_STATUS(FXL_ERR_RANGE, fxl_target_set_origin(&t, bad[i], 0));
         ASSERT_STATUS(FXL_ERR_RANGE, fxl_target_set_origin(&t, 0, bad[i]));
@@ -577,6 +595,7 @@ int main(void)
     RUN_TEST(test_status_name_of_unknown_value);
     RUN_TEST(test_init_sets_whole_buffer_clip_and_no_depth);
     RUN_TEST(test_init_rejects_null_and_unknown_format_with_arg);
+    RUN_TEST(test_odd_address_buffers_are_refused_with_arg);
     RUN_TEST(test_init_rejects_sizes_with_range);
     RUN_TEST(test_init_accepts_limits);
     RUN_TEST(test_init_rejects_stride_beyond_limit);

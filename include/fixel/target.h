@@ -56,7 +56,10 @@ typedef struct fxl_target {
  * enough: rows are s pixels apart. */
 #define FXL_TARGET_BYTES(w, h) ((uint32_t)(w) * (uint32_t)(h) * 2u)
 
-/* Initialise: origin (0, 0), clip = whole buffer, no depth buffer. */
+/* Initialise: origin (0, 0), clip = whole buffer, no depth buffer.
+ * FXL_ERR_ARG for NULL or odd-address pixels (uint16_t stores there would
+ * be misaligned: a HardFault on a Cortex-M0+) or an unknown format;
+ * FXL_ERR_RANGE for sizes or a stride outside the limits above. */
 fxl_status_t fxl_target_init(fxl_target_t *t, uint16_t *pixels, int32_t width,
                              int32_t height, int32_t stride, fxl_pixfmt_t format);
 /* Move the buffer within the frame; resets clip to the whole buffer. */
@@ -64,7 +67,9 @@ fxl_status_t fxl_target_set_origin(fxl_target_t *t, int32_t origin_x, int32_t or
 /* Set the clip rectangle (frame coordinates); it is intersected with the
  * buffer. An empty intersection is allowed (nothing is drawn). */
 fxl_status_t fxl_target_set_clip(fxl_target_t *t, const fxl_rect_t *clip);
-/* Attach (or with NULL detach) a depth buffer of the same size and stride. */
+/* Attach (or with NULL detach) a depth buffer of the same size and stride.
+ * FXL_ERR_ARG for one at an odd address; FXL_ERR_UNSUPPORTED for any
+ * without FXL_HAVE_DEPTH. */
 fxl_status_t fxl_target_set_depth(fxl_target_t *t, uint16_t *depth);
 /* Fill the clip rectangle with an RGB565 colour (given native; swapped for
  * FXL_PIXFMT_RGB565_SWAP targets). */
