@@ -53,6 +53,14 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     if (b == NULL || panel == NULL || panel->preset == NULL || buf0 == NULL || buf1 == NULL ||
         buf0 == buf1 || tris == NULL || tri_cap == 0 || band_rows <= 0 || (bins == NULL && bin_cap > 0))
         return FXL_ERR_ARG;
+#ifdef UINTPTR_MAX
+    /* The core stores uint16 pixels and depth values through these: at an
+     * odd address every store is misaligned (a HardFault on a Cortex-M0+),
+     * and a 16-bit HAL refuses the buffer only in fxl_panel_write, with the
+     * frame's window already sent. Refused here, before anything is sent.
+     * (uintptr_t is optional in C99; without it the check is the caller's.) */
+    if ((((uintptr_t)buf0 | (uintptr_t)buf1 | (uintptr_t)depth) & 1u) != 0u) return FXL_ERR_ARG;
+#endif
     if (band_rows > panel->height || panel->width > FXL_TARGET_MAX_DIM) return FXL_ERR_RANGE;
     band_count = (panel->height + band_rows - 1) / band_rows;
     /* Every band's target sits at origin (0, y0): refused up front when the
@@ -129,7 +137,8 @@ fxl_status_t fxl_band_add(fxl_band_t *b, const fxl_vertex_t v[3], const fxl_draw
      * is sent (the core would return the same status for each band). A
      * draw is referenced, so it keeps its state for the frame: once found
      * valid it is not checked again for the next triangle (a scene's
-     * triangles mostly share one; the check is ~2/3 of an add on x86-64). */
+     * triangles mostly share one; the check is ~2/3 of an add on x86-64).
+     * One changed during the frame is found per band (port.h). */
     if (draw != b->checked) {
         st = band_target(b, b->buf[0], 0, b->band_rows, &band);
         if (st == FXL_OK) st = fxl_draw_check(&band, draw);

@@ -11,6 +11,7 @@
  * reloads the registers); after SLPOUT 5 ms before the next command, and
  * the boosters settle within 120 ms. We wait the 120 ms in both places. */
 #define RESET_PULSE_MS 1u   /* RESX low >= 10 us */
+#define CMD_GAP_MS 5u       /* after SWRESET or SLPOUT, before the next command */
 #define RESET_WAIT_MS 120u
 #define SLPOUT_WAIT_MS 120u
 
@@ -184,7 +185,12 @@ fxl_status_t fxl_panel_init(fxl_panel_t *panel, const fxl_port_hal_t *hal,
         if (st == FXL_OK) st = fxl_port_delay_ms(hal, RESET_PULSE_MS);
         if (st == FXL_OK) st = fxl_port_reset(hal, 1);
     } else {
-        st = hal_cmd(hal, FXL_DCS_SWRESET, NULL, 0);
+        /* A command is the one reset that must keep the 5 ms gap: an init
+         * that failed (a refused delay) right after its SWRESET or SLPOUT,
+         * then retried at once, would send this SWRESET inside that gap,
+         * where the controller may ignore it. A RESX pulse needs no gap. */
+        st = fxl_port_delay_ms(hal, CMD_GAP_MS);
+        if (st == FXL_OK) st = hal_cmd(hal, FXL_DCS_SWRESET, NULL, 0);
     }
     if (st == FXL_OK) st = fxl_port_delay_ms(hal, RESET_WAIT_MS);
     if (st == FXL_OK) st = hal_cmd(hal, FXL_DCS_SLPOUT, NULL, 0);

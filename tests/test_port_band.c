@@ -719,6 +719,43 @@ void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
     fixture_free(f);
 }
 
+void test_band_buffers_at_odd_addresses_are_refused_before_anything_is_sent(void)
+{
+    /* A band or depth buffer at an odd address (a uint8_t array cast to
+     * uint16_t *): every uint16 store of the core would be misaligned (a
+     * HardFault on a Cortex-M0+), and with a 16-bit HAL fxl_panel_write
+     * refused band 0 only after the frame's CASET/RASET/RAMWR went out.
+     * fxl_band_init refuses it, leaves the binding as it was and sends
+     * nothing. (The odd pointers are only passed, never dereferenced.) */
+    band_fixture_t *f = fixture();
+    uint16_t *odd0 = (uint16_t *)(void *)((unsigned char *)f->buf0 + 1);
+    uint16_t *odd1 = (uint16_t *)(void *)((unsigned char *)f->buf1 + 1);
+    uint16_t *odd_depth = (uint16_t *)(void *)((unsigned char *)f->depth + 1);
+    fxl_band_t before;
+    const size_t wire = f->emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4,
+                                                f->bins, 64));
+    memcpy(&before, &f->band, sizeof before);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, odd0, f->buf1, NULL, 24, f->store, 4,
+                                                     f->bins, 64));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, odd1, NULL, 24, f->store, 4,
+                                                     f->bins, 64));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, odd_depth, 24,
+                                                     f->store, 4, f->bins, 64));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &f->band, sizeof before);
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)wire, (uint32_t)f->emu.log_len);
+    /* the same with a HAL sending 16-bit frames */
+    f->hal.flags |= FXL_PORT_PIXELS_16BIT;
+    f->emu.spi16 = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&f->panel, &f->hal, &fxl_st7789_240x320, 1));
+    memcpy(&before, &f->band, sizeof before);
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, odd0, odd1, NULL, 24, f->store, 4,
+                                                     f->bins, 64));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &f->band, sizeof before);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
 /* ---- the double-buffer protocol and the transfer counters ------------------ */
 
 /* A HAL in front of the emulator's: it checks which buffer each transfer
@@ -1055,6 +1092,7 @@ int main(void)
     RUN_TEST(test_band_api_errors);
     RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);
+    RUN_TEST(test_band_buffers_at_odd_addresses_are_refused_before_anything_is_sent);
     RUN_TEST(test_render_scene_helper_matches_full_frame);
     RUN_TEST(test_bands_alternate_buffers_and_the_next_is_drawn_while_one_is_sent);
     RUN_TEST(test_panel_reinit_after_frames_does_not_stall_the_band_renderer);

@@ -96,8 +96,9 @@ void test_st7789_init_with_reset_pin_exact_bytes(void)
 
 void test_st7789_init_without_reset_pin_uses_swreset(void)
 {
+    /* 5 ms before SWRESET: the gap a previous SWRESET or SLPOUT needs. */
     static const uint32_t exp[] = {
-        C(0x01), W(120),
+        W(5), C(0x01), W(120),
         C(0x11), W(120),
         C(0x3A), D(0x55),
         C(0x36), D(0x60), /* rotation 1: MX | MV */
@@ -518,6 +519,41 @@ void test_hal_failures_become_io_errors(void)
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
 }
 
+/* delay_ms that refuses its `refuse_delay_at`-th 120 ms delay (1-based),
+ * else the emulator's. */
+static fxl_status_t (*emu_delay)(void *user, uint32_t ms);
+static int delay_calls, refuse_delay_at;
+static fxl_status_t refusing_delay(void *user, uint32_t ms)
+{
+    if (ms == 120u && ++delay_calls == refuse_delay_at) return FXL_ERR_IO;
+    return emu_delay(user, ms);
+}
+
+void test_init_retried_after_a_refused_delay_keeps_the_swreset_gap(void)
+{
+    /* Without a reset pin: the 120 ms after SWRESET, then the 120 ms after
+     * SLPOUT, refused; the init fails right after a command
+     * that needs 5 ms before the next, and the firmware retries at once.
+     * The retry's SWRESET must not come inside those 5 ms (the emulator
+     * flags a command 0 ms after SWRESET or SLPOUT). */
+    static const int refuse[] = { 1, 2 };
+    size_t i;
+    for (i = 0; i < COUNT(refuse); i++) {
+        start_emu("st7789");
+        hal.reset = NULL;
+        emu_delay = hal.delay_ms;
+        hal.delay_ms = refusing_delay;
+        delay_calls = 0;
+        refuse_delay_at = refuse[i];
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+        assert_no_protocol_errors();
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+        assert_no_protocol_errors();
+        TEST_ASSERT_EQUAL_INT(1, emu.display_on);
+        tearDown();
+    }
+}
+
 void test_wait_hook_can_abort_a_stuck_transfer(void)
 {
     uint16_t buf[2] = { 0, 0 };
@@ -584,6 +620,7 @@ int main(void)
     RUN_TEST(test_preset_step_longer_than_its_parameters_is_refused);
     RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
     RUN_TEST(test_hal_failures_become_io_errors);
+    RUN_TEST(test_init_retried_after_a_refused_delay_keeps_the_swreset_gap);
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
     RUN_TEST(test_bad_write_sizes_are_arg_errors);
     RUN_TEST(test_display_off_and_on);

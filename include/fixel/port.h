@@ -212,7 +212,8 @@ fxl_pixfmt_t fxl_port_wire_format(void);
  * fxl_port_wire_format(). NULL: fxl_port_wire_format(). */
 fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel);
 
-/* Reset (RESX pulse when hal->reset exists, else SWRESET), SLPOUT, the
+/* Reset (RESX pulse when hal->reset exists, else 5 ms then SWRESET: a retry
+ * after a failed init keeps the gap its SWRESET or SLPOUT needs), SLPOUT, the
  * preset's steps, COLMOD, MADCTL for `rotation`, INVON/INVOFF, NORON,
  * DISPON, with the datasheet delays. The HAL is copied; the preset is
  * referenced and must outlive the panel (a modified copy of a preset needs
@@ -310,7 +311,8 @@ typedef struct fxl_band {
  * tri_cap and bin_cap count entries of tris and bins (not bytes: see
  * FXL_BAND_TRI_BYTES, FXL_BAND_BIN_BYTES), and at most 65535 of each are
  * used (16-bit links). bins may be NULL with bin_cap 0 (fallback
- * only). Errors: FXL_ERR_ARG (NULL/zero), FXL_ERR_RANGE (band_rows > height,
+ * only). Errors: FXL_ERR_ARG (NULL/zero, buf0, buf1 or depth at an odd
+ * address), FXL_ERR_RANGE (band_rows > height,
  * width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
  * FXL_TARGET_MAX_ORIGIN), FXL_ERR_NOMEM (bin_cap below one header per band
  * while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build without
@@ -325,7 +327,10 @@ fxl_status_t fxl_band_begin(fxl_band_t *b);
  * fxl_draw_check says of the draw on a band of this frame (in
  * fxl_panel_pixel_format, with the depth band if any: bad settings, or a
  * draw this build left out), FXL_ERR_RANGE (an inv_w of 0), FXL_ERR_NOMEM (triangle store
- * full). A draw changed after it was added is checked again per band. */
+ * full). The check is skipped for the draw this function last found valid
+ * (the same address): a draw changed after its first add, which the frame
+ * must not do, is checked again per band instead, when the frame is
+ * already being sent (fxl_band_render). */
 fxl_status_t fxl_band_add(fxl_band_t *b, const fxl_vertex_t v[3], const fxl_draw_t *draw);
 /* Render and send the frame: full-frame window, RAMWR, then each band
  * cleared to `clear_rgb565` (native RGB565), its depth cleared, its
