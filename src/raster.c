@@ -10,6 +10,7 @@
 #include "raster_int.h"
 #include "persp.h"
 #include "auto.h"
+#include "align.h"
 
 void fxl_draw_defaults(fxl_draw_t *d)
 {
@@ -106,6 +107,11 @@ static fxl_status_t check_target(const fxl_target_t *t)
         t->origin_x < -FXL_TARGET_MAX_ORIGIN || t->origin_x > FXL_TARGET_MAX_ORIGIN ||
         t->origin_y < -FXL_TARGET_MAX_ORIGIN || t->origin_y > FXL_TARGET_MAX_ORIGIN ||
         (t->format != FXL_PIXFMT_RGB565 && t->format != FXL_PIXFMT_RGB565_SWAP))
+        return FXL_ERR_ARG;
+    /* fxl_target_init and _set_depth refuse odd buffers; one moved there by
+     * hand would make every uint16_t store misaligned (a HardFault on a
+     * Cortex-M0+, undefined behaviour in C): refused here too. */
+    if (!fxl__aligned(t->pixels, 2u) || !fxl__aligned(t->depth, 2u))
         return FXL_ERR_ARG;
     /* The clip must lie inside the buffer: this is what makes stray writes
      * impossible whatever the caller did to the struct. */

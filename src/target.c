@@ -62,7 +62,7 @@ static fxl_status_t check_layout_at(const fxl_target_t *t, int32_t origin_x, int
 
 static fxl_status_t check_target(const fxl_target_t *t)
 {
-    if (t == NULL) {
+    if (t == NULL || !fxl__aligned(t->pixels, 2u)) {
         return FXL_ERR_ARG;
     }
     return check_layout_at(t, t->origin_x, t->origin_y);
@@ -101,7 +101,8 @@ fxl_status_t fxl_target_init(fxl_target_t *t, uint16_t *pixels, int32_t width,
                              int32_t height, int32_t stride, fxl_pixfmt_t format)
 {
     fxl_status_t st;
-    /* odd pixels: every uint16 store misaligned (align.h) */
+    /* odd pixels: every uint16 store misaligned (align.h); check_target
+     * refuses one edited in by hand after init as well */
     if (t == NULL || !fxl__aligned(pixels, 2u)) {
         return FXL_ERR_ARG;
     }
@@ -228,8 +229,8 @@ fxl_status_t fxl_target_clear_depth(fxl_target_t *t)
 #if !FXL_HAVE_DEPTH
     return FXL_ERR_UNSUPPORTED;
 #else
-    if (t->depth == NULL) {
-        return FXL_ERR_ARG; /* no depth buffer attached */
+    if (t->depth == NULL || !fxl__aligned(t->depth, 2u)) {
+        return FXL_ERR_ARG; /* no depth buffer attached, or one edited to an odd address */
     }
     fill_clip(t, t->depth, 0u);
     return FXL_OK;

@@ -2496,6 +2496,25 @@ void test_draw_api_errors(void)
     fxl_target_init(&t, pix, W, H, W, drawable_rgb565());
     t.pixels = NULL;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    /* Pixel or depth pointers edited to an odd address: every uint16_t
+     * store would be misaligned (a HardFault on a Cortex-M0+); refused
+     * like fxl_target_init refuses them, before any pixel. */
+    {
+        static uint16_t words[W * H + 1];
+        uint16_t *odd = (uint16_t *)(void *)((unsigned char *)words + 1);
+        int k;
+        for (k = 0; k < W * H + 1; k++)
+            words[k] = 0x5A5Au;
+        fxl_target_init(&t, pix, W, H, W, drawable_rgb565());
+        t.pixels = odd;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_check(&t, &d), "odd pixels");
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL), "odd pixels");
+        fxl_target_init(&t, pix, W, H, W, drawable_rgb565());
+        t.depth = odd;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL), "odd depth");
+        for (k = 0; k < W * H + 1; k++)
+            TEST_ASSERT_EQUAL_HEX16(0x5A5Au, words[k]);
+    }
     fxl_target_init(&t, pix, W, H, W, drawable_rgb565());
     /* Degenerate and off-target triangles are culled and counted. */
     v[2] = v[1];

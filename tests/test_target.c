@@ -155,6 +155,33 @@ static void test_odd_address_buffers_are_refused_with_arg(void)
     TEST_ASSERT_EQUAL_MEMORY(&before, &t, sizeof t);
 }
 
+/* The struct is plain data: a pixel or depth pointer moved to an odd
+ * address by hand after init is refused by the clears as init refuses it,
+ * before any (misaligned) store; the buffer keeps its canaries. */
+static void test_odd_pointers_edited_in_are_refused_by_clears(void)
+{
+    static uint16_t words[STRIDE * H + 1];
+    uint16_t *odd = (uint16_t *)(void *)((unsigned char *)words + 1);
+    fxl_target_t t = make_target(FXL_PIXFMT_RGB565);
+    size_t k;
+    for (k = 0; k < sizeof words / sizeof words[0]; k++) words[k] = CANARY;
+    t.pixels = odd;
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_clear(&t, 0x1234u));
+    for (k = 0; k < sizeof words / sizeof words[0]; k++) {
+        snprintf(msg, sizeof msg, "word %lu written through an odd pixel pointer", (unsigned long)k);
+        TEST_ASSERT_EQUAL_HEX32_MESSAGE(CANARY, words[k], msg);
+    }
+#if FXL_HAVE_DEPTH
+    t = make_target(FXL_PIXFMT_RGB565);
+    t.depth = odd;
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_clear_depth(&t));
+    for (k = 0; k < sizeof words / sizeof words[0]; k++) {
+        snprintf(msg, sizeof msg, "word %lu written through an odd depth pointer", (unsigned long)k);
+        TEST_ASSERT_EQUAL_HEX32_MESSAGE(CANARY, words[k], msg);
+    }
+#endif
+}
+
 static void test_init_rejects_sizes_with_range(void)
 {
     fxl_target_t t;
@@ -596,6 +623,7 @@ int main(void)
     RUN_TEST(test_init_sets_whole_buffer_clip_and_no_depth);
     RUN_TEST(test_init_rejects_null_and_unknown_format_with_arg);
     RUN_TEST(test_odd_address_buffers_are_refused_with_arg);
+    RUN_TEST(test_odd_pointers_edited_in_are_refused_by_clears);
     RUN_TEST(test_init_rejects_sizes_with_range);
     RUN_TEST(test_init_accepts_limits);
     RUN_TEST(test_init_rejects_stride_beyond_limit);
