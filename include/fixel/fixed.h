@@ -6,8 +6,9 @@
  * Rounding: every function that drops bits rounds to nearest, ties away from
  * zero (so results are symmetric: f(-a, b) == -f(a, b)).
  * Overflow: functions named _sat saturate to FXL_Q16_MAX / FXL_Q16_MIN; the
- * _chk variants return FXL_ERR_RANGE and leave *out untouched. No function
- * here ever performs a signed overflow, for any argument.
+ * _chk variants return FXL_ERR_RANGE and leave *out untouched (a NULL out is
+ * FXL_ERR_ARG). No function here ever performs a signed overflow, for any
+ * argument.
  */
 #ifndef FIXEL_FIXED_H
 #define FIXEL_FIXED_H

@@ -23,9 +23,14 @@
  *   FXL_GUARD_MAX. So no vertex with w <= 0 reaches the rasterizer and every
  *   projected coordinate lies within about FXL_GUARD_PX pixels of the
  *   viewport centre. Clip z is not used (depth is 1/w).
- * - Screen vertices: x, y q16 frame pixels (rounded to nearest; the
- *   rasterizer's sub-pixel snap is the only other quantisation),
- *   inv_w = round(near / w * 2^32) clamped to [1, 2^32 - 1] (u0.32), u, v q16.
+ * - Screen vertices: x, y q16 frame pixels, within (|x_ndc| + 1) 2^-30 hw
+ *   + 1 q16 units of the exact projection of the clip-space vertex (hw the
+ *   viewport's half-width in q16, y likewise; one 31-bit reciprocal of w
+ *   a vertex: 0.76 units measured on a 4096-pixel viewport; the fuzzer
+ *   holds them to twice that), the rasterizer's sub-pixel snap the only
+ *   other quantisation; inv_w = near / w * 2^32 within 2^-30 of it plus
+ *   one unit (1.6 units measured), clamped to [1, 2^32 - 1] (u0.32);
+ *   u, v q16.
  * Memory: everything is caller-owned; no function allocates. The only
  * pointer kept is the optional vertex cache of a pipeline
  * (fxl_pipeline_set_vertex_cache). Status: FXL_ERR_ARG for NULL / bad enums, FXL_ERR_RANGE for
@@ -106,7 +111,11 @@ fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_ve
 /* OpenGL-style perspective (gluPerspective): vertical field of view
  * (0 < fovy < 32768, i.e. below 180 degrees), aspect = width / height (q16,
  * > 0), 0 < near < far. Row 3 is (0, 0, -1, 0), so clip w = -z_view exactly.
- * far == 0 gives the infinite-far variant (z row (0, 0, -1, -2 near)). */
+ * far == 0 gives the infinite-far variant (z row (0, 0, -1, -2 near)).
+ * Within those ranges FXL_ERR_RANGE still when an entry does not fit q16:
+ * cot(fovy / 2) / aspect, (far + near) / (far - near) or
+ * 2 far near / (far - near) of 32768 or more (a tiny aspect, far next to
+ * near). */
 fxl_status_t fxl_mat4_perspective(fxl_mat4_t *m, fxl_angle_t fovy, fxl_q16_t aspect,
                                   fxl_q16_t near_q16, fxl_q16_t far_q16);
 
@@ -210,7 +219,8 @@ fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3]
 /* One directional light plus ambient. Channel intensities are k / 255. For
  * a vertex of base colour c (RGB565) and eye-space unit normal n:
  *   I = min(1, ambient + diffuse * max(0, n . dir)),   out = round(c * I)
- * per channel (5, 6, 5 bits). */
+ * per channel (5, 6, 5 bits), exact except within 0.004 of a rounding tie
+ * (n . dir and I are q16), where it may be the other neighbour. */
 typedef struct fxl_light {
     fxl_vec3_t dir;                /* unit vector toward the light, eye space, q16 */
     uint8_t ambient[3];            /* r, g, b */
@@ -320,9 +330,10 @@ fxl_status_t fxl_xform_clip(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_cl
 fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec3_t *out);
 /* Perspective divide and viewport mapping of a vertex with w >= near.
  * FXL_ERR_RANGE for w < near (including w <= 0) or |x|, |y| beyond the
- * guard band by more than the clipper's rounding, and for an xf (filled by
- * hand) outside the ranges fxl_pipeline_prepare gives: near in [2^-16,
- * 2^15) (q32: [2^16, 2^47)), far 0 or beyond near and below 2^15, half
+ * guard band by more than the clipper's rounding, for w at
+ * FXL_CLIP_LIMIT_Q32 or beyond, and for an xf (filled by hand) outside the
+ * ranges fxl_pipeline_prepare gives: near in [2^-16, 2^15 - 2^-16] (q32:
+ * [2^16, 2^47 - 2^16]), far 0 or beyond near and at most 2^15 - 2^-16, half
  * sizes in [0.5, FXL_TARGET_MAX_DIM / 2] px, centres within
  * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM / 2 px, 0 < G <= FXL_GUARD_MAX
  * with G times the larger half size <= FXL_GUARD_PX. */

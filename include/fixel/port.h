@@ -152,10 +152,14 @@ typedef struct fxl_dcs_step {
  * n > 0). */
 fxl_status_t fxl_dcs_cmd(const fxl_port_hal_t *hal, uint8_t cmd, const uint8_t *params, size_t n);
 /* CASET/RASET with inclusive ends, then RAMWR. Coordinates are controller
- * addresses (offsets already added), 0..65535. */
+ * addresses (offsets already added), 0..65535. FXL_ERR_ARG: NULL hal or
+ * cmd callback; FXL_ERR_RANGE: x1 < x0 or y1 < y0 (nothing is sent). */
 fxl_status_t fxl_dcs_window(const fxl_port_hal_t *hal, uint16_t x0, uint16_t y0, uint16_t x1,
                             uint16_t y1);
-/* Run `count` steps, delaying after each one that asks for it. */
+/* Run `count` steps, delaying after each one that asks for it. FXL_ERR_ARG
+ * for NULL hal, cmd callback or steps with count > 0, and for a step of
+ * more than 15 parameters (the steps before it are sent); a delay with
+ * hal->delay_ms NULL is FXL_ERR_UNSUPPORTED (the step itself was sent). */
 fxl_status_t fxl_dcs_run(const fxl_port_hal_t *hal, const fxl_dcs_step_t *steps, size_t count);
 
 /* ---- panels -------------------------------------------------------------- */
@@ -220,7 +224,8 @@ fxl_pixfmt_t fxl_panel_pixel_format(const fxl_panel_t *panel);
  * static storage too). Forgets every transfer (started = done = 0): stop
  * any DMA of this panel first. Errors: FXL_ERR_ARG (NULL panel, hal,
  * preset, hal->cmd or hal->pixels, rotation > 3, bad preset: a zero size,
- * an address beyond 16 bits, a step of more than 15 parameters; nothing is
+ * an offset plus a side (either side, with either offset of any rotation)
+ * above 65535, a step of more than 15 parameters; nothing is
  * sent), FXL_ERR_UNSUPPORTED (hal->delay_ms NULL; nothing is sent),
  * FXL_ERR_IO. After FXL_ERR_IO the panel is refused (FXL_ERR_ARG) by every
  * call but fxl_panel_init until an init succeeds. */
@@ -311,8 +316,8 @@ typedef struct fxl_band {
  * tri_cap and bin_cap count entries of tris and bins (not bytes: see
  * FXL_BAND_TRI_BYTES, FXL_BAND_BIN_BYTES), and at most 65535 of each are
  * used (16-bit links). bins may be NULL with bin_cap 0 (fallback
- * only). Errors: FXL_ERR_ARG (NULL/zero, buf0, buf1 or depth at an odd
- * address), FXL_ERR_RANGE (band_rows > height,
+ * only). Errors: FXL_ERR_ARG (NULL/zero, buf0 == buf1, buf0, buf1 or
+ * depth at an odd address, a panel whose init failed), FXL_ERR_RANGE (band_rows > height,
  * width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
  * FXL_TARGET_MAX_ORIGIN), FXL_ERR_NOMEM (bin_cap below one header per band
  * while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build without

@@ -152,7 +152,8 @@ void fxl_draw_defaults(fxl_draw_t *d);
 int32_t fxl_snap_subpx(fxl_q16_t x);
 
 /* Draw one triangle. Errors: FXL_ERR_ARG (NULL target/draw/vertices/pixels,
- * unknown enum, a target whose fields were edited out of range), FXL_ERR_RANGE
+ * unknown enum, a target whose fields were edited out of range or whose
+ * pixel or depth pointer was edited to an odd address), FXL_ERR_RANGE
  * (inv_w == 0, persp not allowed, bad budget), FXL_ERR_UNSUPPORTED (a feature
  * compiled out by config.h), or whatever fxl_texture_validate() returns for
  * an invalid texture. Nothing is drawn on error. Degenerate and off-clip

@@ -12,7 +12,11 @@
  * depends on the clip rectangle; the value of a drawn pixel never does.
  *
  * Memory. pixels (and the optional depth buffer) belong to the caller; the
- * target only points at them. Both use `stride` elements per row.
+ * target only points at them. Both use `stride` elements per row. The
+ * struct is plain data: every call re-checks fields edited by hand (sizes,
+ * origin, stride outside the limits, an odd pixel pointer), and the calls
+ * that store through the depth pointer (fxl_target_clear_depth, the
+ * draws) refuse an odd one; nothing is written then.
  * Limits: 1 <= width, height <= FXL_TARGET_MAX_DIM, width <= stride <=
  * 4 * FXL_TARGET_MAX_DIM, |origin| <= FXL_TARGET_MAX_ORIGIN.
  */
@@ -68,13 +72,15 @@ fxl_status_t fxl_target_set_origin(fxl_target_t *t, int32_t origin_x, int32_t or
  * buffer. An empty intersection is allowed (nothing is drawn). */
 fxl_status_t fxl_target_set_clip(fxl_target_t *t, const fxl_rect_t *clip);
 /* Attach (or with NULL detach) a depth buffer of the same size and stride.
- * FXL_ERR_ARG for one at an odd address; FXL_ERR_UNSUPPORTED for any
- * without FXL_HAVE_DEPTH. */
+ * FXL_ERR_ARG for one at an odd address; FXL_ERR_UNSUPPORTED for a
+ * non-NULL one without FXL_HAVE_DEPTH (detaching is always FXL_OK). */
 fxl_status_t fxl_target_set_depth(fxl_target_t *t, uint16_t *depth);
 /* Fill the clip rectangle with an RGB565 colour (given native; swapped for
  * FXL_PIXFMT_RGB565_SWAP targets). */
 fxl_status_t fxl_target_clear(fxl_target_t *t, uint16_t rgb565);
-/* Fill the clip rectangle of the depth buffer with 0 (farthest). */
+/* Fill the clip rectangle of the depth buffer with 0 (farthest).
+ * FXL_ERR_ARG when no depth buffer is attached; FXL_ERR_UNSUPPORTED
+ * without FXL_HAVE_DEPTH. */
 fxl_status_t fxl_target_clear_depth(fxl_target_t *t);
 
 /* Pack 8-bit channels into native RGB565 (truncating). */

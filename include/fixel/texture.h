@@ -106,8 +106,10 @@ uint32_t fxl_mip_size(uint32_t width, uint32_t height, fxl_texfmt_t format, uint
  * levels average palette colours and store the nearest palette entry.
  * FXL_ERR_ARG for NULL storage, a zero side, an unknown format or space, an
  * I8 palette that is NULL or at an odd address, or (RGB565) odd storage;
- * FXL_ERR_UNSUPPORTED for a side that is not a power of two;
- * FXL_ERR_NOMEM when storage_bytes is below fxl_mip_size(). */
+ * FXL_ERR_UNSUPPORTED for a side that is not a power of two or is above
+ * 1 << FXL_TEX_MAX_LOG2; FXL_ERR_RANGE for levels outside
+ * 1 .. fxl_mip_levels(); FXL_ERR_NOMEM when storage_bytes is below
+ * fxl_mip_size(). */
 fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                            fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                            fxl_mip_space_t space);
@@ -116,7 +118,8 @@ fxl_status_t fxl_mip_build(void *storage, uint32_t storage_bytes, uint32_t width
  * of its sources are (2 of 4, 1 of 2), otherwise the average of its opaque
  * sources, nudged off the key value (RGB565: blue LSB flipped, L8: one code,
  * I8: the key index is never chosen). A key at an odd address is
- * FXL_ERR_ARG. */
+ * FXL_ERR_ARG; a key above 255 for L8 or I8 is FXL_ERR_RANGE (as in
+ * fxl_texture_validate). */
 fxl_status_t fxl_mip_build_keyed(void *storage, uint32_t storage_bytes, uint32_t width, uint32_t height,
                                  fxl_texfmt_t format, uint32_t levels, const uint16_t *palette,
                                  fxl_mip_space_t space, const uint16_t *key);
