@@ -41,7 +41,8 @@
 #endif
 
 /* FXL_PERSP_AUTO, the error-budgeted adaptive segment length (~2.6 KB of
- * Cortex-M4 code); without it FXL_PERSP_AUTO is FXL_ERR_UNSUPPORTED. */
+ * Cortex-M4 code); without it FXL_PERSP_AUTO is FXL_ERR_UNSUPPORTED (an
+ * auto_budget <= 0 is FXL_ERR_RANGE first, in every build). */
 #ifndef FXL_HAVE_AUTO
 #define FXL_HAVE_AUTO 1
 #endif
