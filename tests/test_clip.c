@@ -111,6 +111,39 @@ static void test_clip_inside_triangle_is_unchanged(void)
     TEST_ASSERT_EQUAL_MEMORY(in, out, sizeof in);
 }
 
+/* A vertex exactly on a guard-band plane (|x| = G w or |y| = G w) is
+ * inside (distance 0 >= 0, as for the near plane): the triangle passes
+ * through untouched. w = 2 makes G w = guard_q16 * 2^17 exactly in q32. A
+ * plane distance off by one unit would cut it and add a vertex a 2^-32
+ * from the original: a sliver triangle and a recomputed u, v. */
+static void test_clip_vertex_on_guard_plane_is_inside(void)
+{
+    fxl_xform_t xf = make_xform(1, 0);
+    const int64_t w = (int64_t)2 << 32, gw = (int64_t)xf.guard_q16 << 17;
+    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+    uint32_t n;
+    int pl;
+    for (pl = 0; pl < 4; pl++) {
+        memset(in, 0, sizeof in);
+        in[0].w = w;
+        in[1].w = w;
+        in[1].x = (int64_t)1 << 32;
+        in[1].u = 65536;
+        in[2].w = w;
+        in[2].y = (int64_t)1 << 32;
+        in[2].v = 65536;
+        /* vertex 0 on +x, -x, +y, -y in turn */
+        if (pl < 2)
+            in[0].x = pl == 0 ? gw : -gw;
+        else
+            in[0].y = pl == 2 ? gw : -gw;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+        snprintf(msg, sizeof msg, "vertex on guard plane %d: %u vertices out", pl, (unsigned)n);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(3, n, msg);
+        TEST_ASSERT_TRUE_MESSAGE(memcmp(in, out, sizeof in) == 0, msg);
+    }
+}
+
 static void test_clip_triangle_behind_eye_is_removed(void)
 {
     fxl_xform_t xf = make_xform(0.1, 0);
@@ -310,6 +343,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_clip_inside_triangle_is_unchanged);
+    RUN_TEST(test_clip_vertex_on_guard_plane_is_inside);
     RUN_TEST(test_clip_triangle_behind_eye_is_removed);
     RUN_TEST(test_clip_one_vertex_behind_near_gives_quad_on_plane);
     RUN_TEST(test_clip_random_triangles_match_double_reference);

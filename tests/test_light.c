@@ -79,6 +79,60 @@ static void test_light_matches_double(void)
     TEST_ASSERT_GREATER_THAN(290000, exact);
 }
 
+/* With n . dir exact in q16 (dir = +z, n = (0, 0, m / 65536)), the only
+ * rounding before the last is I's division by 255: (num + 127) / 255 is
+ * round(num / 255) within 127/255 < 1/2 unit of 2^-16, so base_c * I is
+ * within 63 * 2^-17 < 0.00049 of the exact value, and the result must be
+ * round(exact) everywhere farther than that from a tie: much tighter than
+ * the 0.004 that the random unit vectors above need. (Truncating the
+ * division instead doubles that error: ambient 114, diffuse 100, m = 30071
+ * gives 63 * I = 39.50093, which must round to 40.) */
+static void test_light_exact_dot_products_round_to_nearest(void)
+{
+    static const int shift[3] = {11, 5, 0}, maxc[3] = {31, 63, 31};
+    const double eps = 63.0 / 131072.0;
+    int i, checked = 0;
+    fxl_light_t l;
+    rng_seed(4242);
+    l.dir.x = 0;
+    l.dir.y = 0;
+    l.dir.z = 65536;
+    for (i = 0; i < 200000; i++) {
+        fxl_vec3_t n;
+        uint16_t base = (uint16_t)rng_next(), out;
+        int c;
+        n.x = 0;
+        n.y = 0;
+        n.z = (fxl_q16_t)(rng_next() % 65537u);
+        for (c = 0; c < 3; c++) {
+            l.ambient[c] = (uint8_t)(rng_next() % 256);
+            l.diffuse[c] = (uint8_t)(rng_next() % 256);
+        }
+        if (i == 0) {   /* the example above, on green */
+            n.z = 30071;
+            base = 0x07E0;
+            l.ambient[1] = 114;
+            l.diffuse[1] = 100;
+        }
+        out = fxl_light_shade(&l, &n, base);
+        for (c = 0; c < 3; c++) {
+            double want = exact_channel(&l, &n, base, c);
+            int got = (out >> shift[c]) & maxc[c];
+            double frac = want - floor(want);
+            if (fabs(frac - 0.5) <= eps)
+                continue;
+            checked++;
+            if (got != (int)floor(want + 0.5)) {
+                snprintf(msg, sizeof msg,
+                         "ambient %d diffuse %d n.z %ld base %04x channel %d: exact %.6f, got %d", l.ambient[c],
+                         l.diffuse[c], (long)n.z, base, c, want, got);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    TEST_ASSERT_TRUE(checked > 590000);
+}
+
 static void test_light_back_facing_gets_ambient_and_bright_saturates(void)
 {
     fxl_light_t l;
@@ -143,6 +197,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_light_matches_double);
+    RUN_TEST(test_light_exact_dot_products_round_to_nearest);
     RUN_TEST(test_light_back_facing_gets_ambient_and_bright_saturates);
     RUN_TEST(test_mesh_lighting_uses_eye_space_normals);
     return UNITY_END();

@@ -598,6 +598,27 @@ void test_binning_edges_row_zero_and_bins_exactly_full(void)
     fixture_free(f);
 }
 
+/* A triangle ending less than a pixel above the frame covers no row (row
+ * 0's centre is at 0.5) and must be dropped like one far above it: its
+ * rows floor(ymax + h) = floor(-0.47) = -1 (band.c floor_px). Division
+ * that truncates toward zero gives 0 there and lists it in band 0, taking
+ * a store slot for nothing. */
+void test_triangle_ending_just_above_the_frame_is_dropped(void)
+{
+    fxl_vertex_t v[3];
+    fxl_draw_t d;
+    band_fixture_t *f = binning_fixture(&d, 14);
+    flat_tri(v, -10, 0);
+    v[0].y = FXL_Q16_INT(-10);
+    v[1].y = v[2].y = -FXL_Q16_HALF;   /* y = -0.5 */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+    TEST_ASSERT_EQUAL_UINT32(0, f->band.tri_count);
+    TEST_ASSERT_EQUAL_UINT32(10, f->band.bin_used);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_render(&f->band, 0, NULL));
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
 /* ---- error paths ----------------------------------------------------------- */
 
 void test_band_api_errors(void)
@@ -1089,6 +1110,7 @@ int main(void)
     RUN_TEST(test_triangle_is_listed_once_in_each_band_it_touches);
     RUN_TEST(test_triangle_that_does_not_fit_the_bins_starts_the_fallback);
     RUN_TEST(test_binning_edges_row_zero_and_bins_exactly_full);
+    RUN_TEST(test_triangle_ending_just_above_the_frame_is_dropped);
     RUN_TEST(test_band_api_errors);
     RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);

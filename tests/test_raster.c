@@ -1531,6 +1531,84 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
                              msg);
 }
 
+/* Depth ties in the reciprocal runs (FXL_PERSP_AUTO, auto.h): the same
+ * triangle drawn again with another texture has bit-for-bit the same depth,
+ * and "greater is nearer" must keep the first draw. The tie test in
+ * test_depth_ties_keep_the_first_draw_in_every_walk draws one-level
+ * textures; the runs' mip-linear loops with depth (span_fast.h, FXL_T_MIPLIN
+ * and FXL_T_DEPTH) have their own comparison, checked here for every
+ * filter the runs have: point, bilinear, trilinear, point-mip-linear and the
+ * nearest level. */
+void test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties(void)
+{
+    enum { RW = 640, RH = 200, NT = 12, NTEX = 256 * 256 * 4 / 3 + 1 };
+    static uint16_t tex_a[NTEX], tex_b[NTEX], px[RW * RH], zb[RW * RH], first[RW * RH], zfirst[RW * RH];
+    static uint16_t scratch[RW * RH];
+    fxl_texture_t ta, tb;
+    fxl_target_t t, ts;
+    fxl_draw_t d;
+    int i, k, f, rr_tris = 0, compared = 0;
+    char msg[160];
+    TEST_NEEDS(FXL_HAVE_RR);
+    TEST_NEEDS(FXL_HAVE_DEPTH);
+    lcg_state = 7717u;
+    for (i = 0; i < NTEX; i++) {
+        tex_a[i] = (uint16_t)((uint32_t)i * 2654435761u >> 16);
+        tex_b[i] = (uint16_t)~tex_a[i];
+    }
+    for (k = 0; k < NT; k++) {
+        fxl_vertex_t v[3];
+        rr_floor_tri(v, RW, RH);
+        for (i = 0; i < 3; i++) {
+            v[i].u /= 4;   /* a 256-texel texture: as in the test above */
+            v[i].v /= 4;
+        }
+        for (f = 0; f < 6; f++) {
+            const int bil = f == 1 || f == 2 || f == 5;
+            const uint32_t levels = f >= 2 ? 9u : 1u;
+            if ((bil && !FXL_HAVE_BILINEAR) || (f >= 2 && !FXL_HAVE_MIPMAP))
+                continue;
+            fxl_draw_defaults(&d);
+            d.persp = FXL_PERSP_AUTO;
+            d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+            d.mip = f >= 4 ? FXL_MIP_NEAREST : (f >= 2 ? FXL_MIP_LINEAR : FXL_MIP_NONE);
+            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&ta, tex_a, 256, 256, FXL_TEXFMT_RGB565, levels));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tb, tex_b, 256, 256, FXL_TEXFMT_RGB565, levels));
+            /* did this triangle take the runs? (the generic walk's setup) */
+            d.texture = &ta;
+            fxl_target_init(&ts, scratch, RW, RH, RW, drawable_rgb565());
+            probe_rr = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&ts, &d, v, NULL, probe_real_rr));
+            if (f == 2 && probe_rr)
+                rr_tris++;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, RW, RH, RW, drawable_rgb565()));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+            fxl_target_clear(&t, 0);
+            fxl_target_clear_depth(&t);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            memcpy(first, px, sizeof px);
+            memcpy(zfirst, zb, sizeof zb);
+            d.texture = &tb;   /* the same geometry: every depth a tie */
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            for (i = 0; i < RW * RH; i++)
+                if (px[i] != first[i] || zb[i] != zfirst[i]) {
+                    snprintf(msg, sizeof msg,
+                             "triangle %d filter %d (runs %d) pixel (%d,%d): a tie overwrote %04x with %04x", k, f,
+                             probe_rr, i % RW, i / RW, first[i], px[i]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d of %d triangles took reciprocal runs with levels blended; %d renders compared",
+             rr_tris, NT, compared);
+    TEST_MESSAGE(msg);
+    /* the seed's floor triangles mostly take the runs (the test above: 27
+     * of 40 with levels blended); a quarter keeps the test meaningful */
+    TEST_ASSERT_TRUE_MESSAGE(!FXL_HAVE_MIPMAP || rr_tris >= NT / 4, msg);
+}
+
 /* FXL_PERSP_AUTO with quadratic segments (auto.h): random triangles with
  * one far vertex (depth ratios 3 to 30 across the triangle) and texture
  * coordinates up to +-40 repeats, seen through the generic walk: every
@@ -3047,6 +3125,71 @@ void test_needle_slivers_interpolate_their_attributes_in_every_mode(void)
     TEST_ASSERT_TRUE_MESSAGE(col_px > 1000 || !FXL_HAVE_GENERIC, msg);
 }
 
+/* Plane gradients round half away from zero (setup.c, gradient: sign(N)
+ * round_half_up(|N| 2^PF / den)). A tie needs |det| to hold 2^(PF + 1):
+ * det = 2048 * 1024 = 2^21 grid units with an odd dY1 gives the depth
+ * plane gx = (dz1 * 1024 - dz2) 2^20 / 2^21, a half exactly when dz2 is
+ * odd. Checked against the exact quotient for both signs and windings. */
+static fxl__plane_t probe_zplane;
+static uint32_t probe_depth_plane(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    probe_zplane = tri->z;
+    return (uint32_t)s->n;
+}
+
+static int64_t round_half_away(int64_t num, int64_t den)   /* den > 0, |num| < 2^62 */
+{
+    const int64_t m = num < 0 ? -num : num, q = (m + den / 2) / den;
+    return num < 0 ? -q : q;
+}
+
+void test_gradient_ties_round_half_away_from_zero(void)
+{
+    enum { TW = 160, TH = 120 };
+    static uint16_t px[TW * TH], zb[TW * TH];
+    static const int32_t dz[4][2] = {{1001, 3}, {1001, -3}, {-7, 5}, {-7, -5}};
+    const int32_t X0 = 8 << FXL__S, Y0 = 8 << FXL__S;
+    const int32_t X[3] = {X0, X0 + 2048, X0}, Y[3] = {Y0, Y0 + 1, Y0 + 1024};
+    fxl_target_t t;
+    fxl_draw_t d;
+    char msg[160];
+    int k, w;
+    TEST_NEEDS(FXL_HAVE_DEPTH && FXL_HAVE_GENERIC);
+    for (k = 0; k < 4; k++)
+        for (w = 0; w < 2; w++) {
+            fxl_vertex_t v[3];
+            const uint32_t z0 = 0x40000000u;
+            const uint32_t z[3] = {z0, z0 + (uint32_t)dz[k][0], z0 + (uint32_t)dz[k][1]};
+            int64_t det, nx, ny;
+            int i;
+            memset(v, 0, sizeof v);
+            for (i = 0; i < 3; i++) {
+                const int j = w && i ? 3 - i : i;   /* w: the other winding */
+                v[j].x = X[i] * (1 << (16 - FXL__S));
+                v[j].y = Y[i] * (1 << (16 - FXL__S));
+                v[j].inv_w = z[i];
+                v[j].color = 0xFFFFu;
+            }
+            fxl_draw_defaults(&d);
+            d.shade = FXL_SHADE_FLAT;
+            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, TW, TH, TW, drawable_rgb565()));
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+            fxl_target_clear_depth(&t);
+            memset(&probe_zplane, 0, sizeof probe_zplane);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_depth_plane));
+            /* the plane's reference vertex is v[0] = (X0, Y0) in both windings */
+            det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
+            nx = ((int64_t)z[1] - z[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)z[2] - z[0]) * ((int64_t)Y[1] - Y[0]);
+            ny = ((int64_t)z[2] - z[0]) * ((int64_t)X[1] - X[0]) - ((int64_t)z[1] - z[0]) * ((int64_t)X[2] - X[0]);
+            snprintf(msg, sizeof msg, "dz (%ld, %ld) winding %d: gx %lld, want %lld", (long)dz[k][0],
+                     (long)dz[k][1], w, (long long)probe_zplane.gx,
+                     (long long)round_half_away(nx * ((int64_t)1 << FXL__PF), det));
+            TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gx == round_half_away(nx * ((int64_t)1 << FXL__PF), det), msg);
+            TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gy == round_half_away(ny * ((int64_t)1 << FXL__PF), det), msg);
+        }
+}
+
 /* The needle threshold (setup.c, gradient): a triangle without uv_wide
  * bit 2 must have every plane gradient within 2^42 plane units a pixel,
  * the size the segment bounds and the per-segment LOD read 16 pixels'
@@ -3177,10 +3320,12 @@ int main(void)
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);
     RUN_TEST(test_auto_quadratic_segments_stay_within_budget);
     RUN_TEST(test_auto_reciprocal_runs_agree_and_stay_within_budget);
+    RUN_TEST(test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties);
     RUN_TEST(test_auto_on_the_largest_texture_keeps_its_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_needles_flag_gradients_beyond_what_a_pixel_holds);
+    RUN_TEST(test_gradient_ties_round_half_away_from_zero);
     RUN_TEST(test_auto_whole_span_test_keeps_receding_strips_within_budget);
     RUN_TEST(test_auto_budget_holds_for_small_and_huge_budgets);
     RUN_TEST(test_auto_budget_holds_on_rows_of_constant_depth);

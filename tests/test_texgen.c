@@ -262,6 +262,37 @@ static void test_texgen_rejects_bad_arguments(void)
     TEST_ASSERT_EQUAL_INT32(0, t[0].u);
 }
 
+/* Ties of the major axis (|sum x| = |sum y| >= |sum z|, a triangle centred
+ * on a cube edge) go to the first axis in face order, x before y before z
+ * (texgen.c cube), so the same mesh gets the same atlas tile on every
+ * build. Centred on the x = y edge: face +X, tile (0, 0); on y = z: +Y,
+ * tile (2, 0); on x = -z: +X again. */
+static void test_cube_major_axis_ties_take_the_first_axis(void)
+{
+    static const double c[3][3] = {{2, 2, 0.5}, {0.5, 2, 2}, {2, 0.5, -2}};
+    static const int face[3] = {FXL_CUBE_POS_X, FXL_CUBE_POS_Y, FXL_CUBE_POS_X};
+    fxl_texgen_t tg;
+    int k, i;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CUBE;
+    for (k = 0; k < 3; k++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        /* three vertices around the centre, symmetric so the sums tie exactly */
+        p[0] = vec(c[k][0], c[k][1], c[k][2]);
+        p[1] = vec(c[k][0] + 0.25, c[k][1] + 0.25, c[k][2] + 0.25 * (k == 2 ? -1 : 1));
+        p[2] = vec(c[k][0] - 0.25, c[k][1] - 0.25, c[k][2] - 0.25 * (k == 2 ? -1 : 1));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        for (i = 0; i < 3; i++) {
+            snprintf(msg, sizeof msg, "edge %d vertex %d: u %ld v %ld not in tile %d", k, i, (long)t[i].u,
+                     (long)t[i].v, face[k]);
+            TEST_ASSERT_TRUE_MESSAGE(t[i].u >= dq16((face[k] % 3) / 3.0) - 1 && t[i].u <= dq16((face[k] % 3 + 1) / 3.0) + 1 &&
+                                         t[i].v >= dq16((face[k] / 3) / 2.0) - 1 && t[i].v <= dq16((face[k] / 3 + 1) / 2.0) + 1,
+                                     msg);
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -271,6 +302,7 @@ int main(void)
     RUN_TEST(test_seam_triangle_does_not_span_whole_texture);
     RUN_TEST(test_pole_takes_mean_theta_of_other_vertices);
     RUN_TEST(test_cube_faces_and_atlas_layout);
+    RUN_TEST(test_cube_major_axis_ties_take_the_first_axis);
     RUN_TEST(test_texgen_rejects_bad_arguments);
     return UNITY_END();
 }
