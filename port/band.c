@@ -53,14 +53,6 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     if (b == NULL || panel == NULL || panel->preset == NULL || buf0 == NULL || buf1 == NULL ||
         buf0 == buf1 || tris == NULL || tri_cap == 0 || band_rows <= 0 || (bins == NULL && bin_cap > 0))
         return FXL_ERR_ARG;
-#ifdef UINTPTR_MAX
-    /* The core stores uint16 pixels and depth values through these: at an
-     * odd address every store is misaligned (a HardFault on a Cortex-M0+),
-     * and a 16-bit HAL refuses the buffer only in fxl_panel_write, with the
-     * frame's window already sent. Refused here, before anything is sent.
-     * (uintptr_t is optional in C99; without it the check is the caller's.) */
-    if ((((uintptr_t)buf0 | (uintptr_t)buf1 | (uintptr_t)depth) & 1u) != 0u) return FXL_ERR_ARG;
-#endif
     if (band_rows > panel->height || panel->width > FXL_TARGET_MAX_DIM) return FXL_ERR_RANGE;
     band_count = (panel->height + band_rows - 1) / band_rows;
     /* Every band's target sits at origin (0, y0): refused up front when the
@@ -69,10 +61,13 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
     if ((int64_t)(band_count - 1) * band_rows > FXL_TARGET_MAX_ORIGIN) return FXL_ERR_RANGE;
     if (bin_cap > 0 && bin_cap < (uint32_t)band_count) return FXL_ERR_NOMEM;
     {
-        /* A band the core cannot draw into (a depth band in a build without
-         * FXL_HAVE_DEPTH) is refused now rather than mid-frame. */
+        /* A band the core cannot draw into is refused now rather than
+         * mid-frame: a depth band in a build without FXL_HAVE_DEPTH, or a
+         * buffer at an odd address (fxl_target_init, _set_depth), which a
+         * 16-bit HAL would refuse only with the frame's window sent. */
         fxl_target_t t;
-        const fxl_status_t st = target_of(panel, panel->width, depth, buf0, 0, band_rows, &t);
+        fxl_status_t st = target_of(panel, panel->width, depth, buf0, 0, band_rows, &t);
+        if (st == FXL_OK) st = target_of(panel, panel->width, NULL, buf1, 0, band_rows, &t);
         if (st != FXL_OK) return st;
     }
     /* Only a binding that is whole is written: after an error b is as it

@@ -9,6 +9,7 @@
 #define _POSIX_C_SOURCE 200809L
 #endif
 #include "png_io.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <png.h>
@@ -17,9 +18,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 typedef struct png_ctx {
     char msg[200];
@@ -67,12 +65,8 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
     png_ctx_t ctx;
     png_structp png = NULL;
     png_infop info = NULL;
-    FILE *volatile fp = NULL;
-    char *tmp = NULL;
+    outfile_t out;   /* not changed between setjmp() and a longjmp() */
     unsigned char *row = NULL;
-    size_t tmp_len;
-    struct stat st;
-    int direct;
     int32_t x, y;
 
     if (path == NULL || pixels == NULL || width <= 0 || height <= 0 || stride < width) {
@@ -84,37 +78,14 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
         set_err(err, err_size, "png write: unsupported pixel format %d", (int)format);
         return -1;
     }
-    tmp_len = strlen(path) + 32;
-    tmp = (char *)malloc(tmp_len);
     row = (unsigned char *)malloc((size_t)width * 3u);
-    if (tmp == NULL || row == NULL) {
-        free(tmp);
-        free(row);
+    if (row == NULL) {
         set_err(err, err_size, "png write '%s': out of memory", path);
         return -1;
     }
-    /* A device or FIFO (-o /dev/null) is written in place: a temp file
-     * renamed over it would replace the node itself when run as root. */
-    direct = stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
-    /* Same directory as the target so rename() stays atomic (one file system). */
-    if (direct) {
-        snprintf(tmp, tmp_len, "%s", path);
-    } else {
-        snprintf(tmp, tmp_len, "%s.tmp%ld", path, (long)getpid());
-    }
-    if (direct) {
-        fp = fopen(tmp, "wb");
-    } else {
-        /* O_EXCL: the temp name is predictable, so never write through a
-         * file or link someone else put there */
-        const int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-        fp = fd >= 0 ? fdopen(fd, "wb") : NULL;
-        if (fd >= 0 && fp == NULL)
-            close(fd);
-    }
-    if (fp == NULL) {
-        set_err(err, err_size, "cannot create '%s': %s", tmp, strerror(errno));
-        free(tmp);
+    /* a temp file renamed into place, or a device written in place */
+    if (outfile_open(&out, path) != 0) {
+        set_err(err, err_size, "cannot create '%s': %s", path, strerror(errno));
         free(row);
         return -1;
     }
@@ -131,7 +102,7 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
         set_err(err, err_size, "png write '%s': libpng: %s", path, ctx.msg);
         goto fail;
     }
-    png_init_io(png, fp);
+    png_init_io(png, out.f);
     png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
@@ -149,17 +120,14 @@ int pngio_write_rgb565(const char *path, const uint16_t *pixels, int32_t width, 
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     png = NULL;
-    if (fclose(fp) != 0) {
-        fp = NULL;
-        set_err(err, err_size, "png write '%s': %s", tmp, strerror(errno));
+    if (outfile_close(&out, 0) != 0) {
+        set_err(err, err_size, "png write '%s': %s", path, strerror(errno));
         goto fail;
     }
-    fp = NULL;
-    if (!direct && rename(tmp, path) != 0) {
-        set_err(err, err_size, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
+    if (outfile_commit(&out) != 0) {
+        set_err(err, err_size, "cannot rename into '%s': %s", path, strerror(errno));
         goto fail;
     }
-    free(tmp);
     free(row);
     return 0;
 
@@ -167,13 +135,7 @@ fail:
     if (png != NULL) {
         png_destroy_write_struct(&png, info != NULL ? &info : NULL);
     }
-    if (fp != NULL) {
-        fclose(fp);
-    }
-    if (!direct) {
-        remove(tmp);
-    }
-    free(tmp);
+    outfile_abandon(&out);
     free(row);
     return -1;
 }

@@ -1,6 +1,7 @@
 /* host_sim/lib/texconv_lib.c - PNG -> fixel texture chain; see texconv_lib.h. */
 #define _POSIX_C_SOURCE 200809L
 #include "texconv_lib.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <png.h>
@@ -755,102 +756,6 @@ static void default_name(const char *path, char *out, size_t n)
 }
 
 /* Output file written through a temp file in the same directory. */
-typedef struct outfile {
-    const char *path;
-    char *tmp;
-    FILE *f;
-    int direct;   /* a device or FIFO, written in place (no temp file) */
-} outfile_t;
-
-static int out_open(outfile_t *o, const char *path)
-{
-    size_t n = strlen(path) + 16;
-    struct stat st;
-    int fd;
-    o->path = path;
-    o->f = NULL;
-    o->tmp = NULL;
-    o->direct = 0;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        /* "-o /dev/null" made /dev/null.tmp.XXXXXX and renamed it over the
-         * device node (as root). Only regular files get the temp + rename. */
-        if (S_ISDIR(st.st_mode)) {
-            errno = EISDIR;
-            return -1;
-        }
-        o->f = fopen(path, "wb");
-        if (o->f == NULL)
-            return -1;
-        o->direct = 1;
-        return 0;
-    }
-    o->tmp = (char *)malloc(n);
-    if (o->tmp == NULL)
-        return -1;
-    snprintf(o->tmp, n, "%s.tmp.XXXXXX", path);
-    fd = mkstemp(o->tmp);
-    if (fd < 0) {
-        free(o->tmp);
-        o->tmp = NULL;
-        return -1;
-    }
-    {
-        /* mkstemp creates 0600; give the result the usual 0666 & ~umask */
-        mode_t mask = umask(0);
-        umask(mask);
-        (void)fchmod(fd, 0666 & ~mask);
-    }
-    o->f = fdopen(fd, "wb");
-    if (o->f == NULL) {
-        close(fd);
-        unlink(o->tmp);
-        free(o->tmp);
-        o->tmp = NULL;
-        return -1;
-    }
-    return 0;
-}
-
-/* Close; on failure or when `discard`, remove the temp file. */
-static int out_close(outfile_t *o, int discard)
-{
-    int bad = discard;
-    if (o->tmp == NULL && !o->direct)
-        return -1;
-    if (o->f != NULL && fclose(o->f) != 0)
-        bad = 1;
-    o->f = NULL;
-    if (bad && !o->direct)
-        unlink(o->tmp);
-    return bad ? -1 : 0;
-}
-
-static void out_abandon(outfile_t *o)
-{
-    if (o->direct && o->f != NULL) {
-        fclose(o->f);
-        o->f = NULL;
-    }
-    if (o->tmp != NULL) {
-        if (o->f != NULL)
-            fclose(o->f);
-        o->f = NULL;
-        unlink(o->tmp);
-        free(o->tmp);
-        o->tmp = NULL;
-    }
-}
-
-static int out_commit(outfile_t *o)
-{
-    int r = rename(o->tmp, o->path);
-    if (r != 0)
-        unlink(o->tmp);
-    free(o->tmp);
-    o->tmp = NULL;
-    return r;
-}
-
 int texconv_main(int argc, char **argv)
 {
     const char *in = NULL, *out_c = NULL, *out_bin = NULL, *name = NULL;
@@ -859,8 +764,8 @@ int texconv_main(int argc, char **argv)
     texconv_opts_t o;
     texconv_image_t img;
     texconv_chain_t chain;
-    outfile_t fc = {NULL, NULL, NULL, 0}, fb = {NULL, NULL, NULL, 0};
-    int i, v, rc = 0;
+    outfile_t fc = {NULL, NULL, NULL}, fb = {NULL, NULL, NULL};
+    int i, v, rc = 0, c_in_place;
 
     texconv_opts_default(&o);
     for (i = 1; i < argc; i++) {
@@ -991,38 +896,39 @@ int texconv_main(int argc, char **argv)
     /* Write every output to a temp file first; rename only when all are
      * complete, so an error never leaves a partial or mismatched pair. */
     if (out_c != NULL) {
-        if (out_open(&fc, out_c) != 0) {
+        if (outfile_open(&fc, out_c) != 0) {
             fprintf(stderr, "fixel-texconv: %s: cannot create: %s\n", out_c, strerror(errno));
             rc = 1;
         } else if (texconv_write_c(fc.f, &chain, name, command, &o) != 0 ||
-                   out_close(&fc, 0) != 0) {
+                   outfile_close(&fc, 0) != 0) {
             fprintf(stderr, "fixel-texconv: %s: write failed\n", out_c);
             rc = 1;
         }
     }
     if (rc == 0 && out_bin != NULL) {
-        if (out_open(&fb, out_bin) != 0) {
+        if (outfile_open(&fb, out_bin) != 0) {
             fprintf(stderr, "fixel-texconv: %s: cannot create: %s\n", out_bin, strerror(errno));
             rc = 1;
-        } else if (texconv_write_bin(fb.f, &chain) != 0 || out_close(&fb, 0) != 0) {
+        } else if (texconv_write_bin(fb.f, &chain) != 0 || outfile_close(&fb, 0) != 0) {
             fprintf(stderr, "fixel-texconv: %s: write failed\n", out_bin);
             rc = 1;
         }
     }
-    if (rc == 0 && fc.tmp != NULL && out_commit(&fc) != 0) {
+    c_in_place = fc.tmp == NULL;   /* a device: never unlinked below */
+    if (rc == 0 && outfile_commit(&fc) != 0) {
         fprintf(stderr, "fixel-texconv: %s: cannot rename into place: %s\n", out_c,
                 strerror(errno));
         rc = 1;
     }
-    if (rc == 0 && fb.tmp != NULL && out_commit(&fb) != 0) {
+    if (rc == 0 && outfile_commit(&fb) != 0) {
         fprintf(stderr, "fixel-texconv: %s: cannot rename into place: %s\n", out_bin,
                 strerror(errno));
-        if (out_c != NULL && !fc.direct)
-            unlink(out_c); /* do not leave half of the pair (never a device) */
+        if (out_c != NULL && !c_in_place)
+            unlink(out_c); /* do not leave half of the pair */
         rc = 1;
     }
-    out_abandon(&fc);
-    out_abandon(&fb);
+    outfile_abandon(&fc);
+    outfile_abandon(&fb);
     free(command);
     texconv_chain_free(&chain);
     return rc;
