@@ -25,18 +25,6 @@
 #include "auto.h"
 #include "recip_run.h"
 
-/* Longest log2 L <= cap with L^2 / 4 * 2^lg <= budget. */
-static int fit_log2(int32_t lg, int32_t lb, int cap)
-{
-    /* log2 L <= (log2 budget + 2 - log2 G) / 2; the log2 table rounds to
-     * 1/256, one step of margin keeps it an upper bound. */
-    int32_t k = (lb + 2 * 256 - lg - 2) / 2;
-    if (k < 0)
-        return 0;
-    k >>= 8;
-    return k > cap ? cap : (int)k;
-}
-
 /* Longest log2 L <= cap with 0.0482 L^3 2^lg <= budget (quadratic
  * segments, auto.h): 3 log2 L <= log2 budget + log2(12 sqrt 3) - lg, that
  * constant (4.377) rounded down to 1120/256, less margins for the log2
@@ -343,7 +331,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
         return;
     /* Cheap bound first: max |N| with min q, each over the vertices. */
     lqx = fxl__sf_log2_q8(qx);
-    k = fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
+    k = fxl__auto_fit_log2(lqx + lnmax / 2 - 3 * lqmin, lb, cap);
     tri->seg_log2 = k;
     if (k >= cap)
         return;
@@ -358,7 +346,7 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * trilinear: ~1.19x fixed subdiv16's instructions with 8-pixel
          * segments for the whole triangle, ~1.01x per segment. */
         const int32_t lqmax = log2_q8((uint64_t)tri->q_max);
-        int best_tri = k, best_seg = fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, tri->nlevels > 1 ? 8 : cap);
+        int best_tri = k, best_seg = fxl__auto_fit_log2(lqx + lnmax / 2 - 3 * lqmax, lb, tri->nlevels > 1 ? 8 : cap);
         /* Quadratic segments (auto.h) on repeat and mirror axes (modular
          * coordinates: a parabola may overshoot its ends a little, which
          * a clamped int32 coordinate must not) of a texture with one level

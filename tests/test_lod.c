@@ -14,6 +14,7 @@
 #include "../src/raster_int.h"
 #include "../src/persp.h"
 #include "../src/sfloat.h"
+#include "../src/auto.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -758,6 +759,42 @@ void test_sf_dot2_within_its_error(void)
     TEST_MESSAGE(msg);
 }
 
+/* AUTO's affine segment length (auto.h, fxl__auto_fit_log2) from the log2
+ * table's values of G and budget: L = 2^k must satisfy L^2 / 4 * G <=
+ * budget for the true values (the table errs by up to 1.94 q8 steps; the
+ * margin covers it), and 2 L must not, less 1% (the margin costs no more
+ * than that). A geometric sweep of G < 2^30 and budget < 2^40. */
+void test_auto_fit_log2_bounds_the_true_values(void)
+{
+#if !FXL_HAVE_AUTO
+    TEST_NEEDS(FXL_HAVE_AUTO);
+#else
+    uint64_t g, b;
+    long pairs = 0;
+    for (g = 1; g < ((uint64_t)1 << 30); g += g / 16 + 1)
+        for (b = 1; b < ((uint64_t)1 << 40); b += b / 256 + 1) {
+            const int k = fxl__auto_fit_log2(fxl__log2_q8(g), fxl__log2_q8(b), 30);
+            /* L^2 / 4 * G <= budget  <=>  4^k G <= 4 budget (k < 30: < 2^90, in long double's
+             * 64-bit mantissa exactly as a power of two times G) */
+            const long double lhs = ldexpl((long double)g, 2 * k), rhs = 4.0L * (long double)b;
+            pairs++;
+            if (k > 0 && lhs > rhs) {
+                char msg[96];
+                snprintf(msg, sizeof msg, "G %llu budget %llu: k %d too long", (unsigned long long)g,
+                         (unsigned long long)b, k);
+                TEST_FAIL_MESSAGE(msg);
+            }
+            if (k < 30 && 4.0L * lhs <= 0.99L * rhs) {
+                char msg[96];
+                snprintf(msg, sizeof msg, "G %llu budget %llu: k %d, %d fits", (unsigned long long)g,
+                         (unsigned long long)b, k, k + 1);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    TEST_ASSERT_GREATER_THAN(1000000, pairs);
+#endif
+}
+
 void test_log2_q8_forms_agree(void)
 {
 #if !(FXL_HAVE_MIPMAP || FXL_HAVE_AUTO)
@@ -816,6 +853,7 @@ int main(void)
     RUN_TEST(test_auto_spans_that_fit_the_cap_take_fixed_segments);
     RUN_TEST(test_mip_walks_with_depth_match_generic);
     RUN_TEST(test_log2_q8_forms_agree);
+    RUN_TEST(test_auto_fit_log2_bounds_the_true_values);
     RUN_TEST(test_sf_dot2_within_its_error);
     return UNITY_END();
 }
