@@ -22,7 +22,7 @@ enum { PL_NEAR, PL_FAR, PL_XP, PL_XN, PL_YP, PL_YN, PL_COUNT };
 
 static int64_t guard_w(const fxl_xform_t *xf, int64_t w)
 {
-    return fxl__mul_shr(w, (uint32_t)xf->guard_q16, 16, NULL);
+    return FXL__HOT_MUL_SHR(w, (uint32_t)xf->guard_q16, 16, NULL);
 }
 
 /* The clip planes are told apart by comparisons, not a switch: on Thumb-1
@@ -52,7 +52,7 @@ static int64_t plane_dist(const fxl_xform_t *xf, int plane, const fxl_clipvert_t
 
 static int64_t lerp64(int64_t a, int64_t b, uint32_t t_q31)
 {
-    return a + fxl__mul_shr(b - a, t_q31, 31, NULL);
+    return a + FXL__HOT_MUL_SHR(b - a, t_q31, 31, NULL);
 }
 
 static int32_t lerp32(int32_t a, int32_t b, uint32_t t_q31)
@@ -97,13 +97,18 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
     if (res->w < xf->near_q32) res->w = xf->near_q32; /* rounding never takes it behind near */
 }
 
+/* Bit pl set where plane_dist(xf, pl, v) < 0. G w is formed once: through
+ * plane_dist it was four 96-bit products a corner, twelve a triangle. */
 static int outcode(const fxl_xform_t *xf, const fxl_clipvert_t *v)
 {
-    int code = 0, pl;
-    for (pl = 0; pl < PL_COUNT; pl++) {
-        if (pl == PL_FAR && xf->far_q32 == 0) continue;
-        if (plane_dist(xf, pl, v) < 0) code |= 1 << pl;
-    }
+    const int64_t gw = guard_w(xf, v->w);
+    int code = 0;
+    if (v->w - xf->near_q32 < 0) code |= 1 << PL_NEAR;
+    if (xf->far_q32 != 0 && xf->far_q32 - v->w < 0) code |= 1 << PL_FAR;
+    if (gw - v->x < 0) code |= 1 << PL_XP;
+    if (gw + v->x < 0) code |= 1 << PL_XN;
+    if (gw - v->y < 0) code |= 1 << PL_YP;
+    if (gw + v->y < 0) code |= 1 << PL_YN;
     return code;
 }
 

@@ -14,70 +14,27 @@
 
 /* ---- 64-bit helpers ------------------------------------------------------ */
 
-static uint64_t mag64(int64_t x)
-{
-    /* |x| as uint64, also for INT64_MIN. */
-    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
-}
-
-static int64_t apply_sign(uint64_t m, int neg, int *ovf)
-{
-    if (m > (uint64_t)INT64_MAX) {
-        if (ovf) *ovf = 1;
-        m = (uint64_t)INT64_MAX;
-    }
-    return neg ? -(int64_t)m : (int64_t)m;
-}
-
 int64_t fxl__shr_round(int64_t x, unsigned sh)
 {
-    uint64_t m = mag64(x);
+    uint64_t m = fxl__mag64(x);
     if (sh == 0) return x;
     m = (m + ((uint64_t)1 << (sh - 1))) >> sh;
-    return apply_sign(m, x < 0, NULL);
+    return fxl__apply_sign(m, x < 0, NULL);
 }
 
 int64_t fxl__asr(int64_t x, unsigned sh)
 {
-    if (x >= 0) return x >> sh;
-    /* floor(x / 2^sh) = -ceil(-x / 2^sh) = -(((-x) - 1) >> sh) - 1 */
-    return -(int64_t)(((uint64_t)0 - (uint64_t)x - 1u) >> sh) - 1;
+    return fxl__asr_i(x, sh);
 }
 
 int64_t fxl__mul_shr(int64_t a, uint32_t b, unsigned sh, int *ovf)
 {
-    uint64_t m = mag64(a), hi, lo, r;
-    /* 96-bit magnitude = hi * 2^32 + lo, lo < 2^32. ah <= 2^31 so
-     * ah * b < 2^63 and hi cannot wrap. */
-    uint64_t ph = (m >> 32) * b, pl = (m & 0xFFFFFFFFu) * b;
-    hi = ph + (pl >> 32);
-    lo = pl & 0xFFFFFFFFu;
-    if (sh > 0) { /* add half an output unit: ties away from zero */
-        if (sh <= 32) {
-            lo += (uint64_t)1 << (sh - 1);
-            hi += lo >> 32;
-            lo &= 0xFFFFFFFFu;
-        } else {
-            hi += (uint64_t)1 << (sh - 33);
-        }
-    }
-    if (sh <= 32) {
-        if ((hi >> (31 + sh)) != 0) {
-            r = (uint64_t)INT64_MAX + 1u; /* forces saturation */
-        } else {
-            r = (hi << (32 - sh)) | (lo >> sh);
-        }
-    } else {
-        r = hi >> (sh - 32);
-    }
-    return apply_sign(r, a < 0, ovf);
+    return fxl__mul_shr_i(a, b, sh, ovf);
 }
 
 int64_t fxl__mul_shr_s(int64_t a, int32_t b, unsigned sh, int *ovf)
 {
-    uint32_t mb = b < 0 ? (uint32_t)0 - (uint32_t)b : (uint32_t)b;
-    int64_t r = fxl__mul_shr(a, mb, sh, ovf);
-    return b < 0 ? -r : r; /* r is never INT64_MIN */
+    return fxl__mul_shr_s_i(a, b, sh, ovf);
 }
 
 int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf)
@@ -105,9 +62,9 @@ int32_t fxl__to_i32(int64_t x, int *ovf)
 /* round(num / den), ties away from zero; den != 0, |num| < 2^62. */
 static int64_t div_round(int64_t num, int64_t den)
 {
-    uint64_t n = mag64(num), d = mag64(den);
+    uint64_t n = fxl__mag64(num), d = fxl__mag64(den);
     uint64_t q = fxl__udiv64(n + d / 2u, d);
-    return apply_sign(q, (num < 0) != (den < 0), NULL);
+    return fxl__apply_sign(q, (num < 0) != (den < 0), NULL);
 }
 
 /* ---- matrices ------------------------------------------------------------ */
@@ -259,7 +216,7 @@ static fxl_status_t normalize_q30(const int64_t in[3], int64_t out[3])
     uint64_t mx = 0, len;
     int64_t v[3];
     int i, top;
-    for (i = 0; i < 3; i++) if (mag64(in[i]) > mx) mx = mag64(in[i]);
+    for (i = 0; i < 3; i++) if (fxl__mag64(in[i]) > mx) mx = fxl__mag64(in[i]);
     if (mx == 0) return FXL_ERR_RANGE;
     top = 63 - fxl_clz64(mx);
     for (i = 0; i < 3; i++)
@@ -291,7 +248,7 @@ fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_ve
     tmp[0] = fxl__shr_round(f[1] * u0[2] - f[2] * u0[1], 30);
     tmp[1] = fxl__shr_round(f[2] * u0[0] - f[0] * u0[2], 30);
     tmp[2] = fxl__shr_round(f[0] * u0[1] - f[1] * u0[0], 30);
-    if (mag64(tmp[0]) + mag64(tmp[1]) + mag64(tmp[2]) < ((uint64_t)1 << 14)) return FXL_ERR_RANGE;
+    if (fxl__mag64(tmp[0]) + fxl__mag64(tmp[1]) + fxl__mag64(tmp[2]) < ((uint64_t)1 << 14)) return FXL_ERR_RANGE;
     if ((st = normalize_q30(tmp, s)) != FXL_OK) return st;
     u[0] = fxl__shr_round(s[1] * f[2] - s[2] * f[1], 30);
     u[1] = fxl__shr_round(s[2] * f[0] - s[0] * f[2], 30);
@@ -447,9 +404,9 @@ fxl_status_t fxl_pipeline_prepare(const fxl_pipeline_t *p, fxl_xform_t *xf)
 static int64_t row_apply(const int64_t row[4], const fxl_vec3_t *pos, int *ovf)
 {
     int64_t acc = row[3];
-    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[0], pos->x, 16, ovf), ovf);
-    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[1], pos->y, 16, ovf), ovf);
-    acc = fxl__add_sat(acc, fxl__mul_shr_s(row[2], pos->z, 16, ovf), ovf);
+    acc = fxl__add_sat(acc, FXL__HOT_MUL_SHR_S(row[0], pos->x, 16, ovf), ovf);
+    acc = fxl__add_sat(acc, FXL__HOT_MUL_SHR_S(row[1], pos->y, 16, ovf), ovf);
+    acc = fxl__add_sat(acc, FXL__HOT_MUL_SHR_S(row[2], pos->z, 16, ovf), ovf);
     return acc;
 }
 
@@ -482,16 +439,19 @@ fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec
     return ovf ? FXL_ERR_RANGE : FXL_OK;
 }
 
+/* A channel (0..255 in q8) as `bits` bits: round(c (2^bits - 1) / 65280),
+ * c clamped to 0..65280 first. In 32 bits (< 2^22 / 65280), which the
+ * compiler turns into a multiply: three 64-bit divisions a corner were
+ * library calls on the Cortex-M cores. */
+static uint32_t pack_channel(int32_t c, unsigned bits)
+{
+    const uint32_t cc = c < 0 ? 0u : (c > 65280 ? 65280u : (uint32_t)c);
+    return (cc * ((1u << bits) - 1u) + 32640u) / 65280u;
+}
+
 static uint16_t pack_q8(int32_t r, int32_t g, int32_t b)
 {
-    /* channel (0..255 in q8) -> 5 or 6 bits: round(c * 31 / 65280). */
-    uint32_t r5 = (uint32_t)fxl__sdiv64((int64_t)r * 31 + 32640, 65280);
-    uint32_t g6 = (uint32_t)fxl__sdiv64((int64_t)g * 63 + 32640, 65280);
-    uint32_t b5 = (uint32_t)fxl__sdiv64((int64_t)b * 31 + 32640, 65280);
-    if (r5 > 31) r5 = 31;
-    if (g6 > 63) g6 = 63;
-    if (b5 > 31) b5 = 31;
-    return (uint16_t)((r5 << 11) | (g6 << 5) | b5);
+    return (uint16_t)((pack_channel(r, 5) << 11) | (pack_channel(g, 6) << 5) | pack_channel(b, 5));
 }
 
 /* ndc (q30) -> frame pixel q16, clamping to the guard band. */
@@ -505,7 +465,7 @@ static fxl_status_t to_screen(int64_t ndc_q30, int64_t g_q30, int64_t centre, in
     if (ndc_q30 > g_q30) ndc_q30 = g_q30;
     if (ndc_q30 < -g_q30) ndc_q30 = -g_q30;
     /* |ndc| * half <= G * half <= FXL_GUARD_PX px: fits easily. */
-    px = fxl__mul_shr(ndc_q30, (uint32_t)half, 30, NULL);
+    px = FXL__HOT_MUL_SHR(ndc_q30, (uint32_t)half, 30, NULL);
     px = flip ? centre - px : centre + px;
     *out = (fxl_q16_t)px; /* |centre| + 8192 px < 32768 px */
     return FXL_OK;
@@ -527,13 +487,13 @@ static fxl_status_t project_pos(const fxl_xform_t *xf, const fxl_clipvert_t *c, 
     wn = s >= 31 ? (uint64_t)c->w >> (s - 31) : (uint64_t)c->w << (31 - s);
     rec = fxl__udiv64(((uint64_t)1 << 62) + wn / 2u, wn);
     /* x / w in q30 = x * rec * 2^(-1 - s); s >= 16 since w >= near >= 2^-16. */
-    ndc_x = fxl__mul_shr(c->x, (uint32_t)rec, (unsigned)(s + 1), NULL);
-    ndc_y = fxl__mul_shr(c->y, (uint32_t)rec, (unsigned)(s + 1), NULL);
+    ndc_x = FXL__HOT_MUL_SHR(c->x, (uint32_t)rec, (unsigned)(s + 1), NULL);
+    ndc_y = FXL__HOT_MUL_SHR(c->y, (uint32_t)rec, (unsigned)(s + 1), NULL);
     g_q30 = (int64_t)xf->guard_q16 << 14;
     if ((st = to_screen(ndc_x, g_q30, xf->cx_q16, xf->hw_q16, 0, &out->x)) != FXL_OK) return st;
     if ((st = to_screen(ndc_y, g_q30, xf->cy_q16, xf->hh_q16, 1, &out->y)) != FXL_OK) return st;
     /* near / w * 2^32 = near_q32 * rec * 2^(1 - s). */
-    inv_w = fxl__mul_shr(xf->near_q32, (uint32_t)rec, (unsigned)(s - 1), NULL);
+    inv_w = FXL__HOT_MUL_SHR(xf->near_q32, (uint32_t)rec, (unsigned)(s - 1), NULL);
     if (inv_w > (int64_t)0xFFFFFFFFu) inv_w = 0xFFFFFFFF;
     if (inv_w < 1) inv_w = 1;
     out->inv_w = (uint32_t)inv_w;
@@ -598,9 +558,9 @@ static void eye_normal(const fxl_xform_t *xf, const fxl_vec3_t *n, fxl_vec3_t *o
     int64_t e[3], u[3];
     int r;
     for (r = 0; r < 3; r++) {
-        int64_t acc = fxl__mul_shr_s(xf->mv[r][0], n->x, 16, NULL);
-        acc = fxl__add_sat(acc, fxl__mul_shr_s(xf->mv[r][1], n->y, 16, NULL), NULL);
-        e[r] = fxl__add_sat(acc, fxl__mul_shr_s(xf->mv[r][2], n->z, 16, NULL), NULL);
+        int64_t acc = FXL__HOT_MUL_SHR_S(xf->mv[r][0], n->x, 16, NULL);
+        acc = fxl__add_sat(acc, FXL__HOT_MUL_SHR_S(xf->mv[r][1], n->y, 16, NULL), NULL);
+        e[r] = fxl__add_sat(acc, FXL__HOT_MUL_SHR_S(xf->mv[r][2], n->z, 16, NULL), NULL);
     }
     if (normalize_q30(e, u) != FXL_OK) {
         out->x = out->y = out->z = 0; /* no normal: ambient only */

@@ -10,6 +10,85 @@
 #include "fixel/pipeline.h"
 #include "isqrt.h"
 
+/* The hot helpers below are defined here so that -O2 builds can inline
+ * them where they run per vertex or per corner (FXL__HOT_*): there a
+ * constant shift folds most of fxl__mul_shr's 64-bit shifts by a variable
+ * away (~40 Cortex-M4 instructions a call out of line). Size-optimised
+ * builds call the one out-of-line copy each (pipeline.c). */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL__PIPE_INLINE inline __attribute__((always_inline))
+#define FXL__HOT_ASR fxl__asr_i
+#define FXL__HOT_MUL_SHR fxl__mul_shr_i
+#define FXL__HOT_MUL_SHR_S fxl__mul_shr_s_i
+#else
+#define FXL__PIPE_INLINE inline
+#define FXL__HOT_ASR fxl__asr
+#define FXL__HOT_MUL_SHR fxl__mul_shr
+#define FXL__HOT_MUL_SHR_S fxl__mul_shr_s
+#endif
+
+/* |x| as uint64, also for INT64_MIN. */
+static FXL__PIPE_INLINE uint64_t fxl__mag64(int64_t x)
+{
+    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+}
+
+/* m with the sign neg, saturated to INT64_MAX (setting *ovf if not NULL). */
+static FXL__PIPE_INLINE int64_t fxl__apply_sign(uint64_t m, int neg, int *ovf)
+{
+    if (m > (uint64_t)INT64_MAX) {
+        if (ovf) *ovf = 1;
+        m = (uint64_t)INT64_MAX;
+    }
+    return neg ? -(int64_t)m : (int64_t)m;
+}
+
+/* fxl__asr */
+static FXL__PIPE_INLINE int64_t fxl__asr_i(int64_t x, unsigned sh)
+{
+    if (x >= 0) return x >> sh;
+    /* floor(x / 2^sh) = -ceil(-x / 2^sh) = -(((-x) - 1) >> sh) - 1 */
+    return -(int64_t)(((uint64_t)0 - (uint64_t)x - 1u) >> sh) - 1;
+}
+
+/* fxl__mul_shr */
+static FXL__PIPE_INLINE int64_t fxl__mul_shr_i(int64_t a, uint32_t b, unsigned sh, int *ovf)
+{
+    uint64_t m = fxl__mag64(a), hi, lo, r;
+    /* 96-bit magnitude = hi * 2^32 + lo, lo < 2^32. ah <= 2^31 so
+     * ah * b < 2^63 and hi cannot wrap. */
+    uint64_t ph = (m >> 32) * b, pl = (m & 0xFFFFFFFFu) * b;
+    hi = ph + (pl >> 32);
+    lo = pl & 0xFFFFFFFFu;
+    if (sh > 0) { /* add half an output unit: ties away from zero */
+        if (sh <= 32) {
+            lo += (uint64_t)1 << (sh - 1);
+            hi += lo >> 32;
+            lo &= 0xFFFFFFFFu;
+        } else {
+            hi += (uint64_t)1 << (sh - 33);
+        }
+    }
+    if (sh <= 32) {
+        if ((hi >> (31 + sh)) != 0) {
+            r = (uint64_t)INT64_MAX + 1u; /* forces saturation */
+        } else {
+            r = (hi << (32 - sh)) | (lo >> sh);
+        }
+    } else {
+        r = hi >> (sh - 32);
+    }
+    return fxl__apply_sign(r, a < 0, ovf);
+}
+
+/* fxl__mul_shr_s */
+static FXL__PIPE_INLINE int64_t fxl__mul_shr_s_i(int64_t a, int32_t b, unsigned sh, int *ovf)
+{
+    uint32_t mb = b < 0 ? (uint32_t)0 - (uint32_t)b : (uint32_t)b;
+    int64_t r = fxl__mul_shr_i(a, mb, sh, ovf);
+    return b < 0 ? -r : r; /* r is never INT64_MIN */
+}
+
 /* round(x / 2^sh) with ties away from zero, 0 <= sh <= 62. */
 int64_t fxl__shr_round(int64_t x, unsigned sh);
 /* floor(x / 2^sh), 0 <= sh <= 63 (an arithmetic shift without relying on

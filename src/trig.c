@@ -122,7 +122,7 @@ static uint32_t cordic_octant(int64_t x, int64_t y)
         y = (int64_t)((uint64_t)y << (58 - top));
     }
     for (i = 0; i < 30; i++) {
-        int64_t dx = fxl__asr(y, (unsigned)i), dy = fxl__asr(x, (unsigned)i);
+        int64_t dx = FXL__HOT_ASR(y, (unsigned)i), dy = FXL__HOT_ASR(x, (unsigned)i);
         if (y > 0) {
             x += dx; y -= dy; z += atan_q32[i];
         } else if (y < 0) {

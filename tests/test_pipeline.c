@@ -585,6 +585,39 @@ static void test_project_rejects_w_at_or_behind_near(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
 }
 
+/* The colour of a projected vertex: each channel (0..255 in q8) rounded
+ * to 5 or 6 bits, round(c (2^bits - 1) / 65280), for every value in range;
+ * outside it clamped (a negative channel once packed as full intensity
+ * through a truncating division and an unsigned cast). */
+static void test_project_packs_channels_rounded_and_clamped(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t c;
+    fxl_vertex_t out;
+    int32_t ch;
+    static const int32_t beyond[] = {INT32_MIN, -70000, -3159, -1, 65281, 70000, INT32_MAX};
+    size_t i;
+    prepared_320x240(&p, &xf, &c);
+    c.w = xf.near_q32 * 2;
+    for (ch = 0; ch <= 65280; ch++) {
+        const uint32_t r5 = (uint32_t)floor(ch * 31.0 / 65280.0 + 0.5);
+        const uint32_t g6 = (uint32_t)floor(ch * 63.0 / 65280.0 + 0.5);
+        const uint32_t b5 = (uint32_t)floor((65280 - ch) * 31.0 / 65280.0 + 0.5);
+        c.r = ch;
+        c.g = ch;
+        c.b = 65280 - ch;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+        TEST_ASSERT_EQUAL_HEX16((r5 << 11) | (g6 << 5) | b5, out.color);
+    }
+    for (i = 0; i < sizeof beyond / sizeof beyond[0]; i++) {
+        const uint16_t want = beyond[i] < 0 ? 0x0000u : 0xFFFFu;
+        c.r = c.g = c.b = beyond[i];
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+        TEST_ASSERT_EQUAL_HEX16(want, out.color);
+    }
+}
+
 /* A hand-filled fxl_xform_t outside the ranges fxl_pipeline_prepare gives
  * is refused by the projection and the clipper (it once reached a shift by
  * ~2^32 with near below 2^-16, a left shift of a negative guard band and
@@ -1177,6 +1210,7 @@ int main(void)
     RUN_TEST(test_look_at_matches_double);
     RUN_TEST(test_projection_accuracy_target_random_meshes);
     RUN_TEST(test_project_rejects_w_at_or_behind_near);
+    RUN_TEST(test_project_packs_channels_rounded_and_clamped);
     RUN_TEST(test_project_and_clip_refuse_a_hand_filled_xform_out_of_range);
     RUN_TEST(test_prepare_and_clip_report_overflow);
     RUN_TEST(test_emit_culls_by_screen_winding);

@@ -305,7 +305,8 @@ fxl_status_t fxl_pipeline_set_viewport(fxl_pipeline_t *p, int32_t x, int32_t y, 
 typedef struct fxl_clipvert {
     int64_t x, y, w;               /* clip space, q32 */
     fxl_q16_t u, v;
-    int32_t r, g, b;               /* colour channels, 0..255 in q8 (0..65280) */
+    int32_t r, g, b;               /* colour channels, 0..255 in q8 (0..65280;
+                                    * projected as RGB565 rounded, clamped to that range) */
 } fxl_clipvert_t;
 
 /* Everything a draw derives from the pipeline once: the combined matrices
