@@ -24,6 +24,7 @@
 #include "../src/div64.h"
 #include "../src/persp.h"
 #include "../src/clz.h"
+#include "../src/isqrt.h"
 #include "../src/recip_run.h"
 
 #define RANDOM_ITERS 200000
@@ -551,6 +552,48 @@ static void test_sqrt_edges_and_exact_squares(void)
     }
 }
 
+/* The integer root the front end and texgen take (vector lengths): r =
+ * floor(sqrt(x)) over all of uint64, i.e. r^2 <= x < (r + 1)^2, on both
+ * sides of every word boundary of its two halves, around squares, and on
+ * random values of every bit length. */
+static int isqrt_holds(uint64_t x, uint64_t r)
+{
+    if (r > 0xFFFFFFFFu || r * r > x)
+        return 0;
+    return r == 0xFFFFFFFFu || (r + 1u) * (r + 1u) > x;   /* (2^32)^2 exceeds any x */
+}
+
+static void test_isqrt64_is_the_floor_root_everywhere(void)
+{
+    static const uint64_t edges[] = {0u, 1u, 2u, 3u, 4u, 0xFFFFFFFFu, (uint64_t)1 << 32, ((uint64_t)1 << 32) + 1u,
+                                     ((uint64_t)1 << 34) - 1u, UINT64_MAX, UINT64_MAX - 1u,
+                                     (uint64_t)0xFFFFFFFEu << 32, ((uint64_t)0xFFFFFFFEu << 32) + 1u};
+    uint64_t r;
+    size_t i;
+    int k;
+    for (i = 0; i < sizeof edges / sizeof edges[0]; i++) {
+        snprintf(msg, sizeof msg, "x=%llu", (unsigned long long)edges[i]);
+        TEST_ASSERT_TRUE_MESSAGE(isqrt_holds(edges[i], fxl__isqrt64(edges[i])), msg);
+    }
+    for (r = 1; r <= 0xFFFFFFFFu; r += (r >> 10) + 1u) {
+        const uint64_t sq = r * r;
+        int d;
+        for (d = -2; d <= 2; d++) {
+            const uint64_t x = sq + (uint64_t)(int64_t)d;
+            snprintf(msg, sizeof msg, "x=%llu", (unsigned long long)x);
+            TEST_ASSERT_TRUE_MESSAGE(isqrt_holds(x, fxl__isqrt64(x)), msg);
+        }
+    }
+    lcg_seed(0x15C7u);
+    for (k = 0; k < 64; k++) {
+        for (i = 0; i < 4000; i++) {
+            const uint64_t x = (((uint64_t)lcg_next() << 32) | lcg_next()) >> k;
+            snprintf(msg, sizeof msg, "x=%llu", (unsigned long long)x);
+            TEST_ASSERT_TRUE_MESSAGE(isqrt_holds(x, fxl__isqrt64(x)), msg);
+        }
+    }
+}
+
 static void test_sqrt_is_nearest_on_random_values(void)
 {
     int i;
@@ -1061,6 +1104,7 @@ int main(void)
     RUN_TEST(test_recip_matches_reference_on_random_values);
     RUN_TEST(test_sqrt_edges_and_exact_squares);
     RUN_TEST(test_sqrt_is_nearest_on_random_values);
+    RUN_TEST(test_isqrt64_is_the_floor_root_everywhere);
     RUN_TEST(test_clz32_every_single_bit);
     RUN_TEST(test_clz64_every_single_bit);
     RUN_TEST(test_clz_matches_shift_count_on_random_values);
