@@ -99,17 +99,22 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
 
 /* Bit pl set where plane_dist(xf, pl, v) < 0. G w is formed once: through
  * plane_dist it was four 96-bit products a corner, twelve a triangle. */
+int fxl__clip_outcode(const fxl_xform_t *xf, int64_t x, int64_t y, int64_t w)
+{
+    const int64_t gw = guard_w(xf, w);
+    int code = 0;
+    if (w - xf->near_q32 < 0) code |= 1 << PL_NEAR;
+    if (xf->far_q32 != 0 && xf->far_q32 - w < 0) code |= 1 << PL_FAR;
+    if (gw - x < 0) code |= 1 << PL_XP;
+    if (gw + x < 0) code |= 1 << PL_XN;
+    if (gw - y < 0) code |= 1 << PL_YP;
+    if (gw + y < 0) code |= 1 << PL_YN;
+    return code;
+}
+
 static int outcode(const fxl_xform_t *xf, const fxl_clipvert_t *v)
 {
-    const int64_t gw = guard_w(xf, v->w);
-    int code = 0;
-    if (v->w - xf->near_q32 < 0) code |= 1 << PL_NEAR;
-    if (xf->far_q32 != 0 && xf->far_q32 - v->w < 0) code |= 1 << PL_FAR;
-    if (gw - v->x < 0) code |= 1 << PL_XP;
-    if (gw + v->x < 0) code |= 1 << PL_XN;
-    if (gw - v->y < 0) code |= 1 << PL_YP;
-    if (gw + v->y < 0) code |= 1 << PL_YN;
-    return code;
+    return fxl__clip_outcode(xf, v->x, v->y, v->w);
 }
 
 static int in_range(const fxl_clipvert_t *v)

@@ -587,16 +587,6 @@ static int64_t snapped_area2(const fxl_vertex_t *a, const fxl_vertex_t *b, const
     return bx * cy - cx * by; /* |coords| < 2^20 grid units: products < 2^42 */
 }
 
-/* The clipper returns an untouched triangle as its three input vertices in
- * order; a cut one has a vertex on a plane, so some x, y, w differ. */
-static int unclipped(const fxl_clipvert_t in[3], const fxl_clipvert_t poly[3])
-{
-    int k;
-    for (k = 0; k < 3; k++)
-        if (in[k].x != poly[k].x || in[k].y != poly[k].y || in[k].w != poly[k].w) return 0;
-    return 1;
-}
-
 /* Everything about mesh vertex i that does not depend on the triangle:
  * clip position, lit colour, per-vertex texgen data. e->tag is left alone. */
 static fxl_status_t vertex_compute(const fxl_pipeline_t *p, const fxl_xform_t *xf,
@@ -609,6 +599,7 @@ static fxl_status_t vertex_compute(const fxl_pipeline_t *p, const fxl_xform_t *x
     e->x = c.x;
     e->y = c.y;
     e->w = c.w;
+    e->outcode = (uint8_t)fxl__clip_outcode(xf, c.x, c.y, c.w);
     colour = m->color ? m->color[i] : p->material;
     if (p->lighting && m->normal) {
         fxl_vec3_t ne;
@@ -631,29 +622,37 @@ static fxl_status_t vertex_compute(const fxl_pipeline_t *p, const fxl_xform_t *x
     return FXL_OK;
 }
 
-/* Screen vertex k of a triangle that the clipper passed through unchanged
- * (poly[k] is cv[k], so its x, y, inv_w depend on the mesh vertex alone):
- * from the cache entry when it still holds vertex idx and was projected,
- * else projected now and kept. */
-static fxl_status_t project_cached(const fxl_xform_t *xf, fxl_vcache_entry_t *cache, uint32_t ncache,
-                                   uint32_t idx, const fxl_clipvert_t *c, fxl_vertex_t *out)
+/* Screen vertex of a triangle inside every clip plane (so its x, y, inv_w
+ * depend on the mesh vertex alone): from the cache entry when it still
+ * holds vertex idx and was projected, else projected now and kept. The
+ * attributes are the corner's: u, v from c, and the colour as it is
+ * (packing it from q8 channels as the clipper's path does gives back every
+ * RGB565 value unchanged: test_pipeline checks all 65,536). */
+static fxl_status_t project_inside(const fxl_xform_t *xf, fxl_vcache_entry_t *cache, uint32_t ncache,
+                                   uint32_t idx, const fxl_clipvert_t *c, uint16_t colour, fxl_vertex_t *out)
 {
-    fxl_vcache_entry_t *e = &cache[idx < ncache ? idx : idx % ncache];
     fxl_status_t st;
-    if (e->tag == idx && e->projected) {
-        out->x = e->sx;
-        out->y = e->sy;
-        out->inv_w = e->inv_w;
-    } else {
-        if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
-        if (e->tag == idx) { /* not evicted by another corner meanwhile */
-            e->sx = out->x;
-            e->sy = out->y;
-            e->inv_w = out->inv_w;
-            e->projected = 1;
+    if (ncache) {
+        fxl_vcache_entry_t *e = &cache[idx < ncache ? idx : idx % ncache];
+        if (e->tag == idx && e->projected) {
+            out->x = e->sx;
+            out->y = e->sy;
+            out->inv_w = e->inv_w;
+        } else {
+            if ((st = project_pos(xf, c, out)) != FXL_OK) return st;
+            if (e->tag == idx) { /* not evicted by another corner meanwhile */
+                e->sx = out->x;
+                e->sy = out->y;
+                e->inv_w = out->inv_w;
+                e->projected = 1;
+            }
         }
+    } else if ((st = project_pos(xf, c, out)) != FXL_OK) {
+        return st;
     }
-    project_attr(c, out);
+    out->u = c->u;
+    out->v = c->v;
+    out->color = colour;
     return FXL_OK;
 }
 
@@ -682,6 +681,8 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
         fxl_vertex_t scr[FXL_CLIP_MAX_VERTS];
         int32_t vt[3][3];
         uint32_t n, k, idx3[3];
+        uint16_t colour[3];
+        unsigned out_all = 0xFFu, out_any = 0u; /* clip planes all / any corner lies outside */
         for (k = 0; k < 3; k++) {
             /* size_t: 3 t wraps 32 bits past 1.4 x 10^9 triangles (as in
              * fxl_draw_indexed) */
@@ -704,7 +705,9 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
             cv[k].x = e->x;
             cv[k].y = e->y;
             cv[k].w = e->w;
-            unpack_q8(e->color, &cv[k]);
+            colour[k] = e->color;
+            out_all &= e->outcode;
+            out_any |= e->outcode;
             if (m->uv && p->texgen.mode == FXL_TEXGEN_NONE) {
                 cv[k].u = m->uv[idx].u;
                 cv[k].v = m->uv[idx].v;
@@ -720,17 +723,28 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
             fxl__texgen_finish(&p->texgen, (const int32_t(*)[3])vt, tc);
             for (k = 0; k < 3; k++) { cv[k].u = tc[k].u; cv[k].v = tc[k].v; }
         }
-        /* xf is fxl_pipeline_prepare's: the unchecked forms */
-        if ((st = fxl__clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
-        if (n < 3) {
-            if (stats) { stats->triangles++; stats->culled_outside++; }
-            continue;
-        }
-        if (ncache && n == 3 && unclipped(cv, poly)) {
+        if (out_any == 0u) {
+            /* Inside every plane: the clipper would return the corners as
+             * they are. Most triangles of a scene take this path, without
+             * the clipper's copies, q8 colour channels and outcodes. */
+            n = 3;
             for (k = 0; k < 3; k++)
-                if ((st = project_cached(&xf, cache, ncache, idx3[k], &poly[k], &scr[k])) != FXL_OK)
+                if ((st = project_inside(&xf, cache, ncache, idx3[k], &cv[k], colour[k], &scr[k])) != FXL_OK)
                     return st;
         } else {
+            if (out_all == 0u) {
+                /* cut by some plane (xf is fxl_pipeline_prepare's: the
+                 * unchecked forms); the cut vertices are new, so the
+                 * corners' cached projections do not apply */
+                for (k = 0; k < 3; k++) unpack_q8(colour[k], &cv[k]);
+                if ((st = fxl__clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
+            } else {
+                n = 0; /* all three outside one plane */
+            }
+            if (n < 3) {
+                if (stats) { stats->triangles++; stats->culled_outside++; }
+                continue;
+            }
             for (k = 0; k < n; k++)
                 if ((st = project_vertex(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
         }

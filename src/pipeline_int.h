@@ -113,6 +113,12 @@ int fxl__xform_ok(const fxl_xform_t *xf);
  * Cortex-M4 instructions. */
 fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                 fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n);
+/* The clip planes (clip.c) a clip-space position lies outside: bit set
+ * for each plane whose signed distance is negative; 0 inside all of them,
+ * where the clipper returns a triangle unchanged, and a triangle whose
+ * three codes share a bit is outside whole. Positions within
+ * FXL_CLIP_LIMIT_Q32, xf fxl_pipeline_prepare's. */
+int fxl__clip_outcode(const fxl_xform_t *xf, int64_t x, int64_t y, int64_t w);
 /* sin and cos of a in q30 (|error| <= 2^-21 + 2^-29). */
 void fxl__sincos_q30(fxl_angle_t a, int32_t *s, int32_t *c);
 /* The same for an angle in 2^-17 turns (any uint32, wraps): half of an

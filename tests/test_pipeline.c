@@ -587,8 +587,9 @@ static void test_project_rejects_w_at_or_behind_near(void)
 
 /* The colour of a projected vertex: each channel (0..255 in q8) rounded
  * to 5 or 6 bits, round(c (2^bits - 1) / 65280), for every value in range;
- * outside it clamped (a negative channel once packed as full intensity
- * through a truncating division and an unsigned cast). */
+ * every RGB565 colour survives the trip through q8 channels; outside the
+ * range channels are clamped (a negative channel once packed as full
+ * intensity through a truncating division and an unsigned cast). */
 static void test_project_packs_channels_rounded_and_clamped(void)
 {
     fxl_pipeline_t p;
@@ -609,6 +610,17 @@ static void test_project_packs_channels_rounded_and_clamped(void)
         c.b = 65280 - ch;
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
         TEST_ASSERT_EQUAL_HEX16((r5 << 11) | (g6 << 5) | b5, out.color);
+    }
+    /* Every RGB565 colour as q8 channels (round(c 65280 / (2^bits - 1)),
+     * as the mesh path carries a vertex colour through the clipper) packs
+     * back to itself: the mesh path's triangles inside every clip plane
+     * keep the colour as it is (pipeline.c, project_inside). */
+    for (i = 0; i < 65536u; i++) {
+        c.r = (int32_t)floor((double)(i >> 11) * 65280.0 / 31.0 + 0.5);
+        c.g = (int32_t)floor((double)((i >> 5) & 63u) * 65280.0 / 63.0 + 0.5);
+        c.b = (int32_t)floor((double)(i & 31u) * 65280.0 / 31.0 + 0.5);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+        TEST_ASSERT_EQUAL_HEX16(i, out.color);
     }
     for (i = 0; i < sizeof beyond / sizeof beyond[0]; i++) {
         const uint16_t want = beyond[i] < 0 ? 0x0000u : 0xFFFFu;

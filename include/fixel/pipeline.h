@@ -261,6 +261,7 @@ typedef struct fxl_vcache_entry {
     uint32_t tag;                  /* mesh vertex held, FXL_VCACHE_EMPTY if none */
     uint16_t color;                /* lit RGB565 */
     uint8_t projected;             /* sx, sy, inv_w are valid */
+    uint8_t outcode;               /* clip planes it lies outside (in the padding) */
 } fxl_vcache_entry_t;
 
 #define FXL_VCACHE_EMPTY 0xFFFFFFFFu
