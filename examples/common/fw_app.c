@@ -180,6 +180,7 @@ fxl_status_t fw_app_frame(fw_app_t *a, int scene, uint32_t frame, fw_result_t *r
      * empty, not the previous frame's triangles with a half-set draw */
     st = fxl_band_begin(&a->band);
     if (st == FXL_OK) st = fw_scene_setup(&a->scenes, scene, frame, a->panel.width, a->panel.height, &a->view);
+    if (st == FXL_OK) st = fxl_pipeline_set_vertex_cache(&a->view.pipe, a->vcache, FW_VCACHE_ENTRIES);
     ctx.band = &a->band;
     ctx.draw = &a->view.draw;
     ctx.count = 0;

@@ -17,7 +17,7 @@
  * a full-frame fxl_mesh_draw render).
  *
  * Freestanding C99, no libc, no global mutable state: everything lives in
- * the caller's fw_app_t (about 113 KB; make it static).
+ * the caller's fw_app_t (about 115 KB; make it static).
  */
 #ifndef FW_APP_H
 #define FW_APP_H
@@ -33,6 +33,11 @@
 /* Bins for three bands per triangle on average; beyond that the band
  * renderer's fallback scan keeps the image identical (port.h). */
 #define FW_BIN_CAP FXL_BAND_BIN_ENTRIES(FW_BANDS, 3 * FW_TRI_CAP)
+/* The front end's vertex cache: two of the sphere's rings (its triangles
+ * are indexed ring by ring), 34 entries of 56 bytes. Each vertex is then
+ * transformed, lit and texgen'd about once a frame instead of once per
+ * corner (pipeline.md, "Vertex cache"); the output is bit-identical. */
+#define FW_VCACHE_ENTRIES (2 * (FW_SPHERE_SLICES + 1))
 
 typedef struct fw_spi {
     uint32_t table[256];          /* CRC-32 byte table, built at init */
@@ -58,6 +63,7 @@ typedef struct fw_app {
 #endif
     fxl_band_tri_t tris[FW_TRI_CAP];
     fxl_band_bin_t bins[FW_BIN_CAP];
+    fxl_vcache_entry_t vcache[FW_VCACHE_ENTRIES];
     uint32_t init_crc, init_bytes; /* the panel init sequence on the wire */
 } fw_app_t;
 

@@ -14,7 +14,7 @@
 
 #include "mps2.h"
 
-static fw_app_t app; /* ~113 KB: bands, depth band, triangle store, textures */
+static fw_app_t app; /* ~115 KB: bands, depth band, triangle store, textures, vertex cache */
 
 static void out(const char *s)
 {
