@@ -538,6 +538,39 @@ typedef struct point {
     int32_t g;               /* q_x / q, q28 (quadratic segments only) */
 } point_t;
 
+/* Every field of p 0, as plain stores: `= {0}` on the generic walk's two
+ * points and its planes was three memset calls a span (GCC's choice at -O2
+ * and -Os; one for the reciprocal-run walk's segment), ~150 bytes that a
+ * byte-wise memset (the firmware examples') took ~700 instructions over:
+ * Cortex-M4 -Os cube bilinear 182.95 -> 163.18 instructions a pixel in the
+ * bench firmware. */
+static inline void point_zero(point_t *p)
+{
+    p->a[FXL__AU] = p->a[FXL__AV] = 0u;
+    p->a[FXL__AR] = p->a[FXL__AG] = p->a[FXL__AB] = 0u;
+    p->z = 0u;
+    p->u64 = p->v64 = 0;
+    p->g = 0;
+}
+
+/* Every field of seg 0 (the same plain stores for the walks' segments) */
+static inline void seg_zero(fxl__seg_t *seg)
+{
+    seg->dst = seg->zb = 0;
+    seg->n = 0;
+    seg->u = seg->v = 0u;
+    seg->du = seg->dv = seg->ddu = seg->ddv = 0;
+    seg->z = 0u;
+    seg->dz = 0;
+    seg->c[0] = seg->c[1] = seg->c[2] = 0u;
+    seg->dc[0] = seg->dc[1] = seg->dc[2] = 0;
+    seg->lvl = seg->lvl2 = 0;
+    seg->u2 = seg->v2 = 0u;
+    seg->du2 = seg->dv2 = 0;
+    seg->lod_frac_q8 = 0u;
+    seg->lod_q8 = 0;
+}
+
 static inline uint32_t sat_u32(int64_t x)
 {
     return x < 0 ? 0u : (x > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)x);
@@ -2321,7 +2354,7 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
     int64_t sz = fxl__rr_plane(tri, &tri->z, cl, dY);
     int32_t idx = (row - tg->origin_y) * tg->stride + (cl - tg->origin_x);
     uint32_t written = 0;
-    fxl__seg_t seg = {0};
+    fxl__seg_t seg;
     fxl__rr_t rr;
     int32_t x;
 #if FXL_HAVE_MIPMAP
@@ -2330,6 +2363,7 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
     fxl__rr_seek(tri, dY, xl, cl, &rr);
 #endif
 
+    seg_zero(&seg);
     seg.lvl = &tri->level[0];
     seg.n = 1;
     for (x = cl; x < cr; x++) {
@@ -2378,14 +2412,14 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
 static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                               int32_t cl, int32_t cr)
 {
-    int64_t pv[NPLANES] = {0};   /* planes past np stay 0 (and -O3 sees them set) */
+    int64_t pv[NPLANES];         /* planes past np are 0 (set below, and -O3 sees them set) */
     const int32_t Yc = row * FXL__ONE + FXL__HALF;
     const fxl_target_t *tg = tri->target;
     const int np = tri->np;
     /* Affine spans are cut every FXL_PERSP_MAX pixels too (see raster.c). */
     const int k = tri->seg_log2;
     int32_t x, i;
-    point_t p0 = {0}, p1 = {0};
+    point_t p0, p1;
     fxl__seg_t seg;
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
@@ -2405,24 +2439,17 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         x = FXL__AUTO_LOD_GRID(x, xl);
 #endif
 #endif
-    for (i = 0; i < np; i++)
-        pv[i] = fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc);
+    for (i = 0; i < NPLANES; i++)
+        pv[i] = i < np ? fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc) : 0;
+    point_zero(&p0);
+    point_zero(&p1);
     correct(tri, pv, &p0);
 #if FXL_HAVE_MIPMAP
     int32_t lod_held = 0;   /* AUTO: the LOD of the latest grid point */
 #endif
 
+    seg_zero(&seg);
     seg.lvl = fxl__has_uv(tri) ? &tri->level[0] : 0;
-    seg.lvl2 = 0;
-    seg.u2 = seg.v2 = 0;
-    seg.du2 = seg.dv2 = 0;
-    seg.lod_frac_q8 = 0;
-    seg.lod_q8 = 0;
-    seg.c[0] = seg.c[1] = seg.c[2] = 0;
-    seg.dc[0] = seg.dc[1] = seg.dc[2] = 0;
-    seg.u = seg.v = 0;
-    seg.du = seg.dv = 0;
-    seg.ddu = seg.ddv = 0;
 
     while (x < cr) {
         int32_t n, div, a, b, off;
