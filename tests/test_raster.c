@@ -2204,6 +2204,74 @@ void test_fast_loops_match_generic_loop(void)
     TEST_ASSERT_TRUE(compared > 0);
 }
 
+/* MODULATE draws of RGB565 repeat textures take their own pixel loop in
+ * speed builds (span.c, seg_modulate) inside the generic walk; every pixel
+ * and depth value must be seg_generic's (reached through a colour key no
+ * texel has): flat and Gouraud colours, point and bilinear, no mips, the
+ * nearest level and two levels blended, affine, subdivided, exact and
+ * AUTO (its quadratic segments step du, dv), with depth or without, both
+ * byte orders, with and without a clip rectangle. In size builds both
+ * passes are seg_generic. */
+void test_modulate_loop_matches_generic_loop(void)
+{
+    enum { NT = 16, TW = 32, TH = 16, NTEX = TW * TH * 4 / 3 + 1 };
+    static uint16_t texels[NTEX], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
+    static const int16_t persp[4] = {FXL_PERSP_AFFINE, 16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
+    static fxl_vertex_t tris[NT][3];
+    fxl_texture_t tex, keyed;
+    fxl_draw_t d, dg;
+    char msg[200];
+    int i, k, cfg, compared = 0, covered = 0;
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    for (i = 0; i < NTEX; i++)   /* never 0x0001, the key below */
+        texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565,
+                                                   FXL_HAVE_MIPMAP ? 6u : 1u));
+    keyed = tex;
+    keyed.flags |= FXL_TEXF_KEY;
+    keyed.key = 0x0001u;
+    lcg_state = 4242u;
+    for (k = 0; k < NT; k++)
+        for (i = 0; i < 3; i++) {
+            /* texels a pixel from ~1/4 to ~4 (the levels), vertex colours anywhere */
+            const double span = k % 2 ? 4.0 : 0.3;
+            tris[k][i] = test_vertex(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
+                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-span, span),
+                                     rnd_range(-span, span), (uint16_t)(rnd() & 0xFFFFu));
+        }
+    for (cfg = 0; cfg < 4 * 2 * 2 * 2 * 2 * 3 * 2; cfg++) {
+        const int pm = cfg % 4, depth = (cfg / 4) & 1, swap = (cfg / 8) & 1, clip = (cfg / 16) & 1;
+        const int bil = (cfg / 32) & 1, mip = (cfg / 64) % 3, gouraud = cfg / 192;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        const fxl_rect_t cr = {5, 3, W - 7, H - 2};
+        fxl_draw_defaults(&d);
+        d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.persp = persp[pm];
+        d.mip = (uint8_t)(mip == 2 ? FXL_MIP_LINEAR : mip == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
+        d.texenv = FXL_TEXENV_MODULATE;
+        d.shade = (uint8_t)(gouraud ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
+        d.color = 0xB5D3u;
+        d.texture = &tex;
+        if (!depth)
+            d.depth = 0;
+        dg = d;
+        dg.texture = &keyed;
+        if (left_out_feature(&d, &tex, fmt, depth) != NULL || left_out_feature(&dg, &keyed, fmt, depth) != NULL)
+            continue;   /* refusals: test_left_out_features_are_refused */
+        for (k = 0; k < NT; k++) {
+            snprintf(msg, sizeof msg, "bilinear %d mip %d gouraud %d persp %d depth %d swap %d clip %d triangle %d",
+                     bil, mip, gouraud, persp[pm], depth, swap, clip, k);
+            covered += draw_fast_and_generic(&d, &dg, tris[k], W, H, fmt, depth, clip ? &cr : NULL, fast, zfast,
+                                             gen, zgen, msg);
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws compared, %d pixels", compared, covered);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+    TEST_ASSERT_TRUE(covered > 100 * compared);
+}
+
 /* Spans on one texel row (q and v constant along every row: span_fast.h's
  * FXL_T_LROW) against the generic walk, pixel, depth value and the pixels
  * the stats count: wide spans (up to 300 pixels) for many segments of
@@ -3340,6 +3408,7 @@ int main(void)
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
     RUN_TEST(test_fast_loops_match_generic_loop);
+    RUN_TEST(test_modulate_loop_matches_generic_loop);
     RUN_TEST(test_level_row_walk_matches_generic);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
