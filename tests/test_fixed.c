@@ -989,10 +989,13 @@ static void test_div_ffffffff_table_is_exact(void)
         }
 }
 
+/* both of fxl__sdiv64's forms on 32-bit cores: the size builds' loop and
+ * the magnitudes' division (Cortex-M3/M4/M7 speed builds) */
 static void check_sdiv64_loop(int64_t n, int64_t d)
 {
     snprintf(msg, sizeof msg, "n=%lld d=%lld", (long long)n, (long long)d);
     TEST_ASSERT_TRUE_MESSAGE(fxl__sdiv64_loop(n, d) == n / d, msg);
+    TEST_ASSERT_TRUE_MESSAGE(fxl__sdiv64_mag(n, d) == n / d, msg);
 }
 
 /* The log2 table is round(256 log2(1 + i / 256)), and the size builds'
@@ -1046,7 +1049,7 @@ static void test_rr_recip_within_its_bound(void)
 #endif
 }
 
-static void test_sdiv64_loop_truncates_like_c_division(void)
+static void test_sdiv64_forms_truncate_like_c_division(void)
 {
     static const int64_t edge[] = {1, -1, 2, -2, 7, -7, INT32_MAX, INT32_MIN, INT64_MAX, -INT64_MAX, INT64_MIN};
     const int ne = (int)(sizeof edge / sizeof edge[0]);
@@ -1059,6 +1062,10 @@ static void test_sdiv64_loop_truncates_like_c_division(void)
     TEST_ASSERT_TRUE(fxl__sdiv64_loop(INT64_MIN, -1) == INT64_MAX);
     check_sdiv64_loop(-6, 7);   /* truncation toward zero, not floor */
     check_sdiv64_loop(6, -7);
+    check_sdiv64_loop(INT64_MIN, 1);   /* a quotient of magnitude 2^63 */
+    check_sdiv64_loop(INT64_MIN + 1, -1);
+    check_sdiv64_loop(-((int64_t)1 << 40) - 5, 16);   /* a segment step: a long by a length */
+    check_sdiv64_loop(((int64_t)1 << 40) + 5, 13);
     lcg_seed(0x5D1F64u);
     for (i = 0; i < RANDOM_ITERS; i++) {
         const int64_t n = rand_i64_wide(), d = rand_i64_wide();
@@ -1126,6 +1133,6 @@ int main(void)
     RUN_TEST(test_log2_frac_table_and_its_computed_form);
 #endif
     RUN_TEST(test_rr_recip_within_its_bound);
-    RUN_TEST(test_sdiv64_loop_truncates_like_c_division);
+    RUN_TEST(test_sdiv64_forms_truncate_like_c_division);
     return UNITY_END();
 }
