@@ -152,14 +152,24 @@ static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
 {
 #if FXL_SMALL_DIV64
     return fxl__sdiv64_loop(n, d);
-#elif FXL__DIV64_BY32
-    /* two UDIVs when |d| fits 32 bits (the generic walk's segment steps,
-     * divided by a length), where C's `/` is the runtime's general 64-bit
-     * division: ~100 Cortex-M4 instructions, 0.38 M of the firmware
-     * example's lit frame at -O2 */
-    return fxl__sdiv64_mag(n, d);
 #else
     return n / d;
+#endif
+}
+
+/* fxl__sdiv64 for a divisor known to fit 32 bits, called often (the
+ * generic walk's segment steps, divided by a length): on cores with UDIV
+ * two of them instead of the runtime's general 64-bit division (~100
+ * Cortex-M4 instructions; 0.38 M of the firmware example's lit frame at
+ * -O2). Elsewhere fxl__sdiv64 stays: inline in set-up's gradient, where
+ * its rare general path takes it, this form cost the small triangles'
+ * fast path ~11 Cortex-M4 instructions a triangle. */
+static inline int64_t fxl__sdiv64_small(int64_t n, int32_t d)
+{
+#if FXL__DIV64_BY32
+    return fxl__sdiv64_mag(n, d);
+#else
+    return fxl__sdiv64(n, d);
 #endif
 }
 

@@ -772,7 +772,7 @@ static inline int64_t step_of(int64_t diff, int32_t div)
 {
     if (div <= 0)
         return 0;
-    return fxl__sdiv64(diff, div);   /* truncation: stepping never overshoots the endpoint */
+    return fxl__sdiv64_small(diff, div);   /* truncation: stepping never overshoots the endpoint */
 }
 
 static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
