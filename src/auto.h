@@ -429,7 +429,7 @@ static FXL__QUAD_INLINE uint32_t fxl__quad_axis(int32_t d, int32_t gbar, int32_t
         const int32_t lo = fxl__i32_of_bits((uint32_t)(uint64_t)num);
         *ddu = (uint32_t)ddv;
         return (int32_t)fxl__asr64(num, 32) == fxl__asr32(lo, 31) ? (uint32_t)(lo / len)
-                                                                  : (uint32_t)(uint64_t)fxl__sdiv64(num, len);
+                                                                  : (uint32_t)(uint64_t)fxl__sdiv64_small(num, len);
     }
 }
 

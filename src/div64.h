@@ -158,7 +158,8 @@ static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
 }
 
 /* fxl__sdiv64 for a divisor known to fit 32 bits, called often (the
- * generic walk's segment steps, divided by a length): on cores with UDIV
+ * generic walk's segment steps and AUTO's quadratic ones, divided by a
+ * length): on cores with UDIV
  * two of them instead of the runtime's general 64-bit division (~100
  * Cortex-M4 instructions; 0.38 M of the firmware example's lit frame at
  * -O2). Elsewhere fxl__sdiv64 stays: inline in set-up's gradient, where
