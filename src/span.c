@@ -466,6 +466,20 @@ static uint32_t modulate565(uint32_t t, uint32_t c)
     return (r << 11) | (g << 5) | b;
 }
 
+/* One pixel's steps in a segment loop (seg_generic, seg_modulate): u, v
+ * (whose steps change in quadratic segments), the second level's u2, v2,
+ * z and the Gouraud channels, from the segment s. */
+#if FXL_HAVE_QUAD
+#define SEG_ADVANCE()                                                                                       \
+    (u += du, v += dv, du += (uint32_t)s->ddu, dv += (uint32_t)s->ddv, u2 += (uint32_t)s->du2,            \
+     v2 += (uint32_t)s->dv2, z += (uint32_t)s->dz, c0 += (uint32_t)s->dc[0], c1 += (uint32_t)s->dc[1],    \
+     c2 += (uint32_t)s->dc[2])
+#else
+#define SEG_ADVANCE()                                                                                       \
+    (u += du, v += dv, u2 += (uint32_t)s->du2, v2 += (uint32_t)s->dv2, z += (uint32_t)s->dz,              \
+     c0 += (uint32_t)s->dc[0], c1 += (uint32_t)s->dc[1], c2 += (uint32_t)s->dc[2])
+#endif
+
 static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
@@ -507,18 +521,7 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
                 written++;
             }
         }
-        u += du;
-        v += dv;
-#if FXL_HAVE_QUAD
-        du += (uint32_t)s->ddu;   /* quadratic segments */
-        dv += (uint32_t)s->ddv;
-#endif
-        u2 += (uint32_t)s->du2;
-        v2 += (uint32_t)s->dv2;
-        z += (uint32_t)s->dz;
-        c0 += (uint32_t)s->dc[0];
-        c1 += (uint32_t)s->dc[1];
-        c2 += (uint32_t)s->dc[2];
+        SEG_ADVANCE();
     }
     return written;
 }
@@ -584,18 +587,7 @@ static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
                 s->zb[i] = (uint16_t)zz;
             written++;
         }
-        u += du;
-        v += dv;
-#if FXL_HAVE_QUAD
-        du += (uint32_t)s->ddu;   /* quadratic segments */
-        dv += (uint32_t)s->ddv;
-#endif
-        u2 += (uint32_t)s->du2;
-        v2 += (uint32_t)s->dv2;
-        z += (uint32_t)s->dz;
-        c0 += (uint32_t)s->dc[0];
-        c1 += (uint32_t)s->dc[1];
-        c2 += (uint32_t)s->dc[2];
+        SEG_ADVANCE();
     }
     return written;
 }
