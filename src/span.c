@@ -466,6 +466,15 @@ static uint32_t modulate565(uint32_t t, uint32_t c)
     return (r << 11) | (g << 5) | b;
 }
 
+/* A segment loop's running values (seg_generic, seg_modulate), from the
+ * segment s, and its depth modes. */
+#define SEG_LOCALS()                                                                                        \
+    uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;                                        \
+    uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;                                                  \
+    uint32_t c0 = s->c[0], c1 = s->c[1], c2 = s->c[2];                                                    \
+    uint32_t written = 0;                                                                                 \
+    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write
+
 /* One pixel's steps in a segment loop (seg_generic, seg_modulate): u, v
  * (whose steps change in quadratic segments), the second level's u2, v2,
  * z and the Gouraud channels, from the segment s. */
@@ -483,12 +492,8 @@ static uint32_t modulate565(uint32_t t, uint32_t c)
 static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
-    uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;
-    uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;
-    uint32_t c0 = s->c[0], c1 = s->c[1], c2 = s->c[2];
-    uint32_t written = 0;
+    SEG_LOCALS();
     int32_t i;
-    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write;
 
     for (i = 0; i < s->n; i++) {
         uint32_t zz = z >> 16, out, col;
@@ -563,12 +568,8 @@ static FXL__HOT_INLINE uint32_t sample_repeat(const fxl__level_t *lv, uint32_t u
 static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
-    uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;
-    uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;
-    uint32_t c0 = s->c[0], c1 = s->c[1], c2 = s->c[2];
-    uint32_t written = 0;
+    SEG_LOCALS();
     int32_t i;
-    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write;
     const int bilinear = d->filter == FXL_FILTER_BILINEAR, gouraud = fxl__has_color(tri);
     const int blend = s->lvl2 && s->lod_frac_q8 != 0u;
     const unsigned osh = tri->swap ? 8u : 0u;
