@@ -541,12 +541,13 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
  * frame 11.5 M -> 7.2 M). seg_modulate is seg_generic for the draws fxl__pick_seg_fn
  * gives it (RGB565, no key, repeat on both axes, MODULATE), with the texel
  * read the fast loops' way (a mask, no function); the same arithmetic
- * otherwise, so the same pixels (test_span_modes compares it with
+ * otherwise, so the same pixels (test_raster compares it with
  * seg_generic on the same draws through an unused colour key). Speed
  * builds only: it is flash a size build would rather keep. */
 static FXL__HOT_INLINE uint32_t texel_repeat(const fxl__level_t *lv, int32_t x, int32_t y)
 {
-    const uint32_t xm = (uint32_t)x & ((1u << lv->log2_w) - 1u), ym = (uint32_t)y & ((1u << lv->log2_h) - 1u);
+    const uint32_t xm = (uint32_t)fxl__wrap(x, lv->log2_w, FXL_WRAP_REPEAT);
+    const uint32_t ym = (uint32_t)fxl__wrap(y, lv->log2_h, FXL_WRAP_REPEAT);
     return ((const uint16_t *)lv->texels)[(ym << lv->log2_w) + xm];
 }
 
@@ -593,13 +594,6 @@ static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
     return written;
 }
 
-/* Does tri's draw take seg_modulate? (texture coordinates present) */
-static int modulate_fits(const fxl__tri_t *tri)
-{
-    const fxl_texture_t *t = tri->tex;
-    return tri->draw->texenv == FXL_TEXENV_MODULATE && t->format == FXL_TEXFMT_RGB565 &&
-           !(t->flags & FXL_TEXF_KEY) && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT;
-}
 #endif
 #endif /* FXL_HAVE_GENERIC */
 
@@ -2340,6 +2334,14 @@ static const struct {
     TWO(1, 1, 1, tri_z_swap),
 };
 
+/* The textures the fast pixel loops read directly: RGB565, repeat on both
+ * axes, no colour key (fxl__fast_id's walks, seg_modulate). */
+static int tex_repeat565(const fxl_texture_t *t)
+{
+    return t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
+           !(t->flags & FXL_TEXF_KEY);
+}
+
 int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear)
 {
     const fxl_texture_t *t = d->texture;
@@ -2347,8 +2349,7 @@ int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear
     const int zmode = target->depth && (d->depth & both);
     int id;
 
-    if (!(t && t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
-          !(t->flags & FXL_TEXF_KEY) && d->texenv == FXL_TEXENV_REPLACE && t->log2_w + t->log2_h <= 16 &&
+    if (!(t && tex_repeat565(t) && d->texenv == FXL_TEXENV_REPLACE && t->log2_w + t->log2_h <= 16 &&
           (!zmode || (d->depth & both) == both)))
         return 0;
     id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) +
@@ -2364,7 +2365,8 @@ fxl__seg_fn fxl__pick_seg_fn(const fxl__tri_t *tri)
     if (id)
         return fast_tab[id].seg;
 #if FXL_HAVE_GENERIC && FXL__FAST_SPANS
-    if (fxl__has_uv(tri) && modulate_fits(tri))
+    /* MODULATE draws of those textures: their own pixel loop */
+    if (fxl__has_uv(tri) && tri->draw->texenv == FXL_TEXENV_MODULATE && tex_repeat565(tri->tex))
         return seg_modulate;
 #endif
     return SEG_GENERIC;

@@ -2121,6 +2121,37 @@ void test_row_const_walk_matches_generic(void)
         TEST_ASSERT_EQUAL_INT(8 * 4 * 2 * NT / (FXL_HAVE_BILINEAR ? 1 : 2) / (FXL_HAVE_DEPTH ? 1 : 2), compared);
 }
 
+/* n texels none of which is 0x0001, and keyed: tex with that colour key,
+ * which no texel matches, so its draws take the generic loop (seg_generic)
+ * and leave every pixel as it is. */
+static void fill_unkeyed(uint16_t *texels, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+}
+
+static void keyed_twin_texture(const fxl_texture_t *tex, fxl_texture_t *keyed)
+{
+    *keyed = *tex;
+    keyed->flags |= FXL_TEXF_KEY;
+    keyed->key = 0x0001u;
+}
+
+/* d with tex (and no depth buffer unless depth), and dg the same draw
+ * through keyed. 0 when the build left out something either needs
+ * (refusals: test_left_out_features_are_refused). */
+static int keyed_twin_draws(fxl_draw_t *d, fxl_draw_t *dg, const fxl_texture_t *tex, const fxl_texture_t *keyed,
+                            fxl_pixfmt_t fmt, int depth)
+{
+    d->texture = tex;
+    if (!depth)
+        d->depth = 0;
+    *dg = *d;
+    dg->texture = keyed;
+    return left_out_feature(d, tex, fmt, depth) == NULL && left_out_feature(dg, keyed, fmt, depth) == NULL;
+}
+
 /* The pixel loops of the specialised walks against the generic loop
  * (seg_generic with fxl__bilerp565; reached here through a colour key no
  * texel has, which leaves every pixel as it is). Two kinds of triangle:
@@ -2145,12 +2176,9 @@ void test_fast_loops_match_generic_loop(void)
     char msg[200];
     int i, j, k, cfg, compared = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
-    for (i = 0; i < 32 * 16; i++)   /* never 0x0001, the key below */
-        texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    fill_unkeyed(texels, 32 * 16);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 32, 16, FXL_TEXFMT_RGB565, 1));
-    keyed = tex;
-    keyed.flags |= FXL_TEXF_KEY;
-    keyed.key = 0x0001u;
+    keyed_twin_texture(&tex, &keyed);
     lcg_state = 777u;
     for (k = 0; k < NT; k++) {
         const double scale = k % 4 == 0 ? 0.125 : k % 4 == 1 ? 0.5 : k % 4 == 2 ? 2.0 : 4.0; /* texels a pixel */
@@ -2185,13 +2213,8 @@ void test_fast_loops_match_generic_loop(void)
         fxl_draw_defaults(&d);
         d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
         d.persp = persp[pm];
-        d.texture = &tex;
-        if (!depth)
-            d.depth = 0;
-        dg = d;
-        dg.texture = &keyed;
-        if (left_out_feature(&d, &tex, fmt, depth) != NULL || left_out_feature(&dg, &keyed, fmt, depth) != NULL)
-            continue;   /* refusals: test_left_out_features_are_refused */
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, fmt, depth))
+            continue;
         for (k = 0; k < NT; k++) {
             snprintf(msg, sizeof msg, "bilinear %d persp %d depth %d swap %d clip %d triangle %d", bil, persp[pm],
                      depth, swap, clip, k);
@@ -2223,13 +2246,10 @@ void test_modulate_loop_matches_generic_loop(void)
     char msg[200];
     int i, k, cfg, compared = 0, covered = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
-    for (i = 0; i < NTEX; i++)   /* never 0x0001, the key below */
-        texels[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    fill_unkeyed(texels, NTEX);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565,
                                                    FXL_HAVE_MIPMAP ? 6u : 1u));
-    keyed = tex;
-    keyed.flags |= FXL_TEXF_KEY;
-    keyed.key = 0x0001u;
+    keyed_twin_texture(&tex, &keyed);
     lcg_state = 4242u;
     for (k = 0; k < NT; k++)
         for (i = 0; i < 3; i++) {
@@ -2251,13 +2271,8 @@ void test_modulate_loop_matches_generic_loop(void)
         d.texenv = FXL_TEXENV_MODULATE;
         d.shade = (uint8_t)(gouraud ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
         d.color = 0xB5D3u;
-        d.texture = &tex;
-        if (!depth)
-            d.depth = 0;
-        dg = d;
-        dg.texture = &keyed;
-        if (left_out_feature(&d, &tex, fmt, depth) != NULL || left_out_feature(&dg, &keyed, fmt, depth) != NULL)
-            continue;   /* refusals: test_left_out_features_are_refused */
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, fmt, depth))
+            continue;
         for (k = 0; k < NT; k++) {
             snprintf(msg, sizeof msg, "bilinear %d mip %d gouraud %d persp %d depth %d swap %d clip %d triangle %d",
                      bil, mip, gouraud, persp[pm], depth, swap, clip, k);
@@ -2295,17 +2310,13 @@ void test_level_row_walk_matches_generic(void)
     int i, k, cfg, compared = 0;
     uint32_t hidden = 0, drawn_z = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
-    for (i = 0; i < 256 * 8; i++)   /* never 0x0001, the key below */
-        tex_wide[i] = (uint16_t)((i * 2654435761u >> 16) | 0x0802u);
+    fill_unkeyed(tex_wide, 256 * 8);
     for (i = 0; i < 64; i++)
         tex_col[i] = (uint16_t)((i * 40503u) | 0x0802u);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[0], tex_wide, 256, 8, FXL_TEXFMT_RGB565, 1));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex[1], tex_col, 1, 64, FXL_TEXFMT_RGB565, 1));
-    for (i = 0; i < 2; i++) {
-        keyed[i] = tex[i];
-        keyed[i].flags |= FXL_TEXF_KEY;
-        keyed[i].key = 0x0001u;
-    }
+    for (i = 0; i < 2; i++)
+        keyed_twin_texture(&tex[i], &keyed[i]);
     lcg_state = 4242u;
     for (k = 0; k < NT; k++) {
         /* texels a pixel along u, either direction */
