@@ -458,7 +458,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
 }
 
 /* Per-channel t * (c + 1) >> bits: white leaves the texel unchanged. */
-static uint32_t modulate565(uint32_t t, uint32_t c)
+static FXL__HOT_INLINE uint32_t modulate565(uint32_t t, uint32_t c)
 {
     uint32_t r = (((t >> 11) & 31u) * (((c >> 11) & 31u) + 1u)) >> 5;
     uint32_t g = (((t >> 5) & 63u) * (((c >> 5) & 63u) + 1u)) >> 6;
@@ -537,8 +537,10 @@ static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
  * modulated by a flat colour or by Gouraud colours took seg_generic, whose
  * pixel runs sample() and four fetch() calls with their format, wrap and
  * key cases: ~400 Cortex-M4 instructions a pixel of the firmware example's
- * lit sphere (bilinear, nearest level, -O2), ~160 in seg_modulate (the
- * frame 11.5 M -> 7.2 M). seg_modulate is seg_generic for the draws fxl__pick_seg_fn
+ * lit sphere (bilinear, nearest level, -O2), ~160 in seg_modulate's first
+ * form (the frame 11.5 M -> 7.2 M), ~87 in its specialised copies below
+ * (seg_modulate_plain; 160 with bl_sample forced inline, which spilled the
+ * steps). seg_modulate is seg_generic for the draws fxl__pick_seg_fn
  * gives it (RGB565, no key, repeat on both axes, MODULATE), with the texel
  * read the fast loops' way (a mask, no function); the same arithmetic
  * otherwise, so the same pixels (test_raster compares it with
@@ -566,7 +568,81 @@ static FXL__HOT_INLINE uint32_t sample_repeat(const fxl__level_t *lv, uint32_t u
     return texel_repeat(lv, (int32_t)(u >> 16), (int32_t)(v >> 16));
 }
 
-static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
+/* The common segment of seg_modulate, with the filter, the shading and
+ * the depth mode constant: one level, affine steps (no level blend, no
+ * quadratic segment), depth tested and written or not used, so the loop
+ * steps u, v, z and the colours alone and keeps them in registers.
+ * - Bilinear samples go through the fast loops' footprint cache where
+ *   those are built (bl_sample, the fxl__bilerp565 bits in expanded form):
+ *   the 2x2 footprint is fetched once for the pixels that share it, not
+ *   four wrapped fetches a pixel; the channels are modulated from the
+ *   expanded form (the same bits compact565 would gather).
+ * - A Gouraud channel at a pixel is c >> 16 exactly as seg_generic packs
+ *   it: the corrections clamp each channel to its maximum (31 << 16 or
+ *   63 << 16) and the steps, truncated toward zero, never pass the
+ *   segment's end, so no channel reaches the next one's bits. The
+ *   channels are stepped with the + 1 of modulate565 already added. */
+static FXL__HOT_INLINE uint32_t modulate_ch(uint32_t r, uint32_t g, uint32_t b, uint32_t r1, uint32_t g1,
+                                            uint32_t b1)
+{
+    return (((r * r1) >> 5) << 11) | (((g * g1) >> 6) << 5) | ((b * b1) >> 5);
+}
+
+static FXL__HOT_INLINE uint32_t seg_modulate_plain(const fxl__tri_t *tri, const fxl__seg_t *s, const int bilinear,
+                                                   const int gouraud, const int depth)
+{
+    const fxl__level_t *lv = s->lvl;
+    const uint32_t one = 0x10000u;   /* modulate565's + 1, in q16 */
+    uint32_t u = s->u, v = s->v, z = s->z, c0 = s->c[0] + one, c1 = s->c[1] + one, c2 = s->c[2] + one;
+    const uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv, dz = (uint32_t)s->dz;
+    const uint32_t dc0 = (uint32_t)s->dc[0], dc1 = (uint32_t)s->dc[1], dc2 = (uint32_t)s->dc[2];
+    const uint32_t flat = tri->draw->color;
+    const uint32_t fr = ((flat >> 11) & 31u) + 1u, fg = ((flat >> 5) & 63u) + 1u, fb = (flat & 31u) + 1u;
+    uint16_t *const dst = s->dst, *const zb = s->zb;
+    const unsigned osh = tri->swap ? 8u : 0u;
+    uint32_t written = 0;
+    int32_t i;
+#if FXL__V_ANY_BL
+    bl_t L;
+    if (bilinear)
+        bl_init(&L, lv, u, v);
+#endif
+
+    for (i = 0; i < s->n; i++) {
+        const uint32_t zz = z >> 16;
+        if (!depth || zz > zb[i]) {
+            const uint32_t r1 = gouraud ? c0 >> 16 : fr, g1 = gouraud ? c1 >> 16 : fg, b1 = gouraud ? c2 >> 16 : fb;
+            uint32_t out;
+#if FXL__V_ANY_BL
+            if (bilinear) {
+                const uint32_t e = bl_sample(&L, u - 0x8000u, v - 0x8000u);
+                out = modulate_ch((e >> 11) & 31u, (e >> 21) & 63u, e & 31u, r1, g1, b1);
+            } else
+#endif
+            {
+                const uint32_t t = sample_repeat(lv, u, v, bilinear);
+                out = modulate_ch((t >> 11) & 31u, (t >> 5) & 63u, t & 31u, r1, g1, b1);
+            }
+            dst[i] = (uint16_t)((out >> osh) | (out << osh));
+            if (depth)
+                zb[i] = (uint16_t)zz;
+            written++;
+        }
+        u += du;
+        v += dv;
+        z += dz;
+        if (gouraud) {
+            c0 += dc0;
+            c1 += dc1;
+            c2 += dc2;
+        }
+    }
+    return written;
+}
+
+/* The other segments (a level blend, quadratic steps): seg_generic's
+ * pixel loop for these textures. */
+static FXL__NOINLINE uint32_t seg_modulate_full(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
     SEG_LOCALS();
@@ -592,6 +668,20 @@ static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
         SEG_ADVANCE();
     }
     return written;
+}
+
+static uint32_t seg_modulate(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    const int gouraud = fxl__has_color(tri);
+    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write;
+#define FXL_T_MOD(bil, z)                                                                                   \
+    (gouraud ? seg_modulate_plain(tri, s, bil, 1, z) : seg_modulate_plain(tri, s, bil, 0, z))
+    if ((s->lvl2 && s->lod_frac_q8 != 0u) || s->ddu || s->ddv || ztest != zwrite)
+        return seg_modulate_full(tri, s);
+    if (tri->draw->filter == FXL_FILTER_BILINEAR)
+        return ztest ? FXL_T_MOD(1, 1) : FXL_T_MOD(1, 0);
+    return ztest ? FXL_T_MOD(0, 1) : FXL_T_MOD(0, 0);
+#undef FXL_T_MOD
 }
 
 #endif
