@@ -858,6 +858,16 @@ static inline int64_t step_of(int64_t diff, int32_t div)
     return fxl__sdiv64_small(diff, div);   /* truncation: stepping never overshoots the endpoint */
 }
 
+/* sat_i32 of step_pow2 (full) or step_of for a difference that fits in
+ * int32, in 32-bit arithmetic: the Gouraud channels, each within [0, 63 <<
+ * 16] at a correction point. C's / truncates toward zero too. */
+static inline int32_t step_i32(int32_t diff, int full, int k, int32_t div)
+{
+    if (full)
+        return diff < 0 ? -(int32_t)((0u - (uint32_t)diff) >> k) : diff >> k;
+    return div > 0 ? diff / div : 0;
+}
+
 static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
 {
     if (is_signed) {
@@ -877,7 +887,9 @@ static inline uint32_t shift_coord(uint32_t c, int level, int is_signed)
  * first at the wrong texels. */
 static inline int32_t shift_step(int64_t d, int level, int is_signed)
 {
-    const int64_t f = d < 0 ? ~(int64_t)((uint64_t)~d >> level) : (int64_t)((uint64_t)d >> level);
+    /* level 0 without the 64-bit shift by a variable (a long sequence on
+     * 32-bit cores) */
+    const int64_t f = level == 0 ? d : d < 0 ? ~(int64_t)((uint64_t)~d >> level) : (int64_t)((uint64_t)d >> level);
     return is_signed ? sat_i32(f) : fxl__i32_of_bits((uint32_t)(uint64_t)f);
 }
 
@@ -2620,8 +2632,12 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         x = FXL__AUTO_LOD_GRID(x, xl);
 #endif
 #endif
-    for (i = 0; i < NPLANES; i++)
-        pv[i] = i < np ? fxl__plane_at(tri->pl[i], tri->X0, tri->Y0, x * FXL__ONE + FXL__HALF, Yc) : 0;
+    /* inline outside -Os (fxl__rr_plane): seven calls a span were ~8% of
+     * the firmware example's lit sphere on a Cortex-M4 */
+    for (i = 0; i < np; i++)
+        pv[i] = fxl__rr_plane(tri, tri->pl[i], x, Yc - tri->Y0);
+    for (; i < NPLANES; i++)
+        pv[i] = 0;
     point_zero(&p0);
     point_zero(&p1);
     correct(tri, pv, &p0);
@@ -2649,10 +2665,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         full = xr - x > ((int32_t)1 << ki);
 
 #if FXL_HAVE_MIPMAP
-        int64_t pv0[NPLANES];
-        if (tri->lod_per_segment)
-            for (i = 0; i < np; i++)
-                pv0[i] = pv[i];
+        const int64_t q0 = pv[PQ];   /* the segment's LOD is measured at its start */
 #endif
         if (full) {
             n = (int32_t)1 << ki;
@@ -2683,7 +2696,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
                         lod = lod_held;
                     else
 #endif
-                        lod = lod_held = seg_lod(tri, tri->lod_at(tri, pv0[PQ], p0.u64, p0.v64));
+                        lod = lod_held = seg_lod(tri, tri->lod_at(tri, q0, p0.u64, p0.v64));
                 }
                 level = seg_levels(tri, lod, &seg);
             }
@@ -2734,7 +2747,7 @@ static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row
         }
         if (fxl__has_color(tri)) {
             for (i = 0; i < 3; i++) {
-                seg.dc[i] = sat_i32(STEP((int64_t)p1.a[FXL__AR + i] - (int64_t)p0.a[FXL__AR + i]));
+                seg.dc[i] = step_i32((int32_t)p1.a[FXL__AR + i] - (int32_t)p0.a[FXL__AR + i], full, ki, div);
                 seg.c[i] = p0.a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
             }
         }
