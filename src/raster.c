@@ -201,15 +201,16 @@ static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
     const fxl_draw_t *d = tri->draw;
     /* a local count: the compiler folds the loop to level 0 without mips */
     const uint32_t nlevels = FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE ? t->levels : 1u;
-    uint32_t L;
+    /* a texel's bytes (one level: no call for it) */
+    const uint32_t bytes = nlevels > 1 ? fxl_texfmt_bytes((fxl_texfmt_t)t->format) : 0u;
+    uint32_t L, off = 0;   /* bytes before level L: fxl_texture_level_offset's sum, kept running */
 
     tri->nlevels = (uint8_t)nlevels;
     for (L = 0; L < nlevels; L++) {
         fxl__level_t *lv = &tri->level[L];
-        /* level 0 starts the chain: no offset to look up (two calls a
-         * triangle) */
-        lv->texels = (const uint8_t *)t->texels +
-                     (L ? (uint32_t)fxl_texture_level_offset(t, L) * fxl_texfmt_bytes((fxl_texfmt_t)t->format) : 0u);
+        if (L)
+            off += (1u << (lv[-1].log2_w + lv[-1].log2_h)) * bytes;
+        lv->texels = (const uint8_t *)t->texels + off;
         lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
         lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
         lv->mask_u = (1u << lv->log2_w) - 1u;
