@@ -2601,8 +2601,11 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
 }
 #endif
 
-/* The generic walk: any attribute set, any seg function (or a probe). */
-static void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
+/* The generic walk: any attribute set, any seg function (or a probe).
+ * Out of line: inlined into fxl__draw_span (GCC's choice at -O2 once its
+ * plane evaluation was inline) its frame sat under the reciprocal-run
+ * walk's too, +248 bytes on the Cortex-M4's deepest draw stack. */
+static FXL__NOINLINE void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
                               int32_t cl, int32_t cr)
 {
     int64_t pv[NPLANES];         /* planes past np are 0 (set below, and -O3 sees them set) */
