@@ -565,6 +565,42 @@ static void test_set_depth_attaches_and_null_detaches(void)
     TEST_ASSERT_NULL(t.depth);
 }
 
+/* Clears write rows in 32-bit words where they can, from a row's first
+ * 4-byte boundary (target.c, fill_row): every clip start and width on a
+ * buffer whose odd stride puts alternate rows at both alignments, with
+ * guard words around it, in both formats (the swapped one stores other
+ * bytes). Exactly the rectangle changes. */
+static void test_clear_rows_of_every_length_and_alignment(void)
+{
+    enum { WW = 41, WH = 4, WS = 43, WG = 4 };
+    static uint16_t wide[WG + WS * WH + WG];
+    int32_t x0, x1, f, i;
+    for (f = 0; f < 2; f++) {
+        const fxl_pixfmt_t fmt = f ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        /* the stored word: 0x1234 native, or its bytes big-endian */
+        static const unsigned char be[2] = {0x12u, 0x34u};
+        uint16_t stored = 0x1234u;
+        if (f)
+            memcpy(&stored, be, sizeof stored);
+        for (x0 = 0; x0 < 6; x0++)
+            for (x1 = x0; x1 <= WW; x1++) {
+                fxl_target_t t;
+                fxl_rect_t r = rect(x0, 1, x1, WH);
+                fill(wide, sizeof wide / sizeof wide[0], CANARY);
+                ASSERT_STATUS(FXL_OK, fxl_target_init(&t, wide + WG, WW, WH, WS, fmt));
+                ASSERT_STATUS(FXL_OK, fxl_target_set_clip(&t, &r));
+                ASSERT_STATUS(FXL_OK, fxl_target_clear(&t, 0x1234u));
+                for (i = 0; i < (int32_t)(sizeof wide / sizeof wide[0]); i++) {
+                    const int32_t b = i - WG, bx = b % WS, by = b / WS;
+                    const int in = b >= 0 && b < WS * WH && by >= 1 && bx >= x0 && bx < x1;
+                    snprintf(msg, sizeof msg, "format %d clip x %ld..%ld: word %ld (row %ld, column %ld)", (int)f,
+                             (long)x0, (long)x1, (long)i, (long)by, (long)bx);
+                    TEST_ASSERT_EQUAL_HEX32_MESSAGE(in ? stored : CANARY, wide[i], msg);
+                }
+            }
+    }
+}
+
 static void test_clear_depth_writes_zero_inside_clip_only(void)
 {
 #if FXL_HAVE_DEPTH
@@ -646,6 +682,7 @@ int main(void)
     RUN_TEST(test_clear_swapped_format_stores_big_endian_bytes);
     RUN_TEST(test_clear_swapped_format_respects_clip);
     RUN_TEST(test_set_depth_attaches_and_null_detaches);
+    RUN_TEST(test_clear_rows_of_every_length_and_alignment);
     RUN_TEST(test_clear_depth_writes_zero_inside_clip_only);
     RUN_TEST(test_clear_depth_without_depth_buffer_is_an_error);
     RUN_TEST(test_clear_depth_with_empty_clip_writes_nothing);
