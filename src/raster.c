@@ -195,26 +195,35 @@ int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
 #endif
 }
 
+/* Level L of t, `off` bytes into its chain. */
+static inline void set_level(fxl__level_t *lv, const fxl_texture_t *t, uint32_t L, uint32_t off)
+{
+    lv->texels = (const uint8_t *)t->texels + off;
+    lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
+    lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
+    lv->mask_u = (1u << lv->log2_w) - 1u;
+    lv->mask_v = (1u << lv->log2_h) - 1u;
+}
+
 static void setup_levels(fxl__tri_t *tri, const fxl_vertex_t v[3])
 {
     const fxl_texture_t *t = tri->tex;
     const fxl_draw_t *d = tri->draw;
     /* a local count: the compiler folds the loop to level 0 without mips */
     const uint32_t nlevels = FXL_HAVE_MIPMAP && d->mip != FXL_MIP_NONE ? t->levels : 1u;
-    /* a texel's bytes (one level: no call for it) */
-    const uint32_t bytes = nlevels > 1 ? fxl_texfmt_bytes((fxl_texfmt_t)t->format) : 0u;
-    uint32_t L, off = 0;   /* bytes before level L: fxl_texture_level_offset's sum, kept running */
 
     tri->nlevels = (uint8_t)nlevels;
-    for (L = 0; L < nlevels; L++) {
-        fxl__level_t *lv = &tri->level[L];
-        if (L)
-            off += (1u << (lv[-1].log2_w + lv[-1].log2_h)) * bytes;
-        lv->texels = (const uint8_t *)t->texels + off;
-        lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
-        lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
-        lv->mask_u = (1u << lv->log2_w) - 1u;
-        lv->mask_v = (1u << lv->log2_h) - 1u;
+    set_level(&tri->level[0], t, 0u, 0u);
+    if (nlevels > 1) {
+        /* the chain's bytes before level L, fxl_texture_level_offset's sum
+         * kept running (it sums the levels before L anew each call) */
+        const uint32_t bytes = fxl_texfmt_bytes((fxl_texfmt_t)t->format);
+        uint32_t L, off = 0;
+        for (L = 1; L < nlevels; L++) {
+            const fxl__level_t *prev = &tri->level[L - 1];
+            off += (1u << (prev->log2_w + prev->log2_h)) * bytes;
+            set_level(&tri->level[L], t, L, off);
+        }
     }
     tri->mip_linear = 0;
     tri->lod_per_segment = 0;
