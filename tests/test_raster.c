@@ -2287,6 +2287,91 @@ void test_modulate_loop_matches_generic_loop(void)
     TEST_ASSERT_TRUE(covered > 100 * compared);
 }
 
+/* The MODULATE loop's depth modes against the generic loop: test and
+ * write, test only, write only, over a depth buffer filled with hashed
+ * values (so the test rejects part of each triangle), each triangle drawn
+ * twice with two flat colours or two colour sets, so the second draw meets
+ * its own depths: ties keep the first draw. Point and bilinear, flat and
+ * Gouraud, both byte orders. Every pixel and depth value must be the
+ * generic loop's (a >= in place of the > of the test fails it). */
+void test_modulate_depth_modes_match_generic_loop(void)
+{
+    enum { NT = 12, TW = 32, TH = 16, NTEX = TW * TH };
+    static uint16_t texels[NTEX], px[2][W * H], zb[2][W * H];
+    static const uint8_t modes[3] = {FXL_DEPTH_TEST | FXL_DEPTH_WRITE, FXL_DEPTH_TEST, FXL_DEPTH_WRITE};
+    static fxl_vertex_t tris[NT][3];
+    fxl_texture_t tex, keyed;
+    fxl_draw_t d, dg;
+    char msg[160];
+    int i, k, cfg, pass, compared = 0;
+    uint32_t drawn[3] = {0, 0, 0};   /* pixels drawn, by depth mode */
+    TEST_NEEDS(FXL_HAVE_GENERIC && FXL_HAVE_DEPTH);
+    fill_unkeyed(texels, NTEX);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565, 1));
+    keyed_twin_texture(&tex, &keyed);
+    lcg_state = 777u;
+    for (k = 0; k < NT; k++)
+        for (i = 0; i < 3; i++)
+            tris[k][i] = test_vertex(rnd_range(-W / 4, W + W / 4) + 0.1 * i, rnd_range(-H / 4, H + H / 4),
+                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-3.0, 3.0), rnd_range(-3.0, 3.0),
+                                     (uint16_t)(rnd() & 0xFFFFu));
+    for (cfg = 0; cfg < 3 * 2 * 2 * 2; cfg++) {
+        const int mode = cfg % 3, bil = (cfg / 3) & 1, gouraud = (cfg / 6) & 1, swap = cfg / 12;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        fxl_draw_defaults(&d);
+        d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.mip = FXL_MIP_NONE;
+        d.texenv = FXL_TEXENV_MODULATE;
+        d.shade = (uint8_t)(gouraud ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
+        d.depth = modes[mode];
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, fmt, 1))
+            continue;
+        for (k = 0; k < NT; k++) {
+            for (pass = 0; pass < 2; pass++) {
+                fxl_target_t t;
+                fxl_draw_t twice[2];
+                fxl_vertex_t v[3];
+                int rep;
+                fxl_target_init(&t, px[pass], W, H, W, fmt);
+                fxl_target_clear(&t, 0xDEAD);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb[pass]));
+                for (i = 0; i < W * H; i++)
+                    zb[pass][i] = (uint16_t)(((uint32_t)i * 2654435761u) >> 16);
+                twice[0] = twice[1] = pass ? dg : d;
+                twice[0].color = 0xB5D3u;
+                twice[1].color = 0x4A2Cu;
+                for (rep = 0; rep < 2; rep++) {
+                    for (i = 0; i < 3; i++) {
+                        v[i] = tris[k][i];
+                        if (rep)
+                            v[i].color = (uint16_t)~v[i].color;   /* other Gouraud colours */
+                    }
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &twice[rep], v, NULL));
+                }
+            }
+            for (i = 0; i < W * H; i++) {
+                if (px[0][i] != px[1][i] || zb[0][i] != zb[1][i]) {
+                    snprintf(msg, sizeof msg,
+                             "depth mode %d bilinear %d gouraud %d swap %d triangle %d pixel (%d,%d): %04x/%04x, "
+                             "generic %04x/%04x",
+                             d.depth, bil, gouraud, swap, k, i % W, i / W, px[0][i], zb[0][i], px[1][i], zb[1][i]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+                drawn[mode] += px[1][i] != 0xDEAD;
+            }
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draw pairs compared; pixels drawn with test and write %lu, test %lu, write %lu",
+             compared, (unsigned long)drawn[0], (unsigned long)drawn[1], (unsigned long)drawn[2]);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+    /* the hashed depths hide part of every tested draw, and write-only
+     * draws everything they cover */
+    TEST_ASSERT_TRUE(drawn[2] > 50u * (uint32_t)compared);
+    TEST_ASSERT_TRUE(drawn[0] > 0u && drawn[0] < drawn[2] && drawn[1] < drawn[2]);
+}
+
 /* Spans on one texel row (q and v constant along every row: span_fast.h's
  * FXL_T_LROW) against the generic walk, pixel, depth value and the pixels
  * the stats count: wide spans (up to 300 pixels) for many segments of
@@ -3420,6 +3505,7 @@ int main(void)
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
     RUN_TEST(test_fast_loops_match_generic_loop);
     RUN_TEST(test_modulate_loop_matches_generic_loop);
+    RUN_TEST(test_modulate_depth_modes_match_generic_loop);
     RUN_TEST(test_level_row_walk_matches_generic);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
