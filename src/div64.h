@@ -135,7 +135,6 @@ static inline uint64_t fxl__div64_by(uint64_t n, const fxl__div64_t *dv, uint64_
     return q;
 }
 
-/* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */
 /* fxl__sdiv64's value from the magnitudes' fxl__udiv64 (compiled
  * everywhere, so host tests check it against C's `/`): the quotient's bit
  * pattern back to int64 without an out-of-range conversion (INT64_MIN / 1
@@ -148,6 +147,7 @@ static inline int64_t fxl__sdiv64_mag(int64_t n, int64_t d)
     return r <= (uint64_t)INT64_MAX ? (int64_t)r : -(int64_t)(~r) - 1;
 }
 
+/* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */
 static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
 {
 #if FXL_SMALL_DIV64

@@ -11,6 +11,7 @@
 #include "persp.h"
 #include "auto.h"
 #include "align.h"
+#include "texel.h"
 
 void fxl_draw_defaults(fxl_draw_t *d)
 {
@@ -199,8 +200,8 @@ int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3])
 static inline void set_level(fxl__level_t *lv, const fxl_texture_t *t, uint32_t L, uint32_t off)
 {
     lv->texels = (const uint8_t *)t->texels + off;
-    lv->log2_w = t->log2_w > L ? t->log2_w - L : 0u;
-    lv->log2_h = t->log2_h > L ? t->log2_h - L : 0u;
+    lv->log2_w = fxl__level_log2(t->log2_w, L);
+    lv->log2_h = fxl__level_log2(t->log2_h, L);
     lv->mask_u = (1u << lv->log2_w) - 1u;
     lv->mask_v = (1u << lv->log2_h) - 1u;
 }

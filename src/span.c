@@ -457,13 +457,19 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
     }
 }
 
+/* Texel channels r5, g6, b5 times factors r1, g1, b1 (a colour channel
+ * + 1, 1..32 or 1..64), >> 5 or 6, as RGB565. */
+static FXL__HOT_INLINE uint32_t modulate_ch(uint32_t r, uint32_t g, uint32_t b, uint32_t r1, uint32_t g1,
+                                            uint32_t b1)
+{
+    return (((r * r1) >> 5) << 11) | (((g * g1) >> 6) << 5) | ((b * b1) >> 5);
+}
+
 /* Per-channel t * (c + 1) >> bits: white leaves the texel unchanged. */
 static FXL__HOT_INLINE uint32_t modulate565(uint32_t t, uint32_t c)
 {
-    uint32_t r = (((t >> 11) & 31u) * (((c >> 11) & 31u) + 1u)) >> 5;
-    uint32_t g = (((t >> 5) & 63u) * (((c >> 5) & 63u) + 1u)) >> 6;
-    uint32_t b = ((t & 31u) * ((c & 31u) + 1u)) >> 5;
-    return (r << 11) | (g << 5) | b;
+    return modulate_ch((t >> 11) & 31u, (t >> 5) & 63u, t & 31u, ((c >> 11) & 31u) + 1u, ((c >> 5) & 63u) + 1u,
+                       (c & 31u) + 1u);
 }
 
 /* A segment loop's running values (seg_generic, seg_modulate), from the
@@ -582,12 +588,6 @@ static FXL__HOT_INLINE uint32_t sample_repeat(const fxl__level_t *lv, uint32_t u
  *   63 << 16) and the steps, truncated toward zero, never pass the
  *   segment's end, so no channel reaches the next one's bits. The
  *   channels are stepped with the + 1 of modulate565 already added. */
-static FXL__HOT_INLINE uint32_t modulate_ch(uint32_t r, uint32_t g, uint32_t b, uint32_t r1, uint32_t g1,
-                                            uint32_t b1)
-{
-    return (((r * r1) >> 5) << 11) | (((g * g1) >> 6) << 5) | ((b * b1) >> 5);
-}
-
 static FXL__HOT_INLINE uint32_t seg_modulate_plain(const fxl__tri_t *tri, const fxl__seg_t *s, const int bilinear,
                                                    const int gouraud, const int depth)
 {
@@ -2605,8 +2605,8 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
  * Out of line: inlined into fxl__draw_span (GCC's choice at -O2 once its
  * plane evaluation was inline) its frame sat under the reciprocal-run
  * walk's too, +248 bytes on the Cortex-M4's deepest draw stack. */
-static FXL__NOINLINE void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl, int32_t xr,
-                              int32_t cl, int32_t cr)
+static FXL__NOINLINE void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl,
+                                            int32_t xr, int32_t cl, int32_t cr)
 {
     int64_t pv[NPLANES];         /* planes past np are 0 (set below, and -O3 sees them set) */
     const int32_t Yc = row * FXL__ONE + FXL__HALF;
