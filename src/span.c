@@ -397,6 +397,15 @@ static FXL__HOT_INLINE uint32_t bl_row_sample(bl_row_t *r, uint32_t uu)
 #endif
 #endif
 
+/* The textures the fast pixel loops read directly: RGB565, repeat on both
+ * axes, no colour key (fxl__fast_id's walks, seg_modulate, and
+ * seg_generic's plain taps). */
+static int tex_repeat565(const fxl_texture_t *t)
+{
+    return t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
+           !(t->flags & FXL_TEXF_KEY);
+}
+
 #if FXL_HAVE_GENERIC
 /* ---- the generic loop: any format, wrap, key, mip blend, texenv, shade --- */
 
@@ -411,12 +420,10 @@ static int32_t texel_coord(uint32_t u, int is_signed)
     return (int32_t)(u >> 16);
 }
 
-static uint32_t fetch(const fxl__tri_t *tri, const fxl__level_t *lv, int32_t x, int32_t y, int *key)
+/* Texel (wx, wy) of a level, the coordinates already wrapped (fxl__wrap:
+ * -1 on a border axis reads the border colour) */
+static uint32_t fetch(const fxl_texture_t *t, const fxl__level_t *lv, int32_t wx, int32_t wy, int *key)
 {
-    const fxl_texture_t *t = tri->tex;
-    int32_t wx = fxl__wrap(x, lv->log2_w, (fxl_wrap_t)t->wrap_u);
-    int32_t wy = fxl__wrap(y, lv->log2_h, (fxl_wrap_t)t->wrap_v);
-
     if (wx < 0 || wy < 0) {
         *key = 0;
         return t->border;
@@ -424,9 +431,19 @@ static uint32_t fetch(const fxl__tri_t *tri, const fxl__level_t *lv, int32_t x, 
     return fxl__texel_rgb565(t, lv->texels, ((uint32_t)wy << lv->log2_w) + (uint32_t)wx, key);
 }
 
-/* Filtered texel of one level; returns 0x10000 for "transparent". */
-static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u, uint32_t v)
+/* Filtered texel of one level; returns 0x10000 for "transparent". Each
+ * coordinate is wrapped once: a bilinear footprint's two columns and two
+ * rows, not its four taps' (eight fxl__wrap calls a pixel cost the
+ * firmware example's lit sphere ~45 Cortex-M4 instructions a pixel at
+ * -Os, where fxl__wrap is out of line). */
+static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u, uint32_t v, int plain)
 {
+    const fxl_texture_t *t = tri->tex;
+    const fxl_wrap_t wu = (fxl_wrap_t)t->wrap_u, wv = (fxl_wrap_t)t->wrap_v;
+    /* plain (tex_repeat565): a tap is a mask and a read, fxl__wrap's REPEAT
+     * and fxl__texel_rgb565's RGB565 without their cases or a key */
+    const uint16_t *const tx = (const uint16_t *)lv->texels;
+    const uint32_t mw = (1u << lv->log2_w) - 1u, mh = (1u << lv->log2_h) - 1u;
     int key;
 #if FXL_HAVE_BILINEAR
     if (tri->draw->filter == FXL_FILTER_BILINEAR) {
@@ -436,12 +453,17 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
         uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
         uint32_t c[4];
         int k[4], i, nearest = (fu >= 16u ? 1 : 0) + (fv >= 16u ? 2 : 0);
-
+        if (plain) {
+            const uint32_t xa = (uint32_t)x0 & mw, xb = (uint32_t)(x0 + 1) & mw;
+            const uint32_t ya = ((uint32_t)y0 & mh) << lv->log2_w, yb = ((uint32_t)(y0 + 1) & mh) << lv->log2_w;
+            return fxl__bilerp565(tx[ya + xa], tx[ya + xb], tx[yb + xa], tx[yb + xb], fu, fv);
+        }
         /* x0 + 1 cannot overflow: |x0| <= 2^15 after the q16 shift. */
-        c[0] = fetch(tri, lv, x0, y0, &k[0]);
-        c[1] = fetch(tri, lv, x0 + 1, y0, &k[1]);
-        c[2] = fetch(tri, lv, x0, y0 + 1, &k[2]);
-        c[3] = fetch(tri, lv, x0 + 1, y0 + 1, &k[3]);
+        const int32_t xw[2] = {fxl__wrap(x0, lv->log2_w, wu), fxl__wrap(x0 + 1, lv->log2_w, wu)};
+        const int32_t yw[2] = {fxl__wrap(y0, lv->log2_h, wv), fxl__wrap(y0 + 1, lv->log2_h, wv)};
+
+        for (i = 0; i < 4; i++)
+            c[i] = fetch(t, lv, xw[i & 1], yw[i >> 1], &k[i]);
         if (k[nearest])
             return 0x10000u;
         /* Key texels never bleed: they take the nearest (opaque) colour. */
@@ -451,8 +473,11 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
         return fxl__bilerp565(c[0], c[1], c[2], c[3], fu, fv);
     }
 #endif
+    if (plain)
+        return tx[(((v >> 16) & mh) << lv->log2_w) + ((u >> 16) & mw)];
     {
-        uint32_t c = fetch(tri, lv, texel_coord(u, fxl__signed_u(tri)), texel_coord(v, fxl__signed_v(tri)), &key);
+        uint32_t c = fetch(t, lv, fxl__wrap(texel_coord(u, fxl__signed_u(tri)), lv->log2_w, wu),
+                           fxl__wrap(texel_coord(v, fxl__signed_v(tri)), lv->log2_h, wv), &key);
         return key ? 0x10000u : c;
     }
 }
@@ -495,47 +520,61 @@ static FXL__HOT_INLINE uint32_t modulate565(uint32_t t, uint32_t c)
      c0 += (uint32_t)s->dc[0], c1 += (uint32_t)s->dc[1], c2 += (uint32_t)s->dc[2])
 #endif
 
+/* seg_generic's values at pixel i of the segment, from its start and steps
+ * (modulo 2^32, the values stepping gives bit for bit: fxl__seg_coord). No
+ * running state: the loop keeps nothing live across pixels, and a pixel
+ * computes only what it uses (stepping every value, ten loads and adds a
+ * pixel, was ~40 Cortex-M4 instructions a pixel at -Os). */
+#define SEG_AT(c, d) ((c) + (uint32_t)(d) * (uint32_t)i)
+
 static uint32_t seg_generic(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
     const fxl_draw_t *d = tri->draw;
-    SEG_LOCALS();
+    const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write;
+    const int plain = fxl__has_uv(tri) && tex_repeat565(tri->tex);
+    uint32_t written = 0, ti = 0;   /* ti = i (i - 1) / 2, quadratic steps' factor (fxl__seg_coord) */
     int32_t i;
 
-    for (i = 0; i < s->n; i++) {
-        uint32_t zz = z >> 16, out, col;
-        int draw = 1;
+    for (i = 0; i < s->n; ti += (uint32_t)i, i++) {
+        uint32_t zz = SEG_AT(s->z, s->dz) >> 16, out, col;
 
         if (ztest && zz <= s->zb[i])
-            draw = 0;
-        if (draw) {
-            col = fxl__has_color(tri) ? (((c0 >> 16) << 11) | ((c1 >> 16) << 5) | (c2 >> 16)) : d->color;
-            if (fxl__has_uv(tri)) {
-                uint32_t t = sample(tri, s->lvl, u, v);
-                if (s->lvl2 && t != 0x10000u && s->lod_frac_q8 != 0u) {
-                    uint32_t t2 = sample(tri, s->lvl2, u2, v2);
-                    if (t2 != 0x10000u)
-                        t = compact565(lerp565x(expand565(t), expand565(t2), s->lod_frac_q8 >> 3));
-                }
-                if (t == 0x10000u)
-                    out = d->texenv == FXL_TEXENV_DECAL ? col : 0x10000u;
-                else if (d->texenv == FXL_TEXENV_MODULATE)
-                    out = modulate565(t, col);
-                else
-                    out = t;
-            } else {
-                out = col;
+            continue;
+        col = fxl__has_color(tri) ? ((SEG_AT(s->c[0], s->dc[0]) >> 16) << 11 | (SEG_AT(s->c[1], s->dc[1]) >> 16) << 5 |
+                                     SEG_AT(s->c[2], s->dc[2]) >> 16)
+                                  : d->color;
+        if (fxl__has_uv(tri)) {
+#if FXL_HAVE_QUAD
+            const uint32_t u = SEG_AT(s->u, s->du) + (uint32_t)s->ddu * ti, v = SEG_AT(s->v, s->dv) + (uint32_t)s->ddv * ti;
+#else
+            const uint32_t u = SEG_AT(s->u, s->du), v = SEG_AT(s->v, s->dv);
+            (void)ti;
+#endif
+            uint32_t t = sample(tri, s->lvl, u, v, plain);
+            if (s->lvl2 && t != 0x10000u && s->lod_frac_q8 != 0u) {
+                uint32_t t2 = sample(tri, s->lvl2, SEG_AT(s->u2, s->du2), SEG_AT(s->v2, s->dv2), plain);
+                if (t2 != 0x10000u)
+                    t = compact565(lerp565x(expand565(t), expand565(t2), s->lod_frac_q8 >> 3));
             }
-            if (out != 0x10000u) {
-                s->dst[i] = (uint16_t)(tri->swap ? ((out >> 8) | (out << 8)) : out);
-                if (zwrite)
-                    s->zb[i] = (uint16_t)zz;
-                written++;
-            }
+            if (t == 0x10000u)
+                out = d->texenv == FXL_TEXENV_DECAL ? col : 0x10000u;
+            else if (d->texenv == FXL_TEXENV_MODULATE)
+                out = modulate565(t, col);
+            else
+                out = t;
+        } else {
+            out = col;
         }
-        SEG_ADVANCE();
+        if (out != 0x10000u) {
+            s->dst[i] = (uint16_t)(tri->swap ? ((out >> 8) | (out << 8)) : out);
+            if (zwrite)
+                s->zb[i] = (uint16_t)zz;
+            written++;
+        }
     }
     return written;
 }
+#undef SEG_AT
 
 #if FXL__FAST_SPANS
 /* ---- MODULATE draws of RGB565 repeat textures ---------------------------------
@@ -2435,14 +2474,6 @@ static const struct {
     TWO(0, 1, 1, pml_z_swap),
     TWO(1, 1, 1, tri_z_swap),
 };
-
-/* The textures the fast pixel loops read directly: RGB565, repeat on both
- * axes, no colour key (fxl__fast_id's walks, seg_modulate). */
-static int tex_repeat565(const fxl_texture_t *t)
-{
-    return t->format == FXL_TEXFMT_RGB565 && t->wrap_u == FXL_WRAP_REPEAT && t->wrap_v == FXL_WRAP_REPEAT &&
-           !(t->flags & FXL_TEXF_KEY);
-}
 
 int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear)
 {

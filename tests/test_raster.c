@@ -2287,6 +2287,66 @@ void test_modulate_loop_matches_generic_loop(void)
     TEST_ASSERT_TRUE(covered > 100 * compared);
 }
 
+/* seg_generic's plain taps (RGB565 repeat textures without a key: a mask
+ * and a read a tap) against its wrapped ones (fxl__wrap and
+ * fxl__texel_rgb565 a tap, reached through a colour key no texel has), on
+ * draws no specialised loop takes in any build: DECAL, and REPLACE with a
+ * depth test that does not write. Flat and Gouraud colours, point and
+ * bilinear, no mips, the nearest level and two levels blended, affine,
+ * subdivided, exact and AUTO (quadratic segments: seg_generic's
+ * i (i - 1) / 2 term), both byte orders, with and without a clip
+ * rectangle. */
+void test_generic_plain_taps_match_wrapped_taps(void)
+{
+    enum { NT = 10, TW = 32, TH = 16, NTEX = TW * TH * 4 / 3 + 1 };
+    static uint16_t texels[NTEX], plain[W * H], wrapped[W * H], zplain[W * H], zwrapped[W * H];
+    static const int16_t persp[4] = {FXL_PERSP_AFFINE, 16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
+    static fxl_vertex_t tris[NT][3];
+    fxl_texture_t tex, keyed;
+    fxl_draw_t d, dg;
+    char msg[200];
+    int i, k, cfg, compared = 0, covered = 0;
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    fill_unkeyed(texels, NTEX);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565,
+                                                   FXL_HAVE_MIPMAP ? 6u : 1u));
+    keyed_twin_texture(&tex, &keyed);
+    lcg_state = 9090u;
+    for (k = 0; k < NT; k++)
+        for (i = 0; i < 3; i++) {
+            const double span = k % 2 ? 5.0 : 0.3;
+            tris[k][i] = test_vertex(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
+                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-span, span),
+                                     rnd_range(-span, span), (uint16_t)(rnd() & 0xFFFFu));
+        }
+    for (cfg = 0; cfg < 4 * 2 * 2 * 2 * 3 * 2; cfg++) {
+        const int pm = cfg % 4, swap = (cfg / 4) & 1, clip = (cfg / 8) & 1, bil = (cfg / 16) & 1;
+        const int mip = (cfg / 32) % 3, decal = cfg / 96;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        const fxl_rect_t cr = {5, 3, W - 7, H - 2};
+        fxl_draw_defaults(&d);
+        d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.persp = persp[pm];
+        d.mip = (uint8_t)(mip == 2 ? FXL_MIP_LINEAR : mip == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
+        d.texenv = decal ? FXL_TEXENV_DECAL : FXL_TEXENV_REPLACE;
+        d.shade = (uint8_t)(decal ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
+        d.depth = decal ? 0 : FXL_DEPTH_TEST;
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, fmt, !decal))
+            continue;
+        for (k = 0; k < NT; k++) {
+            snprintf(msg, sizeof msg, "decal %d bilinear %d mip %d persp %d swap %d clip %d triangle %d", decal, bil,
+                     mip, persp[pm], swap, clip, k);
+            covered += draw_fast_and_generic(&d, &dg, tris[k], W, H, fmt, !decal, clip ? &cr : NULL, plain, zplain,
+                                             wrapped, zwrapped, msg);
+            compared++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws compared, %d pixels", compared, covered);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+    TEST_ASSERT_TRUE(covered > 100 * compared);
+}
+
 /* The MODULATE loop's depth modes against the generic loop: test and
  * write, test only, write only, over a depth buffer filled with hashed
  * values (so the test rejects part of each triangle), each triangle drawn
@@ -3506,6 +3566,7 @@ int main(void)
     RUN_TEST(test_fast_loops_match_generic_loop);
     RUN_TEST(test_modulate_loop_matches_generic_loop);
     RUN_TEST(test_modulate_depth_modes_match_generic_loop);
+    RUN_TEST(test_generic_plain_taps_match_wrapped_taps);
     RUN_TEST(test_level_row_walk_matches_generic);
     RUN_TEST(test_left_out_features_are_refused);
     return UNITY_END();
