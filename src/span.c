@@ -431,17 +431,19 @@ static uint32_t fetch(const fxl_texture_t *t, const fxl__level_t *lv, int32_t wx
     return fxl__texel_rgb565(t, lv->texels, ((uint32_t)wy << lv->log2_w) + (uint32_t)wx, key);
 }
 
-/* Filtered texel of one level; returns 0x10000 for "transparent". Each
- * coordinate is wrapped once: a bilinear footprint's two columns and two
- * rows, not its four taps' (eight fxl__wrap calls a pixel cost the
- * firmware example's lit sphere ~45 Cortex-M4 instructions a pixel at
- * -Os, where fxl__wrap is out of line). */
+/* Filtered texel of one level; returns 0x10000 for "transparent". plain
+ * (tex_repeat565, from seg_generic) reads the taps directly; otherwise
+ * each coordinate is wrapped once, a bilinear footprint's two columns and
+ * two rows, not its four taps' (at -Os, where fxl__wrap and fetch are out
+ * of line, the eight calls and four fetches with their cases were ~230
+ * Cortex-M4 instructions a pixel of the firmware example's lit sphere;
+ * ~90 with the plain taps). */
 static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u, uint32_t v, int plain)
 {
     const fxl_texture_t *t = tri->tex;
     const fxl_wrap_t wu = (fxl_wrap_t)t->wrap_u, wv = (fxl_wrap_t)t->wrap_v;
-    /* plain (tex_repeat565): a tap is a mask and a read, fxl__wrap's REPEAT
-     * and fxl__texel_rgb565's RGB565 without their cases or a key */
+    /* plain: a tap is a mask and a read, fxl__wrap's REPEAT and
+     * fxl__texel_rgb565's RGB565 without their cases or a key */
     const uint16_t *const tx = (const uint16_t *)lv->texels;
     const uint32_t mw = (1u << lv->log2_w) - 1u, mh = (1u << lv->log2_h) - 1u;
     int key;
@@ -449,15 +451,16 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
     if (tri->draw->filter == FXL_FILTER_BILINEAR) {
         /* (no wrap on clamp/border axes: correct() keeps them >= INT32_MIN + 1/2 texel) */
         uint32_t uu = u - 0x8000u, vv = v - 0x8000u;
-        int32_t x0 = texel_coord(uu, fxl__signed_u(tri)), y0 = texel_coord(vv, fxl__signed_v(tri));
         uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
-        uint32_t c[4];
-        int k[4], i, nearest = (fu >= 16u ? 1 : 0) + (fv >= 16u ? 2 : 0);
         if (plain) {
-            const uint32_t xa = (uint32_t)x0 & mw, xb = (uint32_t)(x0 + 1) & mw;
-            const uint32_t ya = ((uint32_t)y0 & mh) << lv->log2_w, yb = ((uint32_t)(y0 + 1) & mh) << lv->log2_w;
+            /* repeat axes: texel_coord is the plain shift */
+            const uint32_t xa = (uu >> 16) & mw, xb = ((uu >> 16) + 1u) & mw;
+            const uint32_t ya = ((vv >> 16) & mh) << lv->log2_w, yb = (((vv >> 16) + 1u) & mh) << lv->log2_w;
             return fxl__bilerp565(tx[ya + xa], tx[ya + xb], tx[yb + xa], tx[yb + xb], fu, fv);
         }
+        int32_t x0 = texel_coord(uu, fxl__signed_u(tri)), y0 = texel_coord(vv, fxl__signed_v(tri));
+        uint32_t c[4];
+        int k[4], i, nearest = (fu >= 16u ? 1 : 0) + (fv >= 16u ? 2 : 0);
         /* x0 + 1 cannot overflow: |x0| <= 2^15 after the q16 shift. */
         const int32_t xw[2] = {fxl__wrap(x0, lv->log2_w, wu), fxl__wrap(x0 + 1, lv->log2_w, wu)};
         const int32_t yw[2] = {fxl__wrap(y0, lv->log2_h, wv), fxl__wrap(y0 + 1, lv->log2_h, wv)};
