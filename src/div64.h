@@ -39,6 +39,18 @@ uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d);
 #define FXL__DIV64_BY32 0
 #endif
 
+/* 32-bit cores whose 32-bit division is an instruction (Cortex-M3/M4/M7/
+ * M33, RISC-V with M, other 32-bit hosts): there a quotient that fits 32
+ * bits is cheaper as C's 32-bit `/` than as any 64-bit division. Not on
+ * ARMv6-M or RV32I/E, where `/` is a runtime call (on the Cortex-M0+ it
+ * pulled libgcc's __aeabi_idiv, ~470 B, into the smallest build). */
+#if UINTPTR_MAX <= 0xFFFFFFFFu &&                                                                               \
+    (defined(__ARM_FEATURE_IDIV) || defined(__riscv_div) || !(defined(__arm__) || defined(__riscv)))
+#define FXL__DIV32_HW 1
+#else
+#define FXL__DIV32_HW 0
+#endif
+
 /* n / d, d != 0 */
 static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 {

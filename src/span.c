@@ -897,7 +897,7 @@ static inline int64_t step_of(int64_t diff, int32_t div)
 {
     if (div <= 0)
         return 0;
-#if UINTPTR_MAX <= 0xFFFFFFFFu
+#if FXL__DIV32_HW
     /* a difference fitting 32 bits (almost every one): one 32-bit
      * division, truncated toward zero too (div > 0). At -Os the 64-bit
      * loop's ~20 iterations a step were ~1 M of the firmware example's lit
