@@ -19,13 +19,15 @@
 #include "persp.h"
 #include "div64.h"
 
-/* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, by long division
- * in 16-bit chunks so no intermediate exceeds 2^63. */
+/* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, bits <= 31, by
+ * long division in 16-bit chunks so no intermediate exceeds 2^63. The
+ * quotient is below 2^bits: 32 bits hold it (at -Os one shift and one OR
+ * a step, not a 64-bit shift). */
 static int64_t div_frac(int64_t r, int64_t den, int bits)
 {
     uint64_t ur = r < 0 ? (uint64_t)0 - (uint64_t)r : (uint64_t)r;
     uint64_t d = (uint64_t)den;
-    uint64_t q = 0;
+    uint32_t q = 0;
 
 #if FXL_SMALL_DIV64
     /* one quotient bit a step (ur < d < 2^47: the shift cannot wrap) */
@@ -42,8 +44,8 @@ static int64_t div_frac(int64_t r, int64_t den, int bits)
         int c = bits > 16 ? 16 : bits;
         ur <<= c;
         {
-            const uint64_t qc = fxl__udiv64(ur, d);
-            q = (q << c) + qc;
+            const uint64_t qc = fxl__udiv64(ur, d);   /* < 2^c */
+            q = (q << c) + (uint32_t)qc;
             ur -= qc * d;
         }
         bits -= c;
