@@ -443,8 +443,9 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
     const fxl_texture_t *t = tri->tex;
     const fxl_wrap_t wu = (fxl_wrap_t)t->wrap_u, wv = (fxl_wrap_t)t->wrap_v;
     /* plain: a tap is a mask and a read, fxl__wrap's REPEAT and
-     * fxl__texel_rgb565's RGB565 without their cases or a key */
-    const uint16_t *const tx = (const uint16_t *)lv->texels;
+     * fxl__texel_rgb565's RGB565 without their cases or a key (the
+     * texels are read as uint16_t only then: an L8 or I8 level may start
+     * at an odd address) */
     const uint32_t mw = (1u << lv->log2_w) - 1u, mh = (1u << lv->log2_h) - 1u;
     int key;
 #if FXL_HAVE_BILINEAR
@@ -454,6 +455,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
         uint32_t fu = (uu >> 11) & 31u, fv = (vv >> 11) & 31u;
         if (plain) {
             /* repeat axes: texel_coord is the plain shift */
+            const uint16_t *const tx = (const uint16_t *)lv->texels;
             const uint32_t xa = (uu >> 16) & mw, xb = ((uu >> 16) + 1u) & mw;
             const uint32_t ya = ((vv >> 16) & mh) << lv->log2_w, yb = (((vv >> 16) + 1u) & mh) << lv->log2_w;
             return fxl__bilerp565(tx[ya + xa], tx[ya + xb], tx[yb + xa], tx[yb + xb], fu, fv);
@@ -477,7 +479,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
     }
 #endif
     if (plain)
-        return tx[(((v >> 16) & mh) << lv->log2_w) + ((u >> 16) & mw)];
+        return ((const uint16_t *)lv->texels)[(((v >> 16) & mh) << lv->log2_w) + ((u >> 16) & mw)];
     {
         uint32_t c = fetch(t, lv, fxl__wrap(texel_coord(u, fxl__signed_u(tri)), lv->log2_w, wu),
                            fxl__wrap(texel_coord(v, fxl__signed_v(tri)), lv->log2_h, wv), &key);
