@@ -40,15 +40,18 @@ uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d);
 #endif
 
 /* 32-bit cores whose 32-bit division is an instruction (Cortex-M3/M4/M7/
- * M33, RISC-V with M, other 32-bit hosts): there a quotient that fits 32
- * bits is cheaper as C's 32-bit `/` than as any 64-bit division. Not on
- * ARMv6-M or RV32I/E, where `/` is a runtime call (on the Cortex-M0+ it
- * pulled libgcc's __aeabi_idiv, ~470 B, into the smallest build). */
-#if UINTPTR_MAX <= 0xFFFFFFFFu &&                                                                               \
-    (defined(__ARM_FEATURE_IDIV) || defined(__riscv_div) || !(defined(__arm__) || defined(__riscv)))
+ * M33, RISC-V with M, i386): there a quotient that fits 32 bits is
+ * cheaper as C's 32-bit `/` than as any 64-bit division. Not on ARMv6-M,
+ * RV32I/E or cores this list does not know, where `/` may be a runtime
+ * call (on the Cortex-M0+ it pulled libgcc's __aeabi_idiv, ~470 B, into
+ * the smallest build). -DFXL__DIV32_HW=1 selects the forms on a 64-bit
+ * host (determinism.sh's gcc -Os list). */
+#ifndef FXL__DIV32_HW
+#if UINTPTR_MAX == 0xFFFFFFFFu && (defined(__ARM_FEATURE_IDIV) || defined(__riscv_div) || defined(__i386__))
 #define FXL__DIV32_HW 1
 #else
 #define FXL__DIV32_HW 0
+#endif
 #endif
 
 /* n / d, d != 0 */

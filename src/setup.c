@@ -21,8 +21,8 @@
 
 /* round(r * 2^bits / den) for |r| < den, 0 < den < 2^47, bits <= 31, by
  * long division in 16-bit chunks so no intermediate exceeds 2^63. The
- * quotient is below 2^bits: 32 bits hold it (at -Os one shift and one OR
- * a step, not a 64-bit shift). */
+ * quotient is below 2^bits, at most 2^bits rounded: 32 bits hold it (at
+ * -Os one shift and one OR a step, not a 64-bit shift). */
 static int64_t div_frac(int64_t r, int64_t den, int bits)
 {
     uint64_t ur = r < 0 ? (uint64_t)0 - (uint64_t)r : (uint64_t)r;

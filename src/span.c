@@ -446,7 +446,7 @@ static uint32_t sample(const fxl__tri_t *tri, const fxl__level_t *lv, uint32_t u
      * fxl__texel_rgb565's RGB565 without their cases or a key (the
      * texels are read as uint16_t only then: an L8 or I8 level may start
      * at an odd address) */
-    const uint32_t mw = (1u << lv->log2_w) - 1u, mh = (1u << lv->log2_h) - 1u;
+    const uint32_t mw = lv->mask_u, mh = lv->mask_v;
     int key;
 #if FXL_HAVE_BILINEAR
     if (tri->draw->filter == FXL_FILTER_BILINEAR) {
@@ -901,7 +901,8 @@ static inline int64_t step_of(int64_t diff, int32_t div)
         return 0;
 #if FXL__DIV32_HW
     /* a difference fitting 32 bits (almost every one): one 32-bit
-     * division, truncated toward zero too (div > 0). At -Os the 64-bit
+     * division, truncated toward zero too (div > 0; `diff == (int32_t)diff`
+     * takes the conversion as modular, as GCC and Clang define it). At -Os the 64-bit
      * loop's ~20 iterations a step were ~1 M of the firmware example's lit
      * frame on a Cortex-M4. */
     if (diff == (int32_t)diff)

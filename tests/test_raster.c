@@ -2293,9 +2293,10 @@ void test_modulate_loop_matches_generic_loop(void)
  * draws no specialised loop takes in any build: DECAL, and REPLACE with a
  * depth test that does not write. Flat and Gouraud colours, point and
  * bilinear, no mips, the nearest level and two levels blended, affine,
- * subdivided, exact and AUTO (quadratic segments: seg_generic's
- * i (i - 1) / 2 term), both byte orders, with and without a clip
- * rectangle. */
+ * subdivided, exact and AUTO (quadratic segments), both byte orders, with
+ * and without a clip rectangle. Both passes share seg_generic's values of
+ * a pixel (its steps, the quadratic term): the fast-against-generic tests
+ * and determinism.sh hold those. */
 void test_generic_plain_taps_match_wrapped_taps(void)
 {
     enum { NT = 10, TW = 32, TH = 16, NTEX = TW * TH * 4 / 3 + 1 };
