@@ -2227,6 +2227,29 @@ void test_fast_loops_match_generic_loop(void)
     TEST_ASSERT_TRUE(compared > 0);
 }
 
+/* An RGB565 texture of tw x th texels (mips where built) over texels, its
+ * keyed twin (test_fast_loops_match_generic_loop), and nt random triangles
+ * from seed: texels a pixel from ~1/4 (even ones) to ~4 (odd ones, u and v
+ * within +-far), vertex colours anywhere. */
+static void twin_textures_and_triangles(uint16_t *texels, int ntex, int tw, int th, fxl_texture_t *tex,
+                                        fxl_texture_t *keyed, fxl_vertex_t (*tris)[3], int nt, uint32_t seed,
+                                        double far)
+{
+    int i, k;
+    fill_unkeyed(texels, ntex);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(tex, texels, tw, th, FXL_TEXFMT_RGB565,
+                                                   FXL_HAVE_MIPMAP ? 6u : 1u));
+    keyed_twin_texture(tex, keyed);
+    lcg_state = seed;
+    for (k = 0; k < nt; k++)
+        for (i = 0; i < 3; i++) {
+            const double span = k % 2 ? far : 0.3;
+            tris[k][i] = test_vertex(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
+                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-span, span),
+                                     rnd_range(-span, span), (uint16_t)(rnd() & 0xFFFFu));
+        }
+}
+
 /* MODULATE draws of RGB565 repeat textures take their own pixel loop in
  * speed builds (span.c, seg_modulate) inside the generic walk; every pixel
  * and depth value must be seg_generic's (reached through a colour key no
@@ -2244,21 +2267,9 @@ void test_modulate_loop_matches_generic_loop(void)
     fxl_texture_t tex, keyed;
     fxl_draw_t d, dg;
     char msg[200];
-    int i, k, cfg, compared = 0, covered = 0;
+    int k, cfg, compared = 0, covered = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
-    fill_unkeyed(texels, NTEX);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565,
-                                                   FXL_HAVE_MIPMAP ? 6u : 1u));
-    keyed_twin_texture(&tex, &keyed);
-    lcg_state = 4242u;
-    for (k = 0; k < NT; k++)
-        for (i = 0; i < 3; i++) {
-            /* texels a pixel from ~1/4 to ~4 (the levels), vertex colours anywhere */
-            const double span = k % 2 ? 4.0 : 0.3;
-            tris[k][i] = test_vertex(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
-                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-span, span),
-                                     rnd_range(-span, span), (uint16_t)(rnd() & 0xFFFFu));
-        }
+    twin_textures_and_triangles(texels, NTEX, TW, TH, &tex, &keyed, tris, NT, 4242u, 4.0);
     for (cfg = 0; cfg < 4 * 2 * 2 * 2 * 2 * 3 * 2; cfg++) {
         const int pm = cfg % 4, depth = (cfg / 4) & 1, swap = (cfg / 8) & 1, clip = (cfg / 16) & 1;
         const int bil = (cfg / 32) & 1, mip = (cfg / 64) % 3, gouraud = cfg / 192;
@@ -2306,20 +2317,9 @@ void test_generic_plain_taps_match_wrapped_taps(void)
     fxl_texture_t tex, keyed;
     fxl_draw_t d, dg;
     char msg[200];
-    int i, k, cfg, compared = 0, covered = 0;
+    int k, cfg, compared = 0, covered = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
-    fill_unkeyed(texels, NTEX);
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, TW, TH, FXL_TEXFMT_RGB565,
-                                                   FXL_HAVE_MIPMAP ? 6u : 1u));
-    keyed_twin_texture(&tex, &keyed);
-    lcg_state = 9090u;
-    for (k = 0; k < NT; k++)
-        for (i = 0; i < 3; i++) {
-            const double span = k % 2 ? 5.0 : 0.3;
-            tris[k][i] = test_vertex(rnd_range(-W / 2, W + W / 2) + 0.1 * i, rnd_range(-H / 2, H + H / 2),
-                                     0.05 + (rnd() % 950) / 1000.0, rnd_range(-span, span),
-                                     rnd_range(-span, span), (uint16_t)(rnd() & 0xFFFFu));
-        }
+    twin_textures_and_triangles(texels, NTEX, TW, TH, &tex, &keyed, tris, NT, 9090u, 5.0);
     for (cfg = 0; cfg < 4 * 2 * 2 * 2 * 3 * 2; cfg++) {
         const int pm = cfg % 4, swap = (cfg / 4) & 1, clip = (cfg / 8) & 1, bil = (cfg / 16) & 1;
         const int mip = (cfg / 32) % 3, decal = cfg / 96;
