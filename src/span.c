@@ -502,8 +502,8 @@ static FXL__HOT_INLINE uint32_t modulate565(uint32_t t, uint32_t c)
                        (c & 31u) + 1u);
 }
 
-/* A segment loop's running values (seg_generic, seg_modulate), from the
- * segment s, and its depth modes. */
+/* A segment loop's running values (seg_modulate_full), from the segment
+ * s, and its depth modes. */
 #define SEG_LOCALS()                                                                                        \
     uint32_t u = s->u, v = s->v, u2 = s->u2, v2 = s->v2, z = s->z;                                        \
     uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;                                                  \
@@ -511,7 +511,7 @@ static FXL__HOT_INLINE uint32_t modulate565(uint32_t t, uint32_t c)
     uint32_t written = 0;                                                                                 \
     const int ztest = s->zb && tri->depth_test, zwrite = s->zb && tri->depth_write
 
-/* One pixel's steps in a segment loop (seg_generic, seg_modulate): u, v
+/* One pixel's steps in a segment loop (seg_modulate_full): u, v
  * (whose steps change in quadratic segments), the second level's u2, v2,
  * z and the Gouraud channels, from the segment s. */
 #if FXL_HAVE_QUAD
