@@ -2227,6 +2227,21 @@ void test_fast_loops_match_generic_loop(void)
     TEST_ASSERT_TRUE(compared > 0);
 }
 
+/* The perspective modes of the keyed-twin comparisons: affine, subdivided,
+ * exact and AUTO (quadratic segments) */
+static const int16_t twin_persp[4] = {FXL_PERSP_AFFINE, 16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
+
+/* A comparison's count of draws and covered pixels, reported, and checked
+ * to have compared something: every draw covers over 100 pixels on average */
+static void report_draws_compared(int compared, int covered)
+{
+    char msg[80];
+    snprintf(msg, sizeof msg, "%d draws compared, %d pixels", compared, covered);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(compared > 0);
+    TEST_ASSERT_TRUE(covered > 100 * compared);
+}
+
 /* An RGB565 texture of tw x th texels (mips where built) over texels, its
  * keyed twin (test_fast_loops_match_generic_loop), and nt random triangles
  * from seed: texels a pixel from ~1/4 (even ones) to ~4 (odd ones, u and v
@@ -2262,7 +2277,6 @@ void test_modulate_loop_matches_generic_loop(void)
 {
     enum { NT = 16, TW = 32, TH = 16, NTEX = TW * TH * 4 / 3 + 1 };
     static uint16_t texels[NTEX], fast[W * H], gen[W * H], zfast[W * H], zgen[W * H];
-    static const int16_t persp[4] = {FXL_PERSP_AFFINE, 16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
     static fxl_vertex_t tris[NT][3];
     fxl_texture_t tex, keyed;
     fxl_draw_t d, dg;
@@ -2277,7 +2291,7 @@ void test_modulate_loop_matches_generic_loop(void)
         const fxl_rect_t cr = {5, 3, W - 7, H - 2};
         fxl_draw_defaults(&d);
         d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
-        d.persp = persp[pm];
+        d.persp = twin_persp[pm];
         d.mip = (uint8_t)(mip == 2 ? FXL_MIP_LINEAR : mip == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
         d.texenv = FXL_TEXENV_MODULATE;
         d.shade = (uint8_t)(gouraud ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
@@ -2286,16 +2300,13 @@ void test_modulate_loop_matches_generic_loop(void)
             continue;
         for (k = 0; k < NT; k++) {
             snprintf(msg, sizeof msg, "bilinear %d mip %d gouraud %d persp %d depth %d swap %d clip %d triangle %d",
-                     bil, mip, gouraud, persp[pm], depth, swap, clip, k);
+                     bil, mip, gouraud, twin_persp[pm], depth, swap, clip, k);
             covered += draw_fast_and_generic(&d, &dg, tris[k], W, H, fmt, depth, clip ? &cr : NULL, fast, zfast,
                                              gen, zgen, msg);
             compared++;
         }
     }
-    snprintf(msg, sizeof msg, "%d draws compared, %d pixels", compared, covered);
-    TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE(compared > 0);
-    TEST_ASSERT_TRUE(covered > 100 * compared);
+    report_draws_compared(compared, covered);
 }
 
 /* seg_generic's plain taps (RGB565 repeat textures without a key: a mask
@@ -2312,7 +2323,6 @@ void test_generic_plain_taps_match_wrapped_taps(void)
 {
     enum { NT = 10, TW = 32, TH = 16, NTEX = TW * TH * 4 / 3 + 1 };
     static uint16_t texels[NTEX], plain[W * H], wrapped[W * H], zplain[W * H], zwrapped[W * H];
-    static const int16_t persp[4] = {FXL_PERSP_AFFINE, 16, FXL_PERSP_EXACT, FXL_PERSP_AUTO};
     static fxl_vertex_t tris[NT][3];
     fxl_texture_t tex, keyed;
     fxl_draw_t d, dg;
@@ -2327,7 +2337,7 @@ void test_generic_plain_taps_match_wrapped_taps(void)
         const fxl_rect_t cr = {5, 3, W - 7, H - 2};
         fxl_draw_defaults(&d);
         d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
-        d.persp = persp[pm];
+        d.persp = twin_persp[pm];
         d.mip = (uint8_t)(mip == 2 ? FXL_MIP_LINEAR : mip == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
         d.texenv = decal ? FXL_TEXENV_DECAL : FXL_TEXENV_REPLACE;
         d.shade = (uint8_t)(decal ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
@@ -2336,16 +2346,13 @@ void test_generic_plain_taps_match_wrapped_taps(void)
             continue;
         for (k = 0; k < NT; k++) {
             snprintf(msg, sizeof msg, "decal %d bilinear %d mip %d persp %d swap %d clip %d triangle %d", decal, bil,
-                     mip, persp[pm], swap, clip, k);
+                     mip, twin_persp[pm], swap, clip, k);
             covered += draw_fast_and_generic(&d, &dg, tris[k], W, H, fmt, !decal, clip ? &cr : NULL, plain, zplain,
                                              wrapped, zwrapped, msg);
             compared++;
         }
     }
-    snprintf(msg, sizeof msg, "%d draws compared, %d pixels", compared, covered);
-    TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE(compared > 0);
-    TEST_ASSERT_TRUE(covered > 100 * compared);
+    report_draws_compared(compared, covered);
 }
 
 /* The MODULATE loop's depth modes against the generic loop: test and
