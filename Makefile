@@ -28,7 +28,7 @@ SHELL := /bin/bash
 # CMake runs its own make; keep ours (jobserver, -j, -n) out of it.
 RUN := env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL
 
-.PHONY: all build configure run test firmware bench stability sanitize cppcheck \
+.PHONY: all build configure run test firmware bench stability sanitize msan cppcheck \
         clean help deps deps-firmware
 
 all: build
@@ -43,6 +43,7 @@ help:
 	@echo "make bench      build, then host_sim/scripts/bench.sh and the stability sweeps"
 	@echo "make stability  build, then host_sim/scripts/stability.sh"
 	@echo "make sanitize   ASan+UBSan Debug build in $(ASAN_DIR)/ and ctest there"
+	@echo "make msan       MemorySanitizer (clang) build in build-msan/: tests, fuzz, sweeps"
 	@echo "make cppcheck   static analysis of src/ and port/ (informational)"
 	@echo "make clean      remove the build directories and $(GALLERY)/"
 
@@ -109,6 +110,10 @@ sanitize: deps
 	$(RUN) $(CMAKE) -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DFXL_SANITIZE=ON $(CMAKE_ARGS)
 	$(RUN) $(CMAKE) --build $(ASAN_DIR) -j $(JOBS)
 	cd $(ASAN_DIR) && $(RUN) $(CTEST) --output-on-failure -j$(CTEST_JOBS)
+
+# Reads of uninitialised memory (clang's MemorySanitizer); skips without clang.
+msan: deps
+	JOBS=$(JOBS) bash host_sim/scripts/msan.sh
 
 # Informational: findings are printed, never fail the target.
 cppcheck:
