@@ -8,7 +8,8 @@
 #      installed; host_sim/scripts/msan.sh: the tests (less the three that
 #      write PNGs through the uninstrumented libpng), 200,000 fuzz cases and
 #      the sweeps built with clang's MemorySanitizer, where clang is
-#      installed (reads of uninitialised memory);
+#      installed (reads of uninitialised memory), and those three under
+#      valgrind's memcheck;
 #   3. host_sim/scripts/config_matrix.sh: the core compiles warning-free in
 #      every documented configuration (FXL_HAVE_*, FXL_FAST_*);
 #      host_sim/scripts/config_tests.sh: the whole test suite and 200,000
