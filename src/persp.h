@@ -262,12 +262,10 @@ static inline int fxl__persp_m_ok(int64_t av)
     return top == 0u || (top == 0x3FFFu && fxl__persp_mant(av) != INT32_MIN);
 }
 
-static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *rc, int eb)
+/* fxl__persp_e's product: the mantissa of av times 1/q's. */
+static FXL__ALWAYS_INLINE int64_t fxl__persp_prod(int64_t av, const fxl__recip_t *rc)
 {
-    const int e = rc->n + eb;
     int32_t m = fxl__persp_mant(av);
-    int64_t prod;
-
     if (!fxl__persp_m_ok(av)) {
         /* Setup scales each attribute below 2^30 plane units, i.e. |m| <
          * 2^31; evaluation error can overshoot by a unit, so saturate. */
@@ -275,18 +273,29 @@ static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *r
     }
     /* r <= 2^31 - 2 (checked exhaustively over all 2^31 values of qn), so
      * both factors fit int32: one SMULL on a Cortex-M, |prod| < 2^62. */
-    prod = fxl__mul_s32(m, (int32_t)rc->r);
-    if (FXL__WORD32 && e <= -33 && e >= -62) {
-        /* Shifts of 33 and more (|a| < 2^29: u, v within 2^13 texels of
-         * the rebased origin) on 32-bit cores (on 64-bit ones the general
-         * case is as short), on 32-bit words only: floor(p / 2^(k-1)) = floor(hi / 2^(k-33)) with
-         * hi = floor(p / 2^32), and floor((t + 1) / 2) = (t >> 1) + (t & 1).
-         * Bit for bit the value of the general case below, without its
-         * 64-bit shift by a variable (~16 Cortex-M4 instructions). */
-        const int32_t hi = (int32_t)fxl__asr64(prod, 32);
-        const int32_t t = fxl__asr32(hi, -e - 33);
-        return (int64_t)fxl__asr32(t, 1) + (int64_t)((uint32_t)t & 1u);
-    }
+    return fxl__mul_s32(m, (int32_t)rc->r);
+}
+
+/* fxl__persp_e's value for an exponent e in [-62, -33] (|a| < 2^29: u, v
+ * within 2^13 texels of the rebased origin), on 32-bit words only:
+ * floor(p / 2^(k-1)) = floor(hi / 2^(k-33)) with hi = floor(p / 2^32), and
+ * floor((t + 1) / 2) = (t >> 1) + (t & 1). Bit for bit the value of the
+ * general case, without its 64-bit shift by a variable (~16 Cortex-M4
+ * instructions); on 64-bit cores the general case is as short. */
+static FXL__ALWAYS_INLINE int32_t fxl__persp_w32(int64_t prod, int e)
+{
+    const int32_t hi = (int32_t)fxl__asr64(prod, 32);
+    const int32_t t = fxl__asr32(hi, -e - 33);
+    return fxl__asr32(t, 1) + (int32_t)((uint32_t)t & 1u);
+}
+
+static FXL__ALWAYS_INLINE int64_t fxl__persp_e(int64_t av, const fxl__recip_t *rc, int eb)
+{
+    const int e = rc->n + eb;
+    const int64_t prod = fxl__persp_prod(av, rc);
+
+    if (FXL__WORD32 && e <= -33 && e >= -62)
+        return fxl__persp_w32(prod, e);   /* 32-bit cores */
     if (e < 0 && e >= -62) {
         /* The common case. Rounding half up, floor shift by k = -e:
          * floor((p + 2^(k-1)) / 2^k) equals floor((floor(p / 2^(k-1)) + 1) / 2),
