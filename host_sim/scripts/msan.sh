@@ -67,20 +67,18 @@ t0=$SECONDS
 pf=$!
 "$dir/bin/fixel-stability" --out "$dir/stability" >"$dir/stability.txt" 2>&1 &
 ps=$!
-if wait "$pf"; then
-    echo "msan fuzz: $(tail -n 1 "$dir/fuzz.txt")"
-else
-    tail -n 40 "$dir/fuzz.txt"
-    echo "msan fuzz: FAILED"
-    status=1
-fi
-if wait "$ps"; then
-    echo "msan stability sweeps: $(tail -n 1 "$dir/stability.txt")"
-else
-    tail -n 40 "$dir/stability.txt"
-    echo "msan stability sweeps: FAILED"
-    status=1
-fi
+# report NAME PID LOG: wait for the background run PID, print its verdict
+report() {
+    if wait "$2"; then
+        echo "msan $1: $(tail -n 1 "$3")"
+    else
+        tail -n 40 "$3"
+        echo "msan $1: FAILED"
+        status=1
+    fi
+}
+report fuzz "$pf" "$dir/fuzz.txt"
+report "stability sweeps" "$ps" "$dir/stability.txt"
 echo "-- msan fuzz and sweeps: $((SECONDS - t0)) s"
 
 # The three left out, where libpng is: valgrind's memcheck follows what any
