@@ -2681,6 +2681,15 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
 }
 #endif
 
+/* generic_walk and correct_t: always inline (GCC), in size builds too,
+ * where each has one caller (no mod copy): left out of line at -Os the walk
+ * sat under a wrapper's frame on the Cortex-M0+ (+24 B of stack, +16 B). */
+#if defined(__GNUC__)
+#define FXL__ONE_BODY inline __attribute__((always_inline))
+#else
+#define FXL__ONE_BODY inline
+#endif
+
 /* What the generic walk's triangle draws; in its copy for seg_modulate's
  * Gouraud draws (mod, draw_span_mod below) the answers those draws give,
  * constants. */
@@ -2695,7 +2704,7 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
  * Out of line: inlined into fxl__draw_span (GCC's choice at -O2 once its
  * plane evaluation was inline) its frame sat under the reciprocal-run
  * walk's too, +248 bytes on the Cortex-M4's deepest draw stack. */
-static FXL__HOT_INLINE void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl,
+static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl,
                                         int32_t xr, int32_t cl, int32_t cr, const int mod)
 {
     int64_t pv[NPLANES];         /* planes past np are 0 (set below, and -O3 sees them set) */
