@@ -2899,7 +2899,7 @@ static FXL__NOINLINE void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn f
  * tests fold away and the plane loops unroll, in the walk and in its
  * corrections (correct_mod); a colour's correction is one word on 32-bit
  * cores. The same arithmetic, so the same values; the firmware example's
- * lit frame at -O2 5.18 M -> 4.92 M Cortex-M4 instructions, +3.4 KB. */
+ * lit frame at -O2 5.18 M -> 4.92 M Cortex-M4 instructions, +3.5 KB. */
 static FXL__NOINLINE void draw_span_mod(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl,
                                         int32_t xr, int32_t cl, int32_t cr)
 {
