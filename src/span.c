@@ -826,6 +826,17 @@ static FXL__ALWAYS_INLINE void recip_at(const fxl__tri_t *tri, int64_t q, fxl__r
     fxl__recip(q, rc);
 }
 
+/* What the generic walk's triangle draws (correct_t, generic_walk); in its
+ * copy for seg_modulate's Gouraud draws (mod: draw_span_mod, correct_mod)
+ * the answers those draws give, constants. */
+#define GW_UV (mod || fxl__has_uv(tri))
+#define GW_COLOR (mod || fxl__has_color(tri))
+#define GW_SIGNED_U (!mod && fxl__signed_u(tri))
+#define GW_SIGNED_V (!mod && fxl__signed_v(tri))
+#define GW_AUTO_ROWS (!mod && tri->auto_seg == 1)
+#define GW_LOD_GRID (!mod && tri->lod_grid)
+#define GW_CORRECT(p) (mod ? correct_mod(tri, pv, (p)) : correct(tri, pv, (p)))
+
 /* A correction point: z, and u, v and the colours at pv. mod: a Gouraud
  * seg_modulate draw in the generic walk's copy draw_span_mod (repeat axes,
  * no AUTO), whose tests fold away. */
@@ -845,16 +856,16 @@ static FXL__HOT_INLINE void correct_t(const fxl__tri_t *tri, const int64_t pv[NP
 #if FXL_HAVE_AUTO
     pt->g = !mod && fxl__auto_quad(tri) ? fxl__quad_g(tri, &rc) : 0;
 #endif
-    if (mod || fxl__has_uv(tri)) {
+    if (GW_UV) {
         int64_t u = fxl__persp(pv[PA + FXL__AU], &rc, tri->a_shift[FXL__AU] + (int)tri->tex->log2_w);
         int64_t v = fxl__persp(pv[PA + FXL__AV], &rc, tri->a_shift[FXL__AV] + (int)tri->tex->log2_h);
         /* Repeat/mirror: modulo 2^32 is exact (the period divides it). */
-        pt->a[FXL__AU] = !mod && fxl__signed_u(tri) ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
-        pt->a[FXL__AV] = !mod && fxl__signed_v(tri) ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
+        pt->a[FXL__AU] = GW_SIGNED_U ? sat_i32_bits(u) : (uint32_t)(uint64_t)u;
+        pt->a[FXL__AV] = GW_SIGNED_V ? sat_i32_bits(v) : (uint32_t)(uint64_t)v;
         pt->u64 = u;
         pt->v64 = v;
     }
-    if (mod || fxl__has_color(tri)) {
+    if (GW_COLOR) {
         static const int64_t cmax[3] = {31 << 16, 63 << 16, 31 << 16};
         for (i = 0; i < 3; i++) {
             if (mod && FXL__WORD32) {
@@ -2690,16 +2701,6 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
 #define FXL__ONE_BODY inline
 #endif
 
-/* What the generic walk's triangle draws; in its copy for seg_modulate's
- * Gouraud draws (mod, draw_span_mod below) the answers those draws give,
- * constants. */
-#define GW_UV (mod || fxl__has_uv(tri))
-#define GW_COLOR (mod || fxl__has_color(tri))
-#define GW_SIGNED_U (!mod && fxl__signed_u(tri))
-#define GW_SIGNED_V (!mod && fxl__signed_v(tri))
-#define GW_AUTO_ROWS (!mod && tri->auto_seg == 1)
-#define GW_LOD_GRID (!mod && tri->lod_grid)
-
 /* The generic walk: any attribute set, any seg function (or a probe).
  * Out of line: inlined into fxl__draw_span (GCC's choice at -O2 once its
  * plane evaluation was inline) its frame sat under the reciprocal-run
@@ -2742,10 +2743,7 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
         pv[i] = 0;
     point_zero(&p0);
     point_zero(&p1);
-    if (mod)
-        correct_mod(tri, pv, &p0);
-    else
-        correct(tri, pv, &p0);
+    GW_CORRECT(&p0);
 #if FXL_HAVE_MIPMAP
     int32_t lod_held = 0;   /* AUTO: the LOD of the latest grid point */
 #endif
@@ -2783,10 +2781,7 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
          * segment of 2^k it is gpxN) */
         for (i = 0; i < np; i++)
             pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
-        if (mod)
-            correct_mod(tri, pv, &p1);
-        else
-            correct(tri, pv, &p1);
+        GW_CORRECT(&p1);
 #define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
         a = x > cl ? x : cl;
@@ -2885,6 +2880,7 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
 #undef GW_SIGNED_V
 #undef GW_AUTO_ROWS
 #undef GW_LOD_GRID
+#undef GW_CORRECT
 
 static FXL__NOINLINE void draw_span_generic(const fxl__tri_t *tri, fxl__seg_fn fn, int32_t row, int32_t xl,
                                             int32_t xr, int32_t cl, int32_t cr)
