@@ -162,8 +162,9 @@ static inline int fit_shift(const int64_t a[3], int bits)
  * its vertex values): half the 2^31 of the short way. 2 for clamp and
  * border with a vertex at 2^31 - 2^16 q16 texels or more from 0: its
  * correction points may saturate (span.c, sat_i32_bits), and a step
- * towards a saturated value crosses the texture at the wrong pixel. */
-static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[3])
+ * towards a saturated value crosses the texture at the wrong pixel. Also
+ * gives the rebased values' range, lowest and highest. */
+static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[3], int64_t range[2])
 {
     int32_t mn = c[0], mx = c[0], base = 0;
     uint32_t lim = 0x7FFF0000u;   /* clamp/border: 2^31 - 2^16 */
@@ -183,6 +184,11 @@ static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[
     }
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
+    /* the rebased range as q16 texels of level 0 (span.c, lod_bound_hi),
+     * exact: mn - base is below 2^17 (repeat, mirror) or mn (clamp,
+     * border), |mx - base| below 2^32, lg <= 15 */
+    range[0] = (int64_t)fxl__i32_of_bits((uint32_t)mn - (uint32_t)base) * (int32_t)(1 << lg);
+    range[1] = (int64_t)((uint64_t)((int64_t)mx - base) * (1u << lg));
     lim >>= lg;
     if ((int64_t)mx - base >= (int64_t)lim || (FXL_HAVE_GENERIC && mn - base <= -(int64_t)lim))
         return 1 + (wrap > FXL_WRAP_MIRROR);
@@ -218,7 +224,7 @@ static FXL__SETUP_INLINE void uv_plane(fxl__tri_t *tri, const fxl_vertex_t v[3],
     for (i = 0; i < 3; i++)
         c[i] = ax ? v[i].v : v[i].u;
     tri->uv_wide |= (uint8_t)rebase(c, (fxl_wrap_t)(ax ? tri->tex->wrap_v : tri->tex->wrap_u),
-                                    ax ? tri->tex->log2_h : tri->tex->log2_w, a);
+                                    ax ? tri->tex->log2_h : tri->tex->log2_w, a, tri->lod_a[ax]);
 #if FXL_HAVE_MIPMAP
     if (tri->draw->lod == FXL_LOD_SEGMENT && tri->draw->mip != FXL_MIP_NONE)   /* span.c, lod_setup */
         tri->uv_len[ax] = (uint8_t)fit_shift(a, 0);

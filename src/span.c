@@ -1062,9 +1062,14 @@ static FXL__SF_INLINE int32_t lod_len2_q8(int64_t a, int64_t b)
 
 /* x >> k (floor) saturated to int32, on 32-bit words: u, v lie within the
  * vertices' range, so the saturation only guards against a broken bound. */
+#if defined(__OPTIMIZE_SIZE__)
+/* one copy for u and v: 40 B less, which keeps the core within 16 KiB */
+static FXL__NOINLINE int32_t lod_coord(int64_t x, int k)
+#else
 static FXL__SF_INLINE int32_t lod_coord(int64_t x, int k)
+#endif
 {
-    const int64_t y = k ? fxl__asr64(x, k) : x;
+    const int64_t y = k ? fxl__asr64(x, k) : x;   /* k is mostly 0: ~9 Cortex-M4 instructions less */
     const uint32_t lo = (uint32_t)(uint64_t)y;
     const int32_t hi = fxl__i32_of_bits((uint32_t)((uint64_t)y >> 32));
     if (hi != fxl__asr32(fxl__i32_of_bits(lo), 31))
@@ -1157,6 +1162,76 @@ static FXL__NOINLINE int32_t lod_at_lq_xyc(const fxl__tri_t *tri, int32_t lq, in
 }
 #endif
 
+/* The largest LOD lod_at gives inside the triangle: at any q (lod_lq
+ * clamps it into [q_min, q_max]) and any u, v in the vertices' range
+ * (setup.c, rebase), where u, v of every point of the triangle lie. lod_at
+ * is monotonic in what it computes from them: it falls as log2 q rises
+ * (fxl__log2_q8 is non-decreasing), and each direction's lod_len2_q8 does
+ * not fall when either magnitude rises (within one shift s the truncated
+ * x, y cannot fall; where the larger magnitude reaches 2^(15 + s + 1),
+ * x = 2^15 - 1 becomes 2^14 and y becomes y >> 1: 4 (x'^2 + y'^2) >=
+ * x^2 + y^2 + 2^16 - 2 y > x^2 + y^2, and log2_q8 of 4 l is log2_q8 of l
+ * plus 512). The magnitudes |S - u' m_q| and |S - v' m_q| are linear in
+ * u' and v' inside the absolute value, so each is largest at an end of
+ * its range: each direction's length is largest at a corner of the range,
+ * and lod_at, the larger of the two, is largest at one of the four
+ * corners at q_min. That is lod_at's own arithmetic with no margin
+ * (tests/test_lod.c checks it against lod_at at random points, and
+ * against lod_at at the corners). */
+#if defined(__OPTIMIZE_SIZE__)
+/* Size builds: lod_at at the four corners, no code of its own; it stops at
+ * the first above limit (the triangle cannot stay at level 0: a minified
+ * one mostly stops at the first corner), returning that one. */
+static int32_t lod_bound_hi(const fxl__tri_t *tri, int32_t limit)
+{
+    int32_t hi = INT32_MIN;
+    int i;
+    for (i = 0; i < 4 && hi <= limit; i++) {
+        const int32_t l = tri->lod_at(tri, tri->q_min, tri->lod_a[0][i & 1], tri->lod_a[1][i >> 1]);
+        if (l > hi)
+            hi = l;
+    }
+    return hi;
+}
+#else
+/* |S - c m| at its largest for c in [lo, hi]: at an end. (|S| <= 2^61,
+ * |c m| <= 2^62: no overflow.) */
+static int64_t lod_num_max(int64_t s, int32_t m, int32_t lo, int32_t hi)
+{
+    const int64_t a = s - fxl__mul_s32(lo, m), b = s - fxl__mul_s32(hi, m);
+    const int64_t ma = a < 0 ? -a : a, mb = b < 0 ? -b : b;
+    return ma > mb ? ma : mb;
+}
+
+/* Speed builds: the same largest value from each direction's largest
+ * magnitudes, one length each (lod_at at four corners is ~2.4 times the
+ * work); limit unused. */
+static int32_t lod_bound_hi(const fxl__tri_t *tri, int32_t limit)
+{
+    int32_t c[4], d[2];
+    int i, g;
+    (void)limit;
+    for (i = 0; i < 4; i++)   /* u low, high; v low, high, as lod_at's u', v' */
+        c[i] = lod_coord(tri->lod_a[i >> 1][i & 1], tri->lod_ash);
+    for (g = 0; g < 2; g++)
+        d[g] = lod_len2_q8(lod_num_max(tri->lod_s[g][0], tri->lod_mq[g], c[0], c[1]),
+                           lod_num_max(tri->lod_s[g][1], tri->lod_mq[g], c[2], c[3])) +
+               tri->lod_e512[g];
+    return fxl__asr32(d[0] > d[1] ? d[0] : d[1], 1) - lod_lq(tri, tri->q_min) - 16 * 256;
+}
+#endif
+
+/* lod_at of a triangle whose LOD stays at or below level 0 with its bias
+ * (lod_bound_hi): lod_hi, which seg_lod takes to 0 as it would every value
+ * of lod_at there. ~140 x86-64 instructions a segment less. */
+static FXL__NOINLINE int32_t lod_at_const(const fxl__tri_t *tri, int64_t qv, int64_t u64, int64_t v64)
+{
+    (void)qv;
+    (void)u64;
+    (void)v64;
+    return tri->lod_hi;
+}
+
 /* lod_at's per-triangle factors (fxl__span_setup). */
 static void lod_setup(fxl__tri_t *tri)
 {
@@ -1168,18 +1243,22 @@ static void lod_setup(fxl__tri_t *tri)
     int ash = tri->uv_len[0] + (int)tri->tex->log2_w + 1 - 30;
     const int ashv = tri->uv_len[1] + (int)tri->tex->log2_h + 1 - 30;
     fxl__sf_t s[2];
+    int g;
 
     if (ashv > ash)
         ash = ashv;
     if (ash < 0)
         ash = 0;
     tri->lod_ash = (uint8_t)ash;
-    s[0] = fxl__sf_make(tri->gpx[PA + FXL__AU], shu);
-    s[1] = fxl__sf_make(tri->gpx[PA + FXL__AV], shv);
-    lod_scale(tri, 0, s, fxl__sf_make(tri->gpx[PQ], 0), ash);
-    s[0] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE), shu);
-    s[1] = fxl__sf_make((int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE), shv);
-    lod_scale(tri, 1, s, fxl__sf_make((int64_t)((uint64_t)tri->q.gy * FXL__ONE), 0), ash);
+    for (g = 0; g < 2; g++) {
+        /* direction g's gradients of the u, v and q planes: a pixel (x), a row (y) */
+        const int64_t gu = g ? (int64_t)((uint64_t)tri->a[FXL__AU].gy * FXL__ONE) : tri->gpx[PA + FXL__AU];
+        const int64_t gv = g ? (int64_t)((uint64_t)tri->a[FXL__AV].gy * FXL__ONE) : tri->gpx[PA + FXL__AV];
+        const int64_t gq = g ? (int64_t)((uint64_t)tri->q.gy * FXL__ONE) : tri->gpx[PQ];
+        s[0] = fxl__sf_make(gu, shu);
+        s[1] = fxl__sf_make(gv, shv);
+        lod_scale(tri, g, s, fxl__sf_make(gq, 0), ash);
+    }
     /* A direction in which q does not change (lod_mq 0: a level floor's
      * rows, an upright wall's columns) has a derivative length that does
      * not depend on u, v: lod_at reads it instead of measuring it per
@@ -1205,6 +1284,19 @@ static void lod_setup(fxl__tri_t *tri)
         tri->lod_at_lq = tri->gpx[PQ] != 0 || !(c & 1) ? 0 : c == 3 ? lod_at_lq_xyc : lod_at_lq_xc;
     }
 #endif
+    /* A triangle whose LOD stays at or below level 0 with its bias (a
+     * magnified texture: 1,696 of the firmware example's lit sphere's
+     * 1,982 per-segment LODs) takes level 0 at every segment, with no LOD
+     * to compute. Every build decides so, alike: a correction point whose
+     * rounding stepped past the vertex range, where lod_at could give
+     * more, takes level 0 too (one determinism stress case changed). */
+    tri->lod_hi = lod_bound_hi(tri, -tri->draw->lod_bias_q8);
+    if (tri->lod_hi + tri->draw->lod_bias_q8 <= 0) {
+        tri->lod_at = lod_at_const;
+#if !defined(__OPTIMIZE_SIZE__)
+        tri->lod_at_lq = 0;   /* (always 0 at -Os) */
+#endif
+    }
 }
 
 #endif

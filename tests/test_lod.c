@@ -292,6 +292,167 @@ void test_lod_per_segment_exact_at_extremes(void)
     TEST_ASSERT_GREATER_THAN(1000, total);
 }
 
+/* lod_bound_hi (span.c): the largest per-segment LOD over a triangle,
+ * which lets a triangle that stays at level 0 skip lod_at. The probe
+ * takes C, lod_at's largest value at the four corners of the vertex range
+ * at q_min, and calls lod_at at random points of the range (ends
+ * included) and any q (lod_at clamps q): none may give more than C. Then
+ * the triangle is drawn at the bias that puts C one q8 step above level
+ * 0 (lod_at must stay lod_at) and at the bias that puts C at level 0
+ * (lod_hi must be C, lod_at one value, every segment at LOD 0). */
+static uint32_t bound_rng = 2463534242u;
+static uint32_t bound_next(void)
+{
+    bound_rng ^= bound_rng << 13;
+    bound_rng ^= bound_rng >> 17;
+    bound_rng ^= bound_rng << 5;
+    return bound_rng;
+}
+
+/* a random value in [lo, hi] (int64), the ends one time in four */
+static int64_t bound_in(int64_t lo, int64_t hi)
+{
+    const uint64_t w = (uint64_t)hi - (uint64_t)lo;
+    const uint32_t r = bound_next();
+    if (r % 4u == 0u)
+        return r & 4u ? hi : lo;
+    return (int64_t)((uint64_t)lo + (((uint64_t)bound_next() << 32 | bound_next()) % (w + 1u)));
+}
+
+static int bound_seen, bound_const, bound_nonzero;
+static int32_t bound_corners, bound_max, bound_tri_hi;
+static int64_t bound_calls, bound_gap[3000];
+static char bound_msg[200];
+static uint32_t probe_bound(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    if (s->lod_q8 != 0)
+        bound_nonzero = 1;
+    if (!bound_seen) {
+        bound_seen = 1;
+        bound_tri_hi = tri->lod_hi;
+        if (tri->lod_per_segment && tri->nlevels > 1) {
+            int k;
+            int32_t first = 0;
+            bound_const = 1;
+            bound_corners = INT32_MIN;
+            for (k = 0; k < 4; k++) {
+                const int32_t r = tri->lod_at(tri, tri->q_min, tri->lod_a[0][k & 1], tri->lod_a[1][k >> 1]);
+                if (r > bound_corners)
+                    bound_corners = r;
+            }
+            for (k = 0; k < 200; k++) {
+                const int64_t q = (int64_t)(((uint64_t)tri->q_min >> (bound_next() % 8)) +
+                                            (uint64_t)(tri->q_max - tri->q_min + 1) * (bound_next() % 5u) / 2u);
+                const int64_t u64 = bound_in(tri->lod_a[0][0], tri->lod_a[0][1]);
+                const int64_t v64 = bound_in(tri->lod_a[1][0], tri->lod_a[1][1]);
+                const int32_t r = tri->lod_at(tri, q, u64, v64);
+                if (k == 0)
+                    first = r;
+                if (r != first)
+                    bound_const = 0;
+                if (r > bound_max)
+                    bound_max = r;
+                bound_calls++;
+                if (r > bound_corners) {
+                    snprintf(bound_msg, sizeof bound_msg,
+                             "lod_at %d above its largest at the corners %d, at q %lld u %lld v %lld", (int)r,
+                             (int)bound_corners, (long long)q, (long long)u64, (long long)v64);
+                    TEST_FAIL_MESSAGE(bound_msg);
+                }
+            }
+        }
+    }
+    return (uint32_t)s->n;
+}
+
+static int cmp_i64(const void *a, const void *b)
+{
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+void test_lod_bound_holds_inside_the_triangle_and_settles_level_0(void)
+{
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
+    static uint16_t buf[320 * 240];
+    fxl_target_t tg;
+    fxl_texture_t t;
+    fxl_draw_t d;
+    int i, checked = 0, settled = 0, varied = 0;
+    tex512(&t);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
+    probe_base = buf;
+    fxl_draw_defaults(&d);
+    d.texture = &t;
+    d.lod = FXL_LOD_SEGMENT;
+    for (i = 0; i < 3000; i++) {
+        fxl_vertex_t v[3];
+        int k, pass;
+        int32_t c = 0;
+        /* sizes from slivers to far past the target, depths from flat to
+         * 2^24 apart, coordinates from a texel to the whole int32 range */
+        const int big = (int)(bound_next() % 16u);
+        const int wide = (int)(bound_next() % 31u);
+        t.wrap_u = t.wrap_v = (uint8_t)(bound_next() % 2u ? FXL_WRAP_CLAMP : FXL_WRAP_REPEAT);
+        d.mip = bound_next() % 2u ? FXL_MIP_LINEAR : FXL_MIP_NEAREST;
+        {
+            static const int16_t modes[4] = {FXL_PERSP_EXACT, 16, 8, FXL_PERSP_AUTO};
+            d.persp = modes[bound_next() % 4u];
+        }
+        for (k = 0; k < 3; k++) {
+            v[k].x = (fxl_q16_t)(int32_t)((bound_next() % (320u << big)) * 65536.0 / (1 << big) - 40 * 65536.0);
+            v[k].y = (fxl_q16_t)(int32_t)((bound_next() % (240u << big)) * 65536.0 / (1 << big) - 30 * 65536.0);
+            v[k].inv_w = 1u + (bound_next() >> (bound_next() % 25u));
+            v[k].u = fxl__i32_of_bits(bound_next() >> wide);
+            v[k].v = fxl__i32_of_bits(bound_next() >> wide);
+            v[k].color = 0xFFFF;
+        }
+        /* pass 0: the largest bias (lod_at itself unless C is 128 levels
+         * below level 0, and then C is lod_hi), C and the random points;
+         * pass 1: C one q8 step above level 0; pass 2: C at level 0 */
+        for (pass = 0; pass < 3; pass++) {
+            int64_t bias = INT16_MAX;
+            if (pass > 0) {
+                bias = (pass == 1 ? 1 : 0) - (int64_t)c;
+                if (bias < INT16_MIN || bias > INT16_MAX)
+                    break;
+            }
+            d.lod_bias_q8 = (int16_t)bias;
+            bound_seen = 0;
+            bound_const = 0;
+            bound_nonzero = 0;
+            bound_max = INT32_MIN;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, v, NULL, probe_bound));
+            if (!bound_seen || bound_max == INT32_MIN)
+                break;   /* culled, nothing inside the target, or no per-segment LOD */
+            snprintf(bound_msg, sizeof bound_msg, "triangle %d pass %d: corners' largest %d, lod_hi %d, bias %d", i,
+                     pass, (int)bound_corners, (int)bound_tri_hi, (int)bias);
+            if (pass == 0) {
+                c = bound_corners;
+                bound_gap[checked++] = (int64_t)c - bound_max;
+                varied += !bound_const;
+            }
+            /* the decision: the shortcut exactly where C is at level 0 */
+            TEST_ASSERT_TRUE_MESSAGE(bound_corners == c, bound_msg);
+            if (c + bias <= 0) {
+                TEST_ASSERT_TRUE_MESSAGE(bound_tri_hi == c && bound_const && !bound_nonzero, bound_msg);
+                settled += pass == 2;
+            } else {
+                TEST_ASSERT_TRUE_MESSAGE(bound_tri_hi + bias > 0 && bound_tri_hi <= c, bound_msg);
+            }
+        }
+    }
+    qsort(bound_gap, (size_t)checked, sizeof bound_gap[0], cmp_i64);
+    snprintf(bound_msg, sizeof bound_msg,
+             "%d triangles, %lld lod_at calls at or below the corners' largest (median gap to the largest seen "
+             "%lld q8); %d settled at level 0",
+             checked, (long long)bound_calls, checked ? (long long)bound_gap[checked / 2] : 0LL, settled);
+    TEST_MESSAGE(bound_msg);
+    TEST_ASSERT_GREATER_THAN(1000, checked);
+    TEST_ASSERT_GREATER_THAN(checked / 2, varied);
+    TEST_ASSERT_GREATER_THAN(1000, settled);
+}
+
 /* Bias shifts the LOD by exactly the bias (before clamping); per-triangle
  * mode uses the triangle value for every pixel. */
 void test_lod_bias_and_per_triangle_mode(void)
@@ -804,6 +965,8 @@ void test_log2_q8_forms_agree(void)
     int k, e;
     for (x = 1; x < (1u << 20); x++) {
         const int32_t want = fxl__log2_q8(x);
+        /* non-decreasing (lod_bound's monotonic argument rests on it) */
+        TEST_ASSERT_TRUE(x == 1u || want >= fxl__log2_q8(x - 1u));
         TEST_ASSERT_EQUAL_INT32(want, fxl__log2_q8_32(x));
         if (x >= 256)
             TEST_ASSERT_EQUAL_INT32(want, fxl__log2_q8_u32(x));
@@ -847,6 +1010,7 @@ int main(void)
     RUN_TEST(test_lod_per_triangle_keeps_small_differences_and_texture_slivers_exact);
     RUN_TEST(test_lod_per_segment_matches_exact_derivatives_on_floor);
     RUN_TEST(test_lod_per_segment_exact_at_extremes);
+    RUN_TEST(test_lod_bound_holds_inside_the_triangle_and_settles_level_0);
     RUN_TEST(test_lod_bias_and_per_triangle_mode);
     RUN_TEST(test_trilinear_weights_blend_levels_by_lod_fraction);
     RUN_TEST(test_auto_lod_is_held_on_a_16_pixel_grid_whatever_the_clip);
