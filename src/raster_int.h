@@ -146,15 +146,6 @@ typedef struct fxl__tri {
     int32_t lod_e512[2];
     int32_t lod_dirc[2];         /* direction g's 2 log2 length when lod_mq[g] == 0 (then independent of u, v) */
     uint8_t lod_ash;
-    /* the rebased vertex range of u (0) and v (1) [0: lowest, 1: highest],
-     * q16 texels of level 0 (setup.c, rebase), where the coordinates of
-     * every point of the triangle lie; lod_hi, the largest LOD lod_at gives
-     * there (span.c, lod_bound_hi; where that is above level 0 with the
-     * bias, size builds may hold a smaller value, still above it): a
-     * triangle whose lod_hi is at or below level 0 with its bias takes
-     * lod_at_const, which gives lod_hi */
-    int64_t lod_a[2][2];
-    int32_t lod_hi;
     /* the per-segment LOD (span.c, lod_setup chooses the copy: the ones
      * for lod_mq[g] == 0 read lod_dirc[g]) */
     int32_t (*lod_at)(const struct fxl__tri *tri, int64_t qv, int64_t u64, int64_t v64);
@@ -189,6 +180,17 @@ typedef struct fxl__tri {
     uint8_t fast_id;                    /* span.c: specialised span function, 0 none */
 
     fxl_stats_t *stats;
+
+    /* The per-segment LOD's bound (last, so that the walks' fields above
+     * keep their offsets): the rebased vertex range of u (0) and v (1)
+     * [0: lowest, 1: highest], q16 texels of level 0 (setup.c, rebase),
+     * where the coordinates of every point of the triangle lie; lod_hi,
+     * the largest LOD lod_at gives there (span.c, lod_bound_hi; where that
+     * is above level 0 with the bias, it may hold a smaller value, still
+     * above it). A triangle whose lod_hi is at or below level 0 with its
+     * bias takes lod_at_const, which gives lod_hi. */
+    int64_t lod_a[2][2];
+    int32_t lod_hi;
 } fxl__tri_t;
 
 /* What a triangle draws, as constants where the configuration allows only

@@ -184,11 +184,14 @@ static int rebase(const int32_t c[3], fxl_wrap_t wrap, uint32_t lg, int64_t out[
     }
     for (i = 0; i < 3; i++)
         out[i] = (int64_t)c[i] - base;
-    /* the rebased range as q16 texels of level 0 (span.c, lod_bound_hi),
-     * exact: mn - base is below 2^17 (repeat, mirror) or mn (clamp,
-     * border), |mx - base| below 2^32, lg <= 15 */
-    range[0] = (int64_t)fxl__i32_of_bits((uint32_t)mn - (uint32_t)base) * (int32_t)(1 << lg);
-    range[1] = (int64_t)((uint64_t)((int64_t)mx - base) * (1u << lg));
+    /* the rebased range as q16 texels of level 0 (span.c, lod_bound_hi;
+     * builds without mip levels have no use for it), exact: mn - base is
+     * below 2^17 (repeat, mirror) or mn (clamp, border), |mx - base| below
+     * 2^32, lg <= 15 */
+    if (FXL_HAVE_MIPMAP) {
+        range[0] = (int64_t)fxl__i32_of_bits((uint32_t)mn - (uint32_t)base) * (int32_t)(1 << lg);
+        range[1] = (int64_t)((uint64_t)((int64_t)mx - base) * (1u << lg));
+    }
     lim >>= lg;
     if ((int64_t)mx - base >= (int64_t)lim || (FXL_HAVE_GENERIC && mn - base <= -(int64_t)lim))
         return 1 + (wrap > FXL_WRAP_MIRROR);

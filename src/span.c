@@ -1205,19 +1205,24 @@ static int64_t lod_num_max(int64_t s, int32_t m, int32_t lo, int32_t hi)
 
 /* Speed builds: the same largest value from each direction's largest
  * magnitudes, one length each (lod_at at four corners is ~2.4 times the
- * work); limit unused. */
+ * work); it too stops once above limit (after direction x). */
 static int32_t lod_bound_hi(const fxl__tri_t *tri, int32_t limit)
 {
-    int32_t c[4], d[2];
+    const int32_t lq = lod_lq(tri, tri->q_min) + 16 * 256;
+    int32_t c[4], hi = INT32_MIN;
     int i, g;
-    (void)limit;
     for (i = 0; i < 4; i++)   /* u low, high; v low, high, as lod_at's u', v' */
         c[i] = lod_coord(tri->lod_a[i >> 1][i & 1], tri->lod_ash);
-    for (g = 0; g < 2; g++)
-        d[g] = lod_len2_q8(lod_num_max(tri->lod_s[g][0], tri->lod_mq[g], c[0], c[1]),
-                           lod_num_max(tri->lod_s[g][1], tri->lod_mq[g], c[2], c[3])) +
-               tri->lod_e512[g];
-    return fxl__asr32(d[0] > d[1] ? d[0] : d[1], 1) - lod_lq(tri, tri->q_min) - 16 * 256;
+    for (g = 0; g < 2 && hi <= limit; g++) {
+        const int32_t d = lod_len2_q8(lod_num_max(tri->lod_s[g][0], tri->lod_mq[g], c[0], c[1]),
+                                      lod_num_max(tri->lod_s[g][1], tri->lod_mq[g], c[2], c[3])) +
+                          tri->lod_e512[g];
+        /* lod_at's max(lx, ly) / 2, one direction at a time (the floor
+         * shift is monotonic) */
+        if (fxl__asr32(d, 1) - lq > hi)
+            hi = fxl__asr32(d, 1) - lq;
+    }
+    return hi;
 }
 #endif
 
@@ -1290,7 +1295,7 @@ static void lod_setup(fxl__tri_t *tri)
      * to compute. Every build decides so, alike: a correction point whose
      * rounding stepped past the vertex range, where lod_at could give
      * more, takes level 0 too (one determinism stress case changed). */
-    tri->lod_hi = lod_bound_hi(tri, -tri->draw->lod_bias_q8);
+    tri->lod_hi = lod_bound_hi(tri, -tri->draw->lod_bias_q8);   /* above the limit: maybe not the largest */
     if (tri->lod_hi + tri->draw->lod_bias_q8 <= 0) {
         tri->lod_at = lod_at_const;
 #if !defined(__OPTIMIZE_SIZE__)
