@@ -1063,7 +1063,7 @@ static FXL__SF_INLINE int32_t lod_len2_q8(int64_t a, int64_t b)
 /* x >> k (floor) saturated to int32, on 32-bit words: u, v lie within the
  * vertices' range, so the saturation only guards against a broken bound. */
 #if defined(__OPTIMIZE_SIZE__)
-/* one copy for u and v: 40 B less, which keeps the core within 16 KiB */
+/* one copy for u and v: 72 B less, which keeps the core within 16 KiB */
 static FXL__NOINLINE int32_t lod_coord(int64_t x, int k)
 #else
 static FXL__SF_INLINE int32_t lod_coord(int64_t x, int k)
