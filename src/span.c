@@ -1219,8 +1219,9 @@ static int32_t lod_bound_hi(const fxl__tri_t *tri, int32_t limit)
                           tri->lod_e512[g];
         /* lod_at's max(lx, ly) / 2, one direction at a time (the floor
          * shift is monotonic) */
-        if (fxl__asr32(d, 1) - lq > hi)
-            hi = fxl__asr32(d, 1) - lq;
+        const int32_t l = fxl__asr32(d, 1) - lq;
+        if (l > hi)
+            hi = l;
     }
     return hi;
 }
