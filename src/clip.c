@@ -147,11 +147,18 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
     if ((c0 & c1 & c2) != 0) return FXL_OK; /* all outside one plane */
     for (i = 0; i < 3; i++) buf[0][i] = in[i];
     if ((c0 | c1 | c2) != 0) {
+        /* The planes some vertex of the polygon is outside: the inputs', and
+         * each cut point's. A cut point carries t's rounding (q31) times its
+         * edge's length, and with a long edge and a tiny near plane that put
+         * it past a guard plane no input vertex was outside (depth ratios of
+         * ~10^6): skipped, that plane left a corner the projection refuses
+         * (FXL_ERR_RANGE from a valid pipeline and mesh). */
+        int codes = c0 | c1 | c2;
         for (pl = 0; pl < PL_COUNT; pl++) {
             const fxl_clipvert_t *src = buf[cur];
             fxl_clipvert_t *dst = buf[cur ^ 1];
             uint32_t m = 0;
-            if (!((c0 | c1 | c2) & (1 << pl))) continue; /* no input vertex was outside */
+            if (!(codes & (1 << pl))) continue; /* no vertex is outside */
             for (i = 0; i < count; i++) {
                 const fxl_clipvert_t *a = &src[i], *b = &src[(i + 1) % count];
                 int64_t da = plane_dist(xf, pl, a), db = plane_dist(xf, pl, b);
@@ -159,8 +166,13 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
                  * check only guards against rounding making it non-convex. */
                 if (m + 2 > CLIP_SCRATCH) return FXL_ERR_RANGE;
                 if (da >= 0) dst[m++] = *a;
-                if (da >= 0 && db < 0) intersect(xf, pl, a, da, b, db, &dst[m++]);
-                else if (da < 0 && db >= 0) intersect(xf, pl, b, db, a, da, &dst[m++]);
+                if (da >= 0 && db < 0) {
+                    intersect(xf, pl, a, da, b, db, &dst[m]);
+                    codes |= outcode(xf, &dst[m++]);
+                } else if (da < 0 && db >= 0) {
+                    intersect(xf, pl, b, db, a, da, &dst[m]);
+                    codes |= outcode(xf, &dst[m++]);
+                }
             }
             count = m;
             cur ^= 1;

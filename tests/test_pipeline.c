@@ -720,6 +720,41 @@ static fxl_status_t collect_fn(void *user, const fxl_vertex_t tri[3])
     return FXL_OK;
 }
 
+/* A near-plane cut point carries t's rounding times its edge's length: with
+ * a long edge and a tiny near plane (depth ratio ~10^6) it landed past the
+ * lower guard plane, which no input vertex was outside and the clipper then
+ * skipped; the corner's projection, and so fxl_pipeline_emit, returned
+ * FXL_ERR_RANGE for a valid pipeline and an in-range triangle (found by a
+ * review's search). The clipper now clips against every plane some vertex
+ * of the polygon is outside, cut points included. */
+static void test_clip_applies_planes_a_cut_point_is_outside(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t cv[3], poly[FXL_CLIP_MAX_VERTS];
+    fxl_vec3_t pos[3] = {{0, -2033538857, -880613520}, {-32, -32, -14}, {0, -30, -13}};
+    uint16_t idx[3] = {0, 1, 2};
+    fxl_mesh_t m = {pos, NULL, NULL, NULL, 3, idx, 1};
+    collect_t got;
+    uint32_t n, k;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 4096, 3853));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_perspective(&p, FXL_ANGLE_DEG(60), FXL_Q16_ONE, 85, 0));
+    p.cull = FXL_CULL_NONE;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    for (k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_clip(&xf, &pos[k], &cv[k]));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, cv, poly, &n));
+    TEST_ASSERT_TRUE(n >= 3);
+    for (k = 0; k < n; k++) {
+        fxl_vertex_t v;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, fxl_xform_project(&xf, &poly[k], &v), "a clipped corner projects");
+    }
+    got.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &got, NULL));
+    TEST_ASSERT_EQUAL_INT((int)n - 2, got.n);
+}
+
+
 static const fxl_vec3_t quad_pos[4] = {
     {-FXL_Q16_ONE, -FXL_Q16_ONE, FXL_Q16_INT(-4)}, {FXL_Q16_ONE, -FXL_Q16_ONE, FXL_Q16_INT(-4)},
     {FXL_Q16_ONE, FXL_Q16_ONE, FXL_Q16_INT(-4)},   {-FXL_Q16_ONE, FXL_Q16_ONE, FXL_Q16_INT(-4)}};
@@ -1225,6 +1260,7 @@ int main(void)
     RUN_TEST(test_project_packs_channels_rounded_and_clamped);
     RUN_TEST(test_project_and_clip_refuse_a_hand_filled_xform_out_of_range);
     RUN_TEST(test_prepare_and_clip_report_overflow);
+    RUN_TEST(test_clip_applies_planes_a_cut_point_is_outside);
     RUN_TEST(test_emit_culls_by_screen_winding);
     RUN_TEST(test_emit_triangle_through_eye_plane_stays_in_guard_band);
     RUN_TEST(test_emit_argument_and_index_errors);
