@@ -287,7 +287,9 @@ fxl_status_t fxl_mat4_perspective(fxl_mat4_t *m, fxl_angle_t fovy, fxl_q16_t asp
     } else {
         int64_t d = (int64_t)near_q16 - far_q16;   /* < 0 */
         a = div_round(((int64_t)far_q16 + near_q16) * 65536, d);
-        b = 2 * div_round((int64_t)far_q16 * near_q16, d);
+        /* round(2 far near / d): 2 far near < 2^63. (2 round(far near / d)
+         * was a unit off at times, and refused -2^31 + 0.77.) */
+        b = div_round((int64_t)far_q16 * near_q16 * 2, d);
     }
     if (a < -INT32_MAX || b < -INT32_MAX) return FXL_ERR_RANGE;
     fxl_mat4_identity(m);
