@@ -45,6 +45,23 @@ static int binning(const fxl_band_t *b)
     return b->bins != NULL && b->bin_cap >= (uint32_t)b->band_count;
 }
 
+/* Do two of the caller's five buffers share a byte? p[i] is a buffer's
+ * address as uintptr_t (comparing pointers into different objects is
+ * undefined in C), len[i] its bytes (0: unused). By address differences
+ * modulo the address space: a buffer that ends at its top cannot wrap the
+ * test. Carved from one array at wrong offsets, a depth band on a colour
+ * band (or the triangle store on either) drew a wrong image, or sent
+ * half-drawn bands, with no error. */
+static int buffers_overlap(const uintptr_t p[5], const uintptr_t len[5])
+{
+    int i, j;
+    for (i = 0; i < 5; i++)
+        for (j = i + 1; j < 5; j++)
+            if (len[i] && len[j] && ((uintptr_t)(p[i] - p[j]) < len[j] || (uintptr_t)(p[j] - p[i]) < len[i]))
+                return 1;
+    return 0;
+}
+
 fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, uint16_t *buf1,
                            uint16_t *depth, int32_t band_rows, fxl_band_tri_t *tris,
                            uint32_t tri_cap, fxl_band_bin_t *bins, uint32_t bin_cap)
@@ -60,6 +77,18 @@ fxl_status_t fxl_band_init(fxl_band_t *b, fxl_panel_t *panel, uint16_t *buf0, ui
      * with part of it on the wire. */
     if ((int64_t)(band_count - 1) * band_rows > FXL_TARGET_MAX_ORIGIN) return FXL_ERR_RANGE;
     if (bin_cap > 0 && bin_cap < (uint32_t)band_count) return FXL_ERR_NOMEM;
+    {
+        /* the bytes each buffer is used for (width <= 4096 and rows <=
+         * height < 2^16 here; at most 65535 entries of tris and bins are) */
+        const uintptr_t band_bytes = (uintptr_t)panel->width * (uint32_t)band_rows * 2u;
+        const uintptr_t p[5] = {(uintptr_t)buf0, (uintptr_t)buf1, (uintptr_t)depth, (uintptr_t)tris,
+                                (uintptr_t)bins};
+        const uintptr_t len[5] = {band_bytes, band_bytes, depth ? band_bytes : 0u,
+                                  (uintptr_t)(tri_cap > FXL_BAND_MAX_TRIS ? FXL_BAND_MAX_TRIS : tri_cap) *
+                                      sizeof(fxl_band_tri_t),
+                                  (uintptr_t)(bin_cap > 0xFFFFu ? 0xFFFFu : bin_cap) * sizeof(fxl_band_bin_t)};
+        if (buffers_overlap(p, len)) return FXL_ERR_ARG;
+    }
     {
         /* A band the core cannot draw into is refused now rather than
          * mid-frame: a depth band in a build without FXL_HAVE_DEPTH, or a

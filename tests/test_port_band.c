@@ -639,6 +639,23 @@ void test_band_api_errors(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 241, f->store, 4, NULL, 0));
     /* Fewer entries than the 10 band headers. */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_NOMEM, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 4, f->bins, 9));
+    /* Buffers carved from one array must not share a byte: 12-row bands
+     * (320 x 12 pixels) fit twice in buf0; one pixel less apart, or a depth
+     * band on a colour band, or bins on the triangle store, is refused
+     * (FXL_ERR_ARG before the depth band's FXL_HAVE_DEPTH check). */
+    {
+        uint16_t *const half = f->buf0 + 320 * 12;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, half, NULL, 12, f->store, 4, f->bins, 64));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, half - 1, f->depth, 12, f->store, 4, f->bins, 64));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, half - 1, f->buf0, f->depth, 12, f->store, 4, f->bins, 64));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->buf1, 24, f->store, 4, NULL, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, half - 2, 12, f->store, 4, NULL, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, f->depth, 24, f->store, 4,
+                                                         (fxl_band_bin_t *)(void *)&f->store[3], 64));
+        /* the store's four entries end where bins begin: apart */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, NULL, 24, f->store, 3,
+                                                    (fxl_band_bin_t *)(void *)&f->store[3], 10));
+    }
     /* A frame taller than a target's origin reaches is refused at init,
      * not mid-frame with part of it sent, and a failed init leaves the
      * binding it replaces as it was (panel fields set by hand: no preset

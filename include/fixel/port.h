@@ -316,7 +316,8 @@ typedef struct fxl_band {
  * tri_cap and bin_cap count entries of tris and bins (not bytes: see
  * FXL_BAND_TRI_BYTES, FXL_BAND_BIN_BYTES), and at most 65535 of each are
  * used (16-bit links). bins may be NULL with bin_cap 0 (fallback
- * only). Errors: FXL_ERR_ARG (NULL/zero, buf0 == buf1, buf0, buf1 or
+ * only). Errors: FXL_ERR_ARG (NULL/zero, buf0 == buf1, buffers that share a
+ * byte (buf0, buf1, depth, tris, bins over the sizes above), buf0, buf1 or
  * depth at an odd address, a panel whose init failed), FXL_ERR_RANGE (band_rows > height,
  * width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
  * FXL_TARGET_MAX_ORIGIN), FXL_ERR_NOMEM (bin_cap below one header per band
