@@ -73,7 +73,7 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
         num >>= (top - 31);
         den >>= (top - 31);
     }
-    t = (uint32_t)fxl__udiv64((num << 31) + den / 2u, den); /* <= 2^31 */
+    t = (uint32_t)fxl__fe_udiv64((num << 31) + den / 2u, den); /* <= 2^31 */
     res->x = lerp64(in->x, out->x, t);
     res->y = lerp64(in->y, out->y, t);
     res->w = lerp64(in->w, out->w, t);

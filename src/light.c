@@ -28,7 +28,7 @@ uint16_t fxl_light_shade(const fxl_light_t *l, const fxl_vec3_t *n, uint16_t bas
     if (ndotl > 65536) ndotl = 65536;
     for (c = 0; c < 3; c++) {
         uint32_t bc = ((uint32_t)base >> shift[c]) & maxc[c];
-        int64_t i_q16 = fxl__sdiv64((int64_t)l->ambient[c] * 65536 + (int64_t)l->diffuse[c] * ndotl + 127, 255);
+        int64_t i_q16 = fxl__fe_sdiv64((int64_t)l->ambient[c] * 65536 + (int64_t)l->diffuse[c] * ndotl + 127, 255);
         uint32_t oc;
         if (i_q16 > 65536) i_q16 = 65536;
         oc = (uint32_t)(((int64_t)bc * i_q16 + 32768) >> 16);

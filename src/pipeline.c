@@ -63,7 +63,7 @@ int32_t fxl__to_i32(int64_t x, int *ovf)
 static int64_t div_round(int64_t num, int64_t den)
 {
     uint64_t n = fxl__mag64(num), d = fxl__mag64(den);
-    uint64_t q = fxl__udiv64(n + d / 2u, d);
+    uint64_t q = fxl__fe_udiv64(n + d / 2u, d);
     return fxl__apply_sign(q, (num < 0) != (den < 0), NULL);
 }
 
@@ -487,7 +487,7 @@ static fxl_status_t project_pos(const fxl_xform_t *xf, const fxl_clipvert_t *c, 
      * 1/w = rec * 2^(-31 - s). */
     s = 63 - fxl_clz64((uint64_t)c->w);
     wn = s >= 31 ? (uint64_t)c->w >> (s - 31) : (uint64_t)c->w << (31 - s);
-    rec = fxl__udiv64(((uint64_t)1 << 62) + wn / 2u, wn);
+    rec = fxl__fe_udiv64(((uint64_t)1 << 62) + wn / 2u, wn);
     /* x / w in q30 = x * rec * 2^(-1 - s); s >= 16 since w >= near >= 2^-16. */
     ndc_x = FXL__HOT_MUL_SHR(c->x, (uint32_t)rec, (unsigned)(s + 1), NULL);
     ndc_y = FXL__HOT_MUL_SHR(c->y, (uint32_t)rec, (unsigned)(s + 1), NULL);

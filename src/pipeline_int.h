@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "fixel/pipeline.h"
 #include "isqrt.h"
+#include "div64.h"
 
 /* The hot helpers below are defined here so that -O2 builds can inline
  * them where they run per vertex or per corner (FXL__HOT_*): there a
@@ -26,6 +27,37 @@
 #define FXL__HOT_MUL_SHR fxl__mul_shr
 #define FXL__HOT_MUL_SHR_S fxl__mul_shr_s
 #endif
+
+/* floor(n / d), d != 0, for the front end's divisions. Their divisors fit
+ * 32 bits (a normal's length, a projection's normalised w, 255, a clip
+ * distance), and where 32-bit division is an instruction (FXL__DIV32_HW:
+ * Cortex-M3 and up, RISC-V with M) two of them with their corrections
+ * (fxl__udiv64_by32) are ~5x faster than the shift-subtract loop that
+ * FXL_SMALL_DIV64 gives size builds, which keep that loop for the core's
+ * 16 KiB: in the firmware example's -Os lit frame the loop was 34% of the
+ * front end. Exact either way: the same quotients. */
+static inline uint64_t fxl__fe_udiv64(uint64_t n, uint64_t d)
+{
+#if FXL__DIV32_HW
+    if ((d >> 32) == 0u)
+        return fxl__udiv64_by32(n, (uint32_t)d);
+#endif
+    return fxl__udiv64(n, d);
+}
+
+/* n / d truncated toward zero (C's `/`) through fxl__fe_udiv64, d != 0,
+ * not INT64_MIN / -1 */
+static inline int64_t fxl__fe_sdiv64(int64_t n, int64_t d)
+{
+#if FXL__DIV32_HW
+    const uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
+    const uint64_t ud = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
+    const uint64_t q = fxl__fe_udiv64(un, ud), r = (n < 0) != (d < 0) ? (uint64_t)0 - q : q;
+    return r <= (uint64_t)INT64_MAX ? (int64_t)r : -(int64_t)(~r) - 1;
+#else
+    return fxl__sdiv64(n, d);
+#endif
+}
 
 /* |x| as uint64, also for INT64_MIN. */
 static FXL__PIPE_INLINE uint64_t fxl__mag64(int64_t x)

@@ -73,7 +73,7 @@ static void fix_seam_and_poles(int64_t u[3], const int pole[3])
         return;
     }
     for (i = 0; i < 3; i++) /* pole: the mean theta of the others */
-        if (pole[i]) u[i] = fxl__sdiv64(sum >= 0 ? sum + count / 2 : sum - count / 2, count);
+        if (pole[i]) u[i] = fxl__fe_sdiv64(sum >= 0 ? sum + count / 2 : sum - count / 2, count);
 }
 
 /* Cube map faces (FXL_CUBE_POS_X .. NEG_Z): the position's components
@@ -106,14 +106,14 @@ static void cube(const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3])
         int64_t ma = c[f[0][0]] * f[0][1], sc = c[f[1][0]] * f[1][1], tc = c[f[2][0]] * f[2][1], s, t;
         if (ma < 1) ma = 1; /* a vertex behind the face plane: clamped below */
         /* s = (sc / ma + 1) / 2 in q16; |sc| < 2^31 so sc * 2^15 < 2^46. */
-        s = fxl__sdiv64(sc * 32768 + (sc >= 0 ? ma / 2 : -(ma / 2)), ma) + 32768;
-        t = fxl__sdiv64(tc * 32768 + (tc >= 0 ? ma / 2 : -(ma / 2)), ma) + 32768;
+        s = fxl__fe_sdiv64(sc * 32768 + (sc >= 0 ? ma / 2 : -(ma / 2)), ma) + 32768;
+        t = fxl__fe_sdiv64(tc * 32768 + (tc >= 0 ? ma / 2 : -(ma / 2)), ma) + 32768;
         if (s < 0) s = 0;
         if (s > 65536) s = 65536;
         if (t < 0) t = 0;
         if (t > 65536) t = 65536;
-        u[i] = fxl__sdiv64((int64_t)(face % 3) * 65536 + s + 1, 3);
-        v[i] = fxl__sdiv64((int64_t)(face / 3) * 65536 + t + 1, 2);
+        u[i] = fxl__fe_sdiv64((int64_t)(face % 3) * 65536 + s + 1, 3);
+        v[i] = fxl__fe_sdiv64((int64_t)(face / 3) * 65536 + t + 1, 2);
     }
 }
 
