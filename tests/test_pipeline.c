@@ -349,7 +349,7 @@ static void test_perspective_matches_glu_formula(void)
          * not twice (2 round(far near / d) = -2^31 was refused) */
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_perspective(&m, FXL_ANGLE_DEG(60), 65536, 2737093, 2744088));
         TEST_ASSERT_EQUAL_INT32(-2147483647, m.m[2][3]);
-        /* one unit further is -32768.0000 x 2^16 and more: refused */
+        /* near one unit larger: 2 far near / (near - far) = -32772.7, refused */
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_perspective(&m, FXL_ANGLE_DEG(60), 65536, 2737094, 2744088));
     }
 }
