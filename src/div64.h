@@ -150,16 +150,26 @@ static inline uint64_t fxl__div64_by(uint64_t n, const fxl__div64_t *dv, uint64_
     return q;
 }
 
-/* fxl__sdiv64's value from the magnitudes' fxl__udiv64 (compiled
- * everywhere, so host tests check it against C's `/`): the quotient's bit
- * pattern back to int64 without an out-of-range conversion (INT64_MIN / 1
+/* |x| as uint64, also for INT64_MIN. */
+static inline uint64_t fxl__mag64(int64_t x)
+{
+    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+}
+
+/* C's n / d from q = |n| / |d|: q with the quotient's sign, its bit pattern
+ * back to int64 without an out-of-range conversion (INT64_MIN / 1
  * included). */
+static inline int64_t fxl__sdiv64_of_mag(int64_t n, int64_t d, uint64_t q)
+{
+    const uint64_t r = (n < 0) != (d < 0) ? (uint64_t)0 - q : q;
+    return r <= (uint64_t)INT64_MAX ? (int64_t)r : -(int64_t)(~r) - 1;
+}
+
+/* fxl__sdiv64's value from the magnitudes' fxl__udiv64 (compiled
+ * everywhere, so host tests check it against C's `/`). */
 static inline int64_t fxl__sdiv64_mag(int64_t n, int64_t d)
 {
-    const uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
-    const uint64_t ud = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
-    const uint64_t q = fxl__udiv64(un, ud), r = (n < 0) != (d < 0) ? (uint64_t)0 - q : q;
-    return r <= (uint64_t)INT64_MAX ? (int64_t)r : -(int64_t)(~r) - 1;
+    return fxl__sdiv64_of_mag(n, d, fxl__udiv64(fxl__mag64(n), fxl__mag64(d)));
 }
 
 /* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */

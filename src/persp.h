@@ -19,6 +19,7 @@
 #include "raster_int.h"
 #include "div64.h"
 #include "clz.h"
+#include "bits.h"
 
 /* The perspective division runs at every correction point of every span
  * walk: on x86-64 a call plus spills is ~20% of a segment, so it is always
@@ -41,10 +42,6 @@
 #endif
 #endif
 
-/* Does >> of a negative value shift in sign bits? C99 leaves it to the
- * implementation (GCC and Clang document that it does); the constant
- * expression is folded, and where it is false the portable form is used. */
-#define FXL__SAR_IS_ARITHMETIC ((((int64_t)-5) >> 1) == -3 && (((int32_t)-5) >> 1) == -3)
 
 /* Forced inline where it is a binary search (no CLZ instruction: the
  * Cortex-M0+, RISC-V without Zbb) outside -Os: GCC sometimes left it out of
@@ -119,22 +116,6 @@ static inline int32_t fxl__log2_q8_32(uint32_t x)
 #endif
 }
 
-/* Floor shift of a signed 64-bit value (0 <= k < 64). */
-static inline int64_t fxl__asr64(int64_t x, int k)
-{
-    if (FXL__SAR_IS_ARITHMETIC)
-        return x >> k;
-    return x < 0 ? ~(int64_t)((uint64_t)~x >> k) : (int64_t)((uint64_t)x >> k);
-}
-
-/* Floor shift of a signed 32-bit value (0 <= k < 32). */
-static inline int32_t fxl__asr32(int32_t x, int k)
-{
-    if (FXL__SAR_IS_ARITHMETIC)
-        return x >> k;
-    return x < 0 ? -(int32_t)(~(uint32_t)x >> k) - 1 : (int32_t)((uint32_t)x >> k);
-}
-
 /* (int64)a * b, one SMULL on a Cortex-M3/M4. The empty asm (GCC, 32-bit
  * ARM) hides where a came from: GCC otherwise rebuilds fxl__persp_e's m
  * from the 64-bit plane value it was cut from and multiplies 64 x 32 bits
@@ -154,13 +135,6 @@ static inline int64_t fxl__mul_s32(int32_t a, int32_t b)
 #endif
     return (int64_t)a * b;
 #endif
-}
-
-/* The int32 whose two's-complement bit pattern is b (no conversion of an
- * out-of-range value: the compiler folds this to nothing). */
-static inline int32_t fxl__i32_of_bits(uint32_t b)
-{
-    return b <= INT32_MAX ? (int32_t)b : -(int32_t)(~b) - 1;
 }
 
 /* (int32_t)fxl__asr64(x, k) for 0 <= k < 64 where the result fits int32

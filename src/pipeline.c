@@ -52,9 +52,7 @@ int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf)
 
 int32_t fxl__to_i32(int64_t x, int *ovf)
 {
-    if (x > INT32_MAX) { if (ovf) *ovf = 1; return INT32_MAX; }
-    if (x < -INT32_MAX) { if (ovf) *ovf = 1; return -INT32_MAX; }
-    return (int32_t)x;
+    return fxl__to_i32_i(x, ovf);
 }
 
 

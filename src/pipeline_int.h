@@ -21,11 +21,13 @@
 #define FXL__HOT_ASR fxl__asr_i
 #define FXL__HOT_MUL_SHR fxl__mul_shr_i
 #define FXL__HOT_MUL_SHR_S fxl__mul_shr_s_i
+#define FXL__HOT_TO_I32 fxl__to_i32_i
 #else
 #define FXL__PIPE_INLINE inline
 #define FXL__HOT_ASR fxl__asr
 #define FXL__HOT_MUL_SHR fxl__mul_shr
 #define FXL__HOT_MUL_SHR_S fxl__mul_shr_s
+#define FXL__HOT_TO_I32 fxl__to_i32
 #endif
 
 /* floor(n / d), d != 0, for the front end's divisions. Their divisors fit
@@ -50,19 +52,10 @@ static inline uint64_t fxl__fe_udiv64(uint64_t n, uint64_t d)
 static inline int64_t fxl__fe_sdiv64(int64_t n, int64_t d)
 {
 #if FXL__DIV32_HW
-    const uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
-    const uint64_t ud = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
-    const uint64_t q = fxl__fe_udiv64(un, ud), r = (n < 0) != (d < 0) ? (uint64_t)0 - q : q;
-    return r <= (uint64_t)INT64_MAX ? (int64_t)r : -(int64_t)(~r) - 1;
+    return fxl__sdiv64_of_mag(n, d, fxl__fe_udiv64(fxl__mag64(n), fxl__mag64(d)));
 #else
     return fxl__sdiv64(n, d);
 #endif
-}
-
-/* |x| as uint64, also for INT64_MIN. */
-static FXL__PIPE_INLINE uint64_t fxl__mag64(int64_t x)
-{
-    return x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
 }
 
 /* m with the sign neg, saturated to INT64_MAX (setting *ovf if not NULL). */
@@ -111,6 +104,14 @@ static FXL__PIPE_INLINE int64_t fxl__mul_shr_i(int64_t a, uint32_t b, unsigned s
         r = hi >> (sh - 32);
     }
     return fxl__apply_sign(r, a < 0, ovf);
+}
+
+/* fxl__to_i32 */
+static FXL__PIPE_INLINE int32_t fxl__to_i32_i(int64_t x, int *ovf)
+{
+    if (x > INT32_MAX) { if (ovf) *ovf = 1; return INT32_MAX; }
+    if (x < -INT32_MAX) { if (ovf) *ovf = 1; return -INT32_MAX; }
+    return (int32_t)x;
 }
 
 /* fxl__mul_shr_s */

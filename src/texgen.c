@@ -117,15 +117,14 @@ static void cube(const fxl_vec3_t pos[3], int64_t u[3], int64_t v[3])
     }
 }
 
-/* raw * scale + offset, clamped to +-INT32_MAX (fxl__to_i32's range). Six
- * a triangle: the product inline at -O2 (FXL__HOT_MUL_SHR_S, its shift a
- * constant), where the calls were 16% of the firmware example's texgen
- * sphere's front end. |raw| <= 2^31 here (int32 coordinates, q16 angles a
- * period or two out): the sum is far from overflow. */
+/* raw * scale + offset, clamped to +-INT32_MAX. Six a triangle: inline at
+ * -O2 (FXL__HOT_*, the product's shift a constant), where the calls were
+ * 16% of the firmware example's texgen sphere's front end. |raw| <= 2^31
+ * here (int32 coordinates, q16 angles a period or two out): the sum is far
+ * from overflow. */
 static fxl_q16_t scale_offset(int64_t raw, fxl_q16_t scale, fxl_q16_t offset)
 {
-    const int64_t r = FXL__HOT_MUL_SHR_S(raw, scale, 16, NULL) + offset;
-    return r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : (int32_t)r;
+    return FXL__HOT_TO_I32(FXL__HOT_MUL_SHR_S(raw, scale, 16, NULL) + offset, NULL);
 }
 
 /* The modes are told apart by if-chains: on Thumb-1 (Cortex-M0+) GCC

@@ -11,9 +11,10 @@
  * 30 iterations in int64 with the angle accumulated in q32 turns. After 30
  * steps the residual angle is below atan(2^-29) (2^-31.6 turns) and the 30
  * rounded table entries add at most 15 * 2^-32 turns: 2^-27 turns in all.
- * 32-bit cores run the same steps on pairs of 32-bit words (cordic_asr).
+ * 32-bit cores shift on pairs of 32-bit words (cordic_asr).
  */
 #include "pipeline_int.h"
+#include "bits.h"
 
 /* round(atan(2^-i) / (2 pi) * 2^32), i = 0..29. */
 static const uint32_t atan_q32[30] = {
@@ -107,45 +108,34 @@ fxl_q16_t fxl_cos_q16(fxl_angle_t a)
     return c;
 }
 
-/* CORDIC's x and y as two 32-bit words on 32-bit cores (-DFXL__WORD32=1
- * forces it on a host, as determinism.sh does): there a 64-bit shift by a
- * variable is a long sequence, and fxl__asr's floor shift of a negative
- * value longer still (~36 Cortex-M4 instructions a step at -O2, ~26 by
- * words). The values are the same: x, y are two's complement bit patterns,
- * added modulo 2^64 (no sum leaves int64: |x|, |y| < 2^60.3), and a shift
- * by 0 < i < 32 is the floor shift of the 64-bit value. */
+/* CORDIC's x and y are int64 values, kept as their bit patterns (added
+ * modulo 2^64: no sum leaves int64, |x|, |y| < 2^60.3). On 32-bit cores
+ * (-DFXL__WORD32=1 forces it on a host, as determinism.sh does) each step's
+ * floor shifts are done on the two 32-bit words: a 64-bit shift by a
+ * variable is a long sequence there, and fxl__asr's floor shift of a
+ * negative value longer still (~36 Cortex-M4 instructions a step at -O2,
+ * ~26 by words). The same values either way. */
 #if defined(FXL__WORD32)
 #define CORDIC_WORDS FXL__WORD32
 #else
 #define CORDIC_WORDS (UINTPTR_MAX <= 0xFFFFFFFFu)
 #endif
 
-/* Does >> of a negative int32 shift in sign bits? (GCC and Clang document
- * that it does; folded at compile time, the portable form otherwise.) */
-#define SAR_IS_ARITHMETIC ((((int32_t)-5) >> 1) == -3)
-
 /* floor(v / 2^i) of the int64 bit pattern v, 0 < i < 32, as a bit pattern */
 static inline uint64_t cordic_asr(uint64_t v, unsigned i)
 {
     const uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
-    const uint32_t rlo = (lo >> i) | (hi << (32u - i));
-    uint32_t rhi;
-    if (SAR_IS_ARITHMETIC) {
-        /* one ASR: hi read as int32 (no implementation-defined conversion) */
-        const int32_t h = hi >> 31 ? -(int32_t)(~hi) - 1 : (int32_t)hi;
-        rhi = (uint32_t)(h >> i);
-    } else {
-        const uint32_t s = 0u - (hi >> 31);   /* all ones where v < 0 */
-        rhi = ((hi ^ s) >> i) ^ s;           /* the complement's shift, complemented */
-    }
-    return ((uint64_t)rhi << 32) | rlo;
+    if (!CORDIC_WORDS)
+        return (uint64_t)FXL__HOT_ASR(fxl__i64_of_bits(v), i);
+    return ((uint64_t)(uint32_t)fxl__asr32(fxl__i32_of_bits(hi), (int)i) << 32) | (lo >> i) | (hi << (32u - i));
 }
 
 /* atan(y / x) in q32 turns for 0 <= y <= x, x > 0: in [0, 1/8 turn]. */
 static uint32_t cordic_octant(int64_t x, int64_t y)
 {
-    int64_t z = 0;
     int top = 63 - fxl_clz64((uint64_t)x);
+    uint64_t xb, yb;
+    uint32_t z;   /* |z| < the table's sum, 0.28 turns < 2^31: z modulo 2^32 */
     int i;
     /* Bring x to [2^58, 2^59): CORDIC grows the vector by 1.647, the folding
      * keeps y <= x, so |x|, |y| stay below 2^60.3. */
@@ -156,54 +146,33 @@ static uint32_t cordic_octant(int64_t x, int64_t y)
         x = (int64_t)((uint64_t)x << (58 - top));
         y = (int64_t)((uint64_t)y << (58 - top));
     }
-    if (CORDIC_WORDS) {
-        /* The steps below by words: x stays positive; |z| stays below the
-         * table's sum, 0.28 turns < 2^31, so uint32 z is z modulo 2^32. */
-        uint64_t xb = (uint64_t)x, yb = (uint64_t)y;
-        uint32_t zb;
-        if (yb == 0u)
-            return 0u;
-        /* step 0, whose shifts are by 0: y > 0 here */
-        {
-            const uint64_t dx = yb;
-            xb += dx;
-            yb -= (uint64_t)x;
-            zb = atan_q32[0];
-        }
-        /* Unrolled in GCC's speed builds: each step's shifts are then by
-         * constants, three instructions each (-O2 Cortex-M4: ~26 -> ~18 a
-         * step, +1.8 KB of code). */
-#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
-        _Pragma("GCC unroll 29")
+    if (y == 0)
+        return 0u;
+    /* step 0, whose shifts are by 0: y > 0 here */
+    xb = (uint64_t)x + (uint64_t)y;
+    yb = (uint64_t)y - (uint64_t)x;
+    z = atan_q32[0];
+    /* Unrolled in GCC's speed builds for 32-bit cores: each step's shifts
+     * are then by constants, three instructions each (-O2 Cortex-M4: ~26 ->
+     * ~18 a step, +1.8 KB of code). */
+#if CORDIC_WORDS && defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
+    _Pragma("GCC unroll 29")
 #endif
-        for (i = 1; i < 30; i++) {
-            const uint64_t dx = cordic_asr(yb, (unsigned)i), dy = cordic_asr(xb, (unsigned)i);
-            if (yb == 0u)
-                break;
-            if (yb >> 63) {
-                xb -= dx;
-                yb += dy;
-                zb -= atan_q32[i];
-            } else {
-                xb += dx;
-                yb -= dy;
-                zb += atan_q32[i];
-            }
-        }
-        return zb >> 31 ? 0u : zb;   /* the true angle is >= 0 */
-    }
-    for (i = 0; i < 30; i++) {
-        int64_t dx = FXL__HOT_ASR(y, (unsigned)i), dy = FXL__HOT_ASR(x, (unsigned)i);
-        if (y > 0) {
-            x += dx; y -= dy; z += atan_q32[i];
-        } else if (y < 0) {
-            x -= dx; y += dy; z -= atan_q32[i];
-        } else {
+    for (i = 1; i < 30; i++) {
+        const uint64_t dx = cordic_asr(yb, (unsigned)i), dy = cordic_asr(xb, (unsigned)i);
+        if (yb == 0u)
             break;
+        if (yb >> 63) {
+            xb -= dx;
+            yb += dy;
+            z -= atan_q32[i];
+        } else {
+            xb += dx;
+            yb -= dy;
+            z += atan_q32[i];
         }
     }
-    if (z < 0) z = 0; /* the true angle is >= 0 */
-    return (uint32_t)z;
+    return z >> 31 ? 0u : z;   /* the true angle is >= 0 */
 }
 
 uint32_t fxl__atan2_q32(int64_t y, int64_t x)
