@@ -264,12 +264,14 @@ void fxl__auto_bound(fxl__tri_t *tri, const int32_t Y[3])
          * default 1/4, what keeps a budget of 1/256 on a 256-pixel span). */
         const int32_t bc = budget_capped(tri->draw) - fxl__auto_drift_q16(cap);
         lba = log2_budget_q8(ba);
-        lbq = log2_budget_q8(bq);
         lb = log2_budget_q8(bc);
         /* quadratic steps take a segment's change as int32: not where it
          * may exceed 2^15 texels (uv_wide) */
         quad = FXL_HAVE_QUAD && !fxl__signed_u(tri) && !fxl__signed_v(tri) && tri->nlevels <= 1 && bq > 0 &&
                !tri->uv_wide;
+        /* only quadratic segments use it (a logarithm less for the
+         * others) */
+        lbq = quad ? log2_budget_q8(bq) : 0;
     }
     {
         /* Whole spans from the vertex ranges, before the N bound: within a
