@@ -1291,6 +1291,89 @@ static uint32_t probe_index_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
     return probe_texel_index_z(tri, s);
 }
 
+static int draw_fast_and_generic(const fxl_draw_t *d, const fxl_draw_t *dgen, const fxl_vertex_t v[3], int32_t w,
+                                 int32_t h, fxl_pixfmt_t fmt, int depth, const fxl_rect_t *clip, uint16_t *fast,
+                                 uint16_t *zfast, uint16_t *gen, uint16_t *zgen, const char *what);
+
+/* probe_seg_rr for draws with levels: u, v scaled from the segment's
+ * level to level 0 */
+static uint32_t probe_seg_levels_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    const double scale = (double)(1u << (tri->tex->log2_w - s->lvl->log2_w)) / 65536.0;
+    int32_t i;
+    probe_rr = tri->auto_rr;
+    for (i = 0; i < s->n; i++) {
+        const size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
+        probe_count[k]++;
+        probe_u[k] = (double)fxl__seg_coord(s->u, s->du, s->ddu, i) * scale;
+        probe_v[k] = (double)fxl__seg_coord(s->v, s->dv, s->ddv, i) * scale;
+    }
+    return (uint32_t)s->n;
+}
+
+/* AUTO on several levels, small steep triangles whose every segment the
+ * cheap bound would make 1 to 4 pixels long throughout (the tunnel's far
+ * walls): they take reciprocal runs (auto.c), where the same triangles on
+ * one level keep their segments; either way every pixel the generic walk
+ * gives is within the budget of the double-precision reference, and the
+ * fast walk draws the generic walk's pixels. A 64-texel texture with 7
+ * levels, trilinear; triangles of 8 to 24 pixels a side around a point of
+ * a 320 x 240 target, 1/w from 1/30 to 1/40 falling 10-30% across them,
+ * 3 to 8 repeats. */
+void test_auto_short_mip_segments_take_runs_within_budget(void)
+{
+    static uint16_t texels[64 * 64 * 4 / 3 + 1], buf[320 * 240], fast[320 * 240], gen[320 * 240];
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    int k, i, lv, rr[2] = {0, 0};
+    double worst[2] = {0, 0};
+    char msg[200];
+    TEST_NEEDS(FXL_HAVE_RR && FXL_HAVE_MIPMAP && FXL_HAVE_BILINEAR);
+    lcg_state = 4242u;
+    for (i = 0; i < 64 * 64 * 4 / 3 + 1; i++)
+        texels[i] = (uint16_t)((uint32_t)i * 2654435761u >> 16);
+    for (k = 0; k < 60; k++) {
+        fxl_vertex_t v[3];
+        const double cx = rnd_range(40, 280), cy = rnd_range(40, 200), size = rnd_range(8, 24);
+        const double q0 = 1.0 / rnd_range(30, 40), fall = rnd_range(70, 90) / 100.0, rep = rnd_range(3, 8);
+        const double ang = rnd_range(0, 628) / 100.0;
+        for (i = 0; i < 3; i++) {
+            const double a = ang + i * 2.0944;
+            /* q falls along the first vertex's direction */
+            v[i] = vtx(cx + size * cos(a), cy + size * sin(a), q0 * (i == 0 ? fall : 1.0), (i == 1) * rep,
+                       (i == 2) * rep);
+        }
+        for (lv = 0; lv < 2; lv++) {
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, lv ? 7 : 1));
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.depth = 0;
+            d.persp = FXL_PERSP_AUTO;
+            d.filter = FXL_FILTER_BILINEAR;
+            d.mip = lv ? FXL_MIP_LINEAR : FXL_MIP_NONE;
+            d.lod = FXL_LOD_SEGMENT;
+            probe_target(&t, buf, 320, 240);
+            probe_rr = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_seg_levels_rr));
+            rr[lv] += probe_rr;
+            {
+                const double e = probed_max_error(v);
+                snprintf(msg, sizeof msg, "tri %d levels %d (runs %d): max error %.4f texels", k, lv ? 7 : 1,
+                         probe_rr, e);
+                TEST_ASSERT_TRUE_MESSAGE(e <= 0.25, msg);
+                worst[lv] = e > worst[lv] ? e : worst[lv];
+            }
+            TEST_ASSERT_TRUE(draw_fast_and_generic(&d, NULL, v, 320, 240, drawable_rgb565(), 0, NULL, fast, NULL,
+                                                   gen, NULL, msg) > 0);
+        }
+    }
+    snprintf(msg, sizeof msg, "runs: %d of 60 with 7 levels (worst error %.4f), %d with one (worst %.4f)", rr[1],
+             worst[1], rr[0], worst[0]);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(rr[1] >= 20 && rr[0] == 0, msg);
+}
+
 /* AUTO on the largest square texture this build accepts (1 <<
  * FXL_TEX_MAX_LOG2 texels a side): rolled floors, every pixel within the
  * budget. Reciprocal runs need |u| + |v| plus a
@@ -3554,6 +3637,7 @@ int main(void)
     RUN_TEST(test_auto_reciprocal_runs_agree_and_stay_within_budget);
     RUN_TEST(test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties);
     RUN_TEST(test_auto_on_the_largest_texture_keeps_its_budget);
+    RUN_TEST(test_auto_short_mip_segments_take_runs_within_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_needles_flag_gradients_beyond_what_a_pixel_holds);
