@@ -73,17 +73,22 @@ static uint16_t *probe_base;
 static int32_t probe_stride;
 static uint8_t probe_count[1024 * 512];
 static double probe_u[1024 * 512], probe_v[1024 * 512];
-static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+/* records segment s's pixels, u and v scaled from its q16 by su, sv */
+static uint32_t probe_record(const fxl__seg_t *s, double su, double sv)
 {
     int32_t i;
-    (void)tri;
     for (i = 0; i < s->n; i++) {
         size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
         probe_count[k]++;
-        probe_u[k] = (double)(uint32_t)(fxl__seg_coord(s->u, s->du, s->ddu, i)) / 65536.0;
-        probe_v[k] = (double)(uint32_t)(fxl__seg_coord(s->v, s->dv, s->ddv, i)) / 65536.0;
+        probe_u[k] = (double)fxl__seg_coord(s->u, s->du, s->ddu, i) * su;
+        probe_v[k] = (double)fxl__seg_coord(s->v, s->dv, s->ddv, i) * sv;
     }
     return (uint32_t)s->n;
+}
+static uint32_t probe_seg(const fxl__tri_t *tri, const fxl__seg_t *s)
+{
+    (void)tri;
+    return probe_record(s, 1.0 / 65536.0, 1.0 / 65536.0);
 }
 
 static fxl_vertex_t vtx(double x, double y, double inv_w, double u, double v)
@@ -1299,17 +1304,9 @@ static int draw_fast_and_generic(const fxl_draw_t *d, const fxl_draw_t *dgen, co
  * level to level 0 */
 static uint32_t probe_seg_levels_rr(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
-    const double su = (double)(1u << (tri->tex->log2_w - s->lvl->log2_w)) / 65536.0;
-    const double sv = (double)(1u << (tri->tex->log2_h - s->lvl->log2_h)) / 65536.0;
-    int32_t i;
     probe_rr = tri->auto_rr;
-    for (i = 0; i < s->n; i++) {
-        const size_t k = (size_t)(s->dst - probe_base) + (size_t)i;
-        probe_count[k]++;
-        probe_u[k] = (double)fxl__seg_coord(s->u, s->du, s->ddu, i) * su;
-        probe_v[k] = (double)fxl__seg_coord(s->v, s->dv, s->ddv, i) * sv;
-    }
-    return (uint32_t)s->n;
+    return probe_record(s, (double)(1u << (tri->tex->log2_w - s->lvl->log2_w)) / 65536.0,
+                        (double)(1u << (tri->tex->log2_h - s->lvl->log2_h)) / 65536.0);
 }
 
 /* AUTO on several levels, small steep triangles whose every segment the
