@@ -1003,50 +1003,84 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 #endif
 
 #if FXL_HAVE_RR
-#if !FXL_T_DEPTH && !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN
 #define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
 #define FXL_T_RRLOOPB FXL__CAT(FXL_T_SPAN, _rrloopb)
-/* A run's pixels on one level without depth, out of line: in the run
- * walk's frame GCC spilled ~4 Cortex-M4 instructions a pixel more. st: the
- * steps of q, a and b; u and v shifted right by level (a mip level of
- * FXL_MIP_NEAREST, FXL_T_RRNLOOP; 0 folds away in FXL_T_RRLOOP). A point
- * texel is FXL__IDX_MASKS's as column | row << lw: the column's mask and
- * the row's shift and mask (AND with a shifted operand on a Cortex-M). */
-static FXL__UNSWITCH void FXL_T_RRLOOPB(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                        const uint32_t *st, FXL_T_LV *L, const int level)
+/* A run's pixels on one level, out of line: in the run walk's frame GCC
+ * spilled ~4 Cortex-M4 instructions a pixel more. st: the steps of q, a
+ * and b; u and v shifted right by level (a mip level of FXL_MIP_NEAREST,
+ * FXL_T_RRNLOOP; 0 folds away in FXL_T_RRLOOP). A point texel is
+ * FXL__IDX_MASKS's as column | row << lw: the column's mask and the row's
+ * shift and mask (AND with a shifted operand on a Cortex-M). With depth:
+ * zb, and the depth plane sz stepped by gz, where the caller guarantees
+ * every pixel's value lies in [0, 2^52) (rr_z_fits), so fast_z's clamps
+ * cannot act and its value is sz >> FXL__PF. Returns the pixels written. */
+static FXL__UNSWITCH uint32_t FXL_T_RRLOOPB(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                            const uint32_t *st, FXL_T_LV *L, const int level,
+                                            uint16_t *zb, uint64_t sz, const uint64_t gz)
 {
 #if !FXL_T_BILINEAR
     const uint16_t *const tex = L->tex;
     const uint32_t wm = L->mu16 >> 16, vs = 16u - L->lw, hm = L->mv16 >> 16;
 #endif
-    uint16_t *const end = dst + n;
+    /* one index for both rows, counting up to 0; rejections counted on
+     * their own path (FXL_T_PIXEL's reason): the x86-64 loop has no
+     * register to spare */
+    ptrdiff_t i = -(ptrdiff_t)n;
+#if FXL_T_DEPTH
+    uint32_t rejected = 0;
+    zb += n;
+#else
+    (void)zb;
+    (void)sz;
+    (void)gz;
+#endif
+    dst += n;
     do {
         const uint32_t r = fxl__rr_recip_tab(q);
         const uint32_t u = fxl__rr_coord(a, r) >> level, v = fxl__rr_coord(b, r) >> level;
-#if FXL_T_BILINEAR
-        (void)FXL_T_PIX1(dst, 0, 0u, L, u, v);
-#else
-        *dst = FXL_T_OUT(tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+#if FXL_T_DEPTH
+        /* FXL_T_PIX1's test, with the point texel as below */
+        const uint32_t zz = (uint32_t)(sz >> (FXL__PF + 16));
+        sz += gz;
+        if (zz > zb[i]) {
+            zb[i] = (uint16_t)zz;
 #endif
-        dst++;
+#if FXL_T_BILINEAR
+            dst[i] = FXL_T_OUT(compact565(bl_sample(L, u - 0x8000u, v - 0x8000u)));
+#else
+            dst[i] = FXL_T_OUT(tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
+#endif
+#if FXL_T_DEPTH
+        } else {
+            rejected++;
+        }
+#endif
         q += st[0];
         a += st[1];
         b += st[2];
-    } while (dst != end);
+    } while (++i != 0);
+#if FXL_T_DEPTH
+    return (uint32_t)n - rejected;
+#else
+    return (uint32_t)n;
+#endif
 }
 
-static FXL__NOINLINE void FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                       const uint32_t *st, FXL_T_LV *L)
+static FXL__NOINLINE uint32_t FXL_T_RRLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                           const uint32_t *st, FXL_T_LV *L, uint16_t *zb, uint64_t sz,
+                                           uint64_t gz)
 {
-    FXL_T_RRLOOPB(dst, n, q, a, b, st, L, 0);
+    return FXL_T_RRLOOPB(dst, n, q, a, b, st, L, 0, zb, sz, gz);
 }
 
 #if FXL_HAVE_MIPMAP
 #define FXL_T_RRNLOOP FXL__CAT(FXL_T_SPAN, _rrnloop)
-static FXL__NOINLINE void FXL_T_RRNLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
-                                        const uint32_t *st, FXL_T_LV *L, int level)
+static FXL__NOINLINE uint32_t FXL_T_RRNLOOP(uint16_t *dst, int32_t n, uint32_t q, uint32_t a, uint32_t b,
+                                            const uint32_t *st, FXL_T_LV *L, int level, uint16_t *zb,
+                                            uint64_t sz, uint64_t gz)
 {
-    FXL_T_RRLOOPB(dst, n, q, a, b, st, L, level);
+    return FXL_T_RRLOOPB(dst, n, q, a, b, st, L, level, zb, sz, gz);
 }
 #endif
 #endif
@@ -1175,21 +1209,40 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
         da = rr.da;
         db = rr.db;
         end = dst + cnt;
-#if !FXL_T_DEPTH && !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN
+#if FXL_T_DEPTH
+        /* with depth, chunks of 4 pixels or more whose depth needs no
+         * clamp (the loop below otherwise): with the shorter ones too the
+         * call cost the tunnel's nearest-level point draw 0.5% (x86-64) */
+#define FXL_T_RRZ zb, sz, gz
+        if (cnt >= 4 && rr_z_fits(sz, gz, cnt))
+#else
+#define FXL_T_RRZ (uint16_t *)0, 0u, 0u
+#endif
         {
             const uint32_t st[3] = {dq, da, db};
+            uint32_t w;
 #if FXL_HAVE_MIPMAP
             if (nearest)
-                FXL_T_RRNLOOP(dst, cnt, q, a, b, st, &L, level);
+                w = FXL_T_RRNLOOP(dst, cnt, q, a, b, st, &L, level, FXL_T_RRZ);
             else
 #endif
-                FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L);
+                w = FXL_T_RRLOOP(dst, cnt, q, a, b, st, &L, FXL_T_RRZ);
             dst = end;
             q += dq * (uint32_t)cnt;
             a += da * (uint32_t)cnt;
             b += db * (uint32_t)cnt;
-        }
+#if FXL_T_DEPTH
+            written += w;
+            zb += cnt;
+            sz += gz * (uint32_t)cnt;
 #else
+            (void)w;
+#endif
+        }
+#undef FXL_T_RRZ
+#endif
+#if FXL_T_DEPTH || FXL_T_MIPLIN
         while (dst != end) {
             const uint32_t r = fxl__rr_recip_tab(q);
 #if FXL_T_MIPLIN

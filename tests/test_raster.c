@@ -1619,7 +1619,9 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
  * textures; the runs' mip-linear loops with depth (span_fast.h, FXL_T_MIPLIN
  * and FXL_T_DEPTH) have their own comparison, checked here for every
  * filter the runs have: point, bilinear, trilinear, point-mip-linear and the
- * nearest level. */
+ * nearest level. The pixels the stats count are the ones written: all of
+ * the first draw's, none of the second's (the one-level run loops count
+ * rejections, not writes). */
 void test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties(void)
 {
     enum { RW = 640, RH = 200, NT = 12, NTEX = 256 * 256 * 4 / 3 + 1 };
@@ -1628,6 +1630,8 @@ void test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties(void)
     fxl_texture_t ta, tb;
     fxl_target_t t, ts;
     fxl_draw_t d;
+    fxl_stats_t st;
+    uint32_t written;
     int i, k, f, rr_tris = 0, compared = 0;
     char msg[160];
     TEST_NEEDS(FXL_HAVE_RR);
@@ -1667,11 +1671,23 @@ void test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties(void)
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
             fxl_target_clear(&t, 0);
             fxl_target_clear_depth(&t);
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            memset(&st, 0, sizeof st);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
             memcpy(first, px, sizeof px);
             memcpy(zfirst, zb, sizeof zb);
+            /* the pixels counted are the ones written: each wrote a depth
+             * above the cleared 0 (greater is nearer) */
+            for (i = 0, written = 0; i < RW * RH; i++)
+                written += zfirst[i] != 0;
+            snprintf(msg, sizeof msg, "triangle %d filter %d (runs %d): %lu pixels counted, %lu written", k, f,
+                     probe_rr, (unsigned long)st.pixels, (unsigned long)written);
+            TEST_ASSERT_TRUE_MESSAGE(st.pixels == written && written > 0, msg);
             d.texture = &tb;   /* the same geometry: every depth a tie */
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+            memset(&st, 0, sizeof st);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st));
+            snprintf(msg, sizeof msg, "triangle %d filter %d (runs %d): %lu pixels counted where every one is a tie",
+                     k, f, probe_rr, (unsigned long)st.pixels);
+            TEST_ASSERT_TRUE_MESSAGE(st.pixels == 0, msg);
             for (i = 0; i < RW * RH; i++)
                 if (px[i] != first[i] || zb[i] != zfirst[i]) {
                     snprintf(msg, sizeof msg,
