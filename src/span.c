@@ -1461,7 +1461,20 @@ static inline uint32_t fast_z(int64_t sz)
     return sz < 0 ? 0u : sat_u32((int64_t)((uint64_t)sz >> FXL__PF));
 }
 
-#if FXL_HAVE_RR && FXL__V_ANY_Z
+/* The one-level runs' depth pixels in the out-of-line run loop
+ * (span_fast.h, FXL_T_RRLOOP). Not on the Cortex-M0+: there the eight
+ * depth loops took enough of GCC's inlining budget for span.c that
+ * fxl__persp_e stopped being inlined into lean_start and the corrections,
+ * and every draw without depth cost 0.3-0.9% more. */
+#ifndef FXL__RR_ZLOOP
+#if defined(__ARM_ARCH_6M__)
+#define FXL__RR_ZLOOP 0
+#else
+#define FXL__RR_ZLOOP 1
+#endif
+#endif
+
+#if FXL_HAVE_RR && FXL__V_ANY_Z && FXL__RR_ZLOOP
 /* Whether the depth values of n >= 1 pixels of a run, the modular int64
  * plane values sz + i·gz, all lie in [0, 2^52): then fast_z's clamps
  * cannot act and each is sz >> FXL__PF (the run loops' z). With

@@ -1003,7 +1003,7 @@ static FXL__NOINLINE void FXL_T_EXACT(const fxl__tri_t *tri, int32_t row, int32_
 #endif
 
 #if FXL_HAVE_RR
-#if !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN && (!FXL_T_DEPTH || FXL__RR_ZLOOP)
 #define FXL_T_RRLOOP FXL__CAT(FXL_T_SPAN, _rrloop)
 #define FXL_T_RRLOOPB FXL__CAT(FXL_T_SPAN, _rrloopb)
 /* A run's pixels on one level, out of line: in the run walk's frame GCC
@@ -1209,7 +1209,7 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
         da = rr.da;
         db = rr.db;
         end = dst + cnt;
-#if !FXL_T_MIPLIN
+#if !FXL_T_MIPLIN && (!FXL_T_DEPTH || FXL__RR_ZLOOP)
 #if FXL_T_DEPTH
         /* with depth, chunks of 4 pixels or more whose depth needs no
          * clamp (the loop below otherwise): with the shorter ones too the
