@@ -1047,7 +1047,9 @@ static FXL__UNSWITCH uint32_t FXL_T_RRLOOPB(uint16_t *dst, int32_t n, uint32_t q
             zb[i] = (uint16_t)zz;
 #endif
 #if FXL_T_BILINEAR
-            dst[i] = FXL_T_OUT(compact565(bl_sample(L, u - 0x8000u, v - 0x8000u)));
+            /* in a local: FXL_T_OUT (byte swap) names its argument twice */
+            const uint32_t c = compact565(bl_sample(L, u - 0x8000u, v - 0x8000u));
+            dst[i] = FXL_T_OUT(c);
 #else
             dst[i] = FXL_T_OUT(tex[(wm & (u >> 16)) | ((v >> vs) & hm)]);
 #endif

@@ -1621,7 +1621,7 @@ void test_auto_reciprocal_runs_agree_and_stay_within_budget(void)
  * filter the runs have: point, bilinear, trilinear, point-mip-linear and the
  * nearest level. The pixels the stats count are the ones written: all of
  * the first draw's, none of the second's (the one-level run loops count
- * rejections, not writes). */
+ * the rejections and subtract them). */
 void test_auto_reciprocal_runs_keep_the_first_draw_on_depth_ties(void)
 {
     enum { RW = 640, RH = 200, NT = 12, NTEX = 256 * 256 * 4 / 3 + 1 };
