@@ -16,8 +16,6 @@
 #include "pipeline_int.h"
 #include "div64.h"
 
-#define CLIP_SCRATCH 16 /* > FXL_CLIP_MAX_VERTS, see the capacity check */
-
 enum { PL_NEAR, PL_FAR, PL_XP, PL_XN, PL_YP, PL_YN, PL_COUNT };
 
 static int64_t guard_w(const fxl_xform_t *xf, int64_t w)
@@ -136,8 +134,13 @@ fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3]
 fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                 fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n)
 {
-    fxl_clipvert_t buf[2][CLIP_SCRATCH];
-    int c0, c1, c2, cur = 0, pl;
+    /* The polygon goes back and forth between scratch and out, one plane a
+     * pass: two buffers of FXL_CLIP_MAX_VERTS (432 B) where two of 16 in
+     * this frame (1,536 B) made the clipper the deepest frame of a
+     * firmware's front end (docs/porting.md, section 10). */
+    fxl_clipvert_t scratch[FXL_CLIP_MAX_VERTS];
+    fxl_clipvert_t *cur = scratch, *next = out;
+    int c0, c1, c2, pl;
     uint32_t count = 3, i;
     *n = 0;
     if (!in_range(&in[0]) || !in_range(&in[1]) || !in_range(&in[2])) return FXL_ERR_RANGE;
@@ -145,7 +148,8 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
     c1 = outcode(xf, &in[1]);
     c2 = outcode(xf, &in[2]);
     if ((c0 & c1 & c2) != 0) return FXL_OK; /* all outside one plane */
-    for (i = 0; i < 3; i++) buf[0][i] = in[i];
+    /* copied first: in may overlap out (fxl_clip_triangle's caller) */
+    for (i = 0; i < 3; i++) scratch[i] = in[i];
     if ((c0 | c1 | c2) != 0) {
         /* The planes some vertex of the polygon is outside: the inputs', and
          * each cut point's. A cut point carries t's rounding (q31) times its
@@ -155,32 +159,38 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
          * (FXL_ERR_RANGE from a valid pipeline and mesh). */
         int codes = c0 | c1 | c2;
         for (pl = 0; pl < PL_COUNT; pl++) {
-            const fxl_clipvert_t *src = buf[cur];
-            fxl_clipvert_t *dst = buf[cur ^ 1];
+            const fxl_clipvert_t *src = cur;
+            fxl_clipvert_t *dst = next;
             uint32_t m = 0;
             if (!(codes & (1 << pl))) continue; /* no vertex is outside */
             for (i = 0; i < count; i++) {
                 const fxl_clipvert_t *a = &src[i], *b = &src[(i + 1) % count];
                 int64_t da = plane_dist(xf, pl, a), db = plane_dist(xf, pl, b);
-                /* A convex polygon gains at most one vertex per plane; the
-                 * check only guards against rounding making it non-convex. */
-                if (m + 2 > CLIP_SCRATCH) return FXL_ERR_RANGE;
-                if (da >= 0) dst[m++] = *a;
-                if (da >= 0 && db < 0) {
-                    intersect(xf, pl, a, da, b, db, &dst[m]);
-                    codes |= outcode(xf, &dst[m++]);
-                } else if (da < 0 && db >= 0) {
-                    intersect(xf, pl, b, db, a, da, &dst[m]);
+                /* A convex polygon gains at most one vertex a plane, so
+                 * after k planes it has at most 3 + k <= FXL_CLIP_MAX_VERTS.
+                 * Only rounding could make it non-convex and longer: such a
+                 * polygon, at any pass, is refused as its final count was. */
+                if (da >= 0) {
+                    if (m >= FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
+                    dst[m++] = *a;
+                }
+                if ((da >= 0 && db < 0) || (da < 0 && db >= 0)) {
+                    if (m >= FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
+                    if (da >= 0)
+                        intersect(xf, pl, a, da, b, db, &dst[m]);
+                    else
+                        intersect(xf, pl, b, db, a, da, &dst[m]);
                     codes |= outcode(xf, &dst[m++]);
                 }
             }
             count = m;
-            cur ^= 1;
+            next = cur;
+            cur = dst;
             if (count < 3) return FXL_OK; /* nothing with area left */
         }
     }
-    if (count > FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
-    for (i = 0; i < count; i++) out[i] = buf[cur][i];
+    if (cur != out)
+        for (i = 0; i < count; i++) out[i] = cur[i];
     *n = count;
     return FXL_OK;
 }

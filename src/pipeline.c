@@ -677,7 +677,10 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
         for (t = 0; t < ncache && t < m->vert_count; t++) cache[t].tag = FXL_VCACHE_EMPTY;
     }
     for (t = 0; t < m->tri_count; t++) {
-        fxl_clipvert_t cv[3], poly[FXL_CLIP_MAX_VERTS];
+        /* the corners in poly[0..2]: the clipper reads them before it
+         * writes its polygon there (one array less in this frame, which
+         * lies under every draw of fxl_mesh_draw) */
+        fxl_clipvert_t poly[FXL_CLIP_MAX_VERTS], *cv = poly;
         fxl_vertex_t scr[FXL_CLIP_MAX_VERTS];
         int32_t vt[3][3];
         uint32_t n, k, idx3[3];
@@ -737,7 +740,7 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                  * unchecked forms); the cut vertices are new, so the
                  * corners' cached projections do not apply */
                 for (k = 0; k < 3; k++) unpack_q8(colour[k], &cv[k]);
-                if ((st = fxl__clip_triangle(&xf, cv, poly, &n)) != FXL_OK) return st;
+                if ((st = fxl__clip_triangle(&xf, poly, poly, &n)) != FXL_OK) return st;
             } else {
                 n = 0; /* all three outside one plane */
             }
@@ -749,9 +752,12 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                 if ((st = project_vertex(&xf, &poly[k], &scr[k])) != FXL_OK) return st;
         }
         for (k = 1; k + 1 < n; k++) {
-            fxl_vertex_t tri[3];
+            /* The fan's triangle (0, k, k + 1) as three consecutive
+             * vertices in place: scr[k - 1] is done with (the triangle
+             * before used it last), so it takes scr[0]'s copy. */
+            fxl_vertex_t *tri = &scr[k - 1];
             int64_t area;
-            tri[0] = scr[0]; tri[1] = scr[k]; tri[2] = scr[k + 1];
+            if (k > 1) tri[0] = scr[0];
             area = snapped_area2(&tri[0], &tri[1], &tri[2]);
             if ((p->cull == FXL_CULL_CW && area > 0) || (p->cull == FXL_CULL_CCW && area < 0)) {
                 if (stats) { stats->triangles++; stats->culled_backface++; }
