@@ -23,6 +23,11 @@
  * level and vertex cache (bench_frontend.h) "fe <mesh> <level> <cache>
  * <ticks> <status>": one fxl_pipeline_emit call into a callback that does
  * nothing (fixel-bench frontend converts ticks with the calib line).
+ * After each of those a "stack <scene> <method> <filter> <bytes>" or "stack
+ * fe <mesh> <level> <cache> <bytes>" line: the deepest stack the draw calls
+ * (or the front end) reached below the caller, measured with
+ * examples/common/fw_stack.h (host_sim/scripts/bench.sh sums them up in
+ * docs/bench/footprint.txt).
  */
 #include <stdint.h>
 
@@ -136,13 +141,16 @@ static void put_str(char **p, const char *s)
         *(*p)++ = *s++;
 }
 
-static fxl_status_t run(const bench_cfg_t *c, draw_fn fn, uint32_t *ticks)
+/* The draw calls' stack depth (fw_stack.h), measured with fxl_draw_triangle
+ * only: bytes below run()'s stack pointer written during them. */
+static fxl_status_t run(const bench_cfg_t *c, draw_fn fn, uint32_t *ticks, uint32_t *depth)
 {
     const bench_scene_t *s = &bench_scenes[c->scene];
     fxl_target_t t;
     fxl_draw_t d;
     fxl_status_t st;
     uint32_t i, t0;
+    uintptr_t top = 0;
 
     st = fxl_target_init(&t, fb, FB_W, FB_H, FB_W, FXL_PIXFMT_RGB565);
     if (st != FXL_OK)
@@ -160,8 +168,11 @@ static fxl_status_t run(const bench_cfg_t *c, draw_fn fn, uint32_t *ticks)
     d.filter = c->filter;
     d.mip = c->mip;
     d.lod = FXL_LOD_SEGMENT;
-    if (fn == fxl_draw_triangle)
+    if (fn == fxl_draw_triangle) {
+        fw_stack_paint();
+        top = fw_stack_sp();
         bench_begin();
+    }
     t0 = ticks_now();
     for (i = 0; i < s->ntri; i++) {
         st = fn(&t, &d, &s->verts[3u * i], 0);
@@ -169,14 +180,16 @@ static fxl_status_t run(const bench_cfg_t *c, draw_fn fn, uint32_t *ticks)
             break;
     }
     *ticks = ticks_since(t0);
-    if (fn == fxl_draw_triangle)
+    if (fn == fxl_draw_triangle) {
         bench_end();
+        *depth = (uint32_t)(top - fw_stack_low());
+    }
     return st;
 }
 
 int main(void)
 {
-    char line[160];
+    char line[256];
     uint32_t k, t0, calib;
     int bad = 0;
 
@@ -199,10 +212,10 @@ int main(void)
     }
     for (k = 0; k < bench_ncfg; k++) {
         const bench_cfg_t *c = &bench_cfgs[k];
-        uint32_t tk = 0, th = 0;
-        fxl_status_t st = run(c, fxl_draw_triangle, &tk);
+        uint32_t tk = 0, th = 0, depth = 0;
+        fxl_status_t st = run(c, fxl_draw_triangle, &tk, &depth);
         char *p = line;
-        (void)run(c, bench_nop, &th);
+        (void)run(c, bench_nop, &th, &depth);
         put_str(&p, "cfg ");
         put_str(&p, c->name);
         put_str(&p, " ");
@@ -210,6 +223,11 @@ int main(void)
         put_str(&p, " ");
         put_u32(&p, th);
         put_str(&p, st == FXL_OK ? " ok\n" : " error\n");
+        put_str(&p, "stack ");
+        put_str(&p, c->name);
+        put_str(&p, " ");
+        put_u32(&p, depth);
+        put_str(&p, "\n");
         *p = 0;
         fw_write(line);
         bad |= st != FXL_OK;
@@ -220,15 +238,19 @@ int main(void)
         for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
             for (c = 0; c < 2; c++) {
                 fxl_pipeline_t p;
-                uint32_t ntri = 0, tk = 0;
+                uint32_t ntri = 0, tk = 0, depth = 0;
                 fxl_status_t st = bench_fe_setup(&p, lv, bm->texgen);
                 char *q = line;
                 if (st == FXL_OK)
                     st = fxl_pipeline_set_vertex_cache(&p, c ? vcache : 0, c ? BENCH_FE_CACHE : 0u);
                 if (st == FXL_OK) {
+                    uintptr_t top;
+                    fw_stack_paint();
+                    top = fw_stack_sp();
                     t0 = ticks_now();
                     st = fxl_pipeline_emit(&p, &bm->mesh, bench_fe_sink, &ntri, 0);
                     tk = ticks_since(t0);
+                    depth = (uint32_t)(top - fw_stack_low());
                 }
                 put_str(&q, "fe ");
                 put_str(&q, bm->name);
@@ -237,6 +259,13 @@ int main(void)
                 put_str(&q, c ? " 1 " : " 0 ");
                 put_u32(&q, tk);
                 put_str(&q, st == FXL_OK ? " ok\n" : " error\n");
+                put_str(&q, "stack fe ");
+                put_str(&q, bm->name);
+                put_str(&q, " ");
+                put_str(&q, bench_fe_level_names[lv]);
+                put_str(&q, c ? " 1 " : " 0 ");
+                put_u32(&q, depth);
+                put_str(&q, "\n");
                 *q = 0;
                 fw_write(line);
                 bad |= st != FXL_OK;

@@ -12,4 +12,12 @@ void fw_semihost_write0(const char *s);
 /* SYS_EXIT_EXTENDED with the status; never returns. */
 void fw_semihost_exit(int code);
 
+/* Stack high-water marks (fw_stack.h): the depth a call used is
+ * fw_stack_sp() before it, after fw_stack_paint(), minus fw_stack_low()
+ * after it. */
+#include <stdint.h>
+void fw_stack_paint(void);
+uintptr_t fw_stack_sp(void);
+uintptr_t fw_stack_low(void);
+
 #endif

@@ -12,6 +12,7 @@ int main(void);
 
 #include "mps2.h"
 #include "fw_mem.h"
+#include "fw_stack.h"
 void Reset_Handler(void);
 void Default_Handler(void);
 

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "mps2.h"
 #include "fw_mem.h"
+#include "fw_stack.h"
 
 extern uint32_t _sbss, _ebss;
 int main(void);

@@ -63,7 +63,14 @@ int main(void)
     out("fixel m4_band: st7789 320x240, bands of 24 rows, mock SPI\n");
     if (st == FXL_OK) out_crc("init", 0, app.init_crc);
     for (i = 0; st == FXL_OK && i < fw_frame_count; i++) {
+        uintptr_t top;
+        uint32_t depth;
+        /* the frame's stack depth below main (mps2.h): front end, band
+         * renderer, driver and mock SPI together */
+        fw_stack_paint();
+        top = fw_stack_sp();
         st = fw_app_frame(&app, fw_frames[i].scene, fw_frames[i].frame, &r);
+        depth = (uint32_t)(top - fw_stack_low());
         out_crc(fw_scene_name(fw_frames[i].scene), fw_frames[i].frame, r.wire_crc);
         out("  tris ");
         out_dec(r.screen_tris);
@@ -73,6 +80,9 @@ int main(void)
         out_dec(r.wire_bytes);
         out(", pixel crc ");
         out_hex(r.pixel_crc);
+        out(", stack ");
+        out_dec(depth);
+        out(" B");
         out(r.bins_overflowed ? ", bins overflowed\n" : "\n");
     }
     out(st == FXL_OK ? "status ok\n" : "status error\n");

@@ -225,7 +225,9 @@ EOF
         done
         echo
         echo "# worst-case stack of one fxl_draw_triangle call (gcc -fcallgraph-info=su, frames summed"
-        echo "# along the deepest call chain; libgcc helpers not included)"
+        echo "# along the deepest call chain; libgcc helpers not included). An upper bound: the tool"
+        echo "# lets the generic walk's pointer call reach the specialised walks too (draw_span_generic's"
+        echo "# frame, 424-744 B, above them), which only fxl__draw_valid calls."
         for cpu in "${cpus[@]}"; do
             for opt in -Os -O2; do
                 d="$root/$sizew/${cpu#cortex-}$opt-full/core"
@@ -233,6 +235,33 @@ EOF
                 printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" fxl_draw_triangle)"
             done
         done
+        echo
+        echo "# the same for fxl_mesh_draw (the front end's frame under every draw: its callback"
+        echo "# draw_one calls the rasterizer) and fxl_pipeline_emit with a callback that does nothing"
+        for cpu in "${cpus[@]}"; do
+            for opt in -Os -O2; do
+                d="$root/$sizew/${cpu#cortex-}$opt-full/core"
+                [ -d "$d" ] || continue
+                printf '%-14s %-4s %s\n' $cpu $opt \
+                    "$(python3 "$scripts/m4_count.py" stack "$d" fxl_mesh_draw fxl_pipeline_emit=draw_one)"
+                printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" fxl_pipeline_emit)"
+            done
+        done
+        if [ -f "$m4w/icount/fw.txt" ]; then
+            echo
+            echo "# measured on qemu (benchmark firmware, -O2, examples/common/fw_stack.h): the deepest"
+            echo "# stack written below the caller by one configuration's fxl_draw_triangle calls (every"
+            echo "# scene, method and filter; M0+: point) or by one fxl_pipeline_emit (every mesh, level and"
+            echo "# cache; callback does nothing). Written, not reserved: a frame's unused array space is"
+            echo "# not counted, so the bound above is what to size a stack (and its interrupts) by."
+            for w in "cortex-m4:$m4w" "cortex-m0plus:$m0w"; do
+                f="${w#*:}/icount/fw.txt"
+                [ -f "$f" ] || continue
+                python3 "$scripts/m4_count.py" peak "$f" | while read -r kind bytes what; do
+                    printf '%-14s %-4s %-8s %5d  %s\n' "${w%%:*}" -O2 "$kind" "$bytes" "$what"
+                done
+            done
+        fi
         echo
         "$bench" ram
     } >"$footprint"

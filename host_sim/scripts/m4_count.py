@@ -16,17 +16,24 @@
   m4_count.py trace FW_OUT COUNTS
       Pair the firmware's configuration lines with the per-segment counts of
       `fixel-bench count-trace` -> "scene method filter instructions trace".
+  m4_count.py peak FW_OUT
+      The benchmark firmware's measured stack depths ("stack ..." lines,
+      examples/common/fw_stack.h) -> "draw BYTES SCENE METHOD FILTER" and
+      "frontend BYTES MESH LEVEL CACHE", the deepest of each kind.
   m4_count.py linked ELF_NM LIB_NM [APP_NM]
       Bytes of the core that a program actually linked: the sizes of the
       ELF's symbols (code and constant data) that the core archive defines,
       plus the compiler runtime helpers they pulled in (every other symbol
       not defined by the program's own objects, APP_NM). Prints
       "total code data runtime" (total = code + runtime).
-  m4_count.py stack CI_DIR ROOT_FUNCTION
+  m4_count.py stack CI_DIR ROOT_FUNCTION [CALLER=CALLEE ...]
       Worst-case stack of ROOT_FUNCTION from gcc -fcallgraph-info=su files:
       the largest sum of frame sizes along any call chain. An indirect call
       (the span-loop pointer) may reach any static function that nothing
-      calls directly (only its address is taken). Prints "bytes chain...".
+      calls directly (only its address is taken) in the same file; the
+      CALLER=CALLEE pairs add calls through pointers handed across files
+      (fxl_pipeline_emit=draw_one: fxl_mesh_draw's callback). Prints
+      "bytes chain...".
 Standard library only.
 """
 import os
@@ -110,7 +117,7 @@ def cmd_trace(fw_out, counts_path):
             print("%s %s %s %d trace" % (scene, method, filt, n))
 
 
-def cmd_stack(ci_dir, root):
+def cmd_stack(ci_dir, root, extra=()):
     frames = {}   # short name -> bytes (largest if names repeat)
     edges = {}    # short name -> set of short names
     home = {}     # short name -> .ci file that defines it
@@ -148,6 +155,10 @@ def cmd_stack(ci_dir, root):
                     c for c in frames
                     if home.get(c) == f and c not in called and not c.startswith("fxl_") and c != root)
 
+    for pair in extra:
+        caller, callee = pair.split("=", 1)
+        edges.setdefault(caller, set()).add(callee)
+
     def worst(n, path):
         if n in path:
             return (0, [n + "(cycle)"])
@@ -162,6 +173,27 @@ def cmd_stack(ci_dir, root):
         sys.exit("m4_count.py: %s not found in %s" % (root, ci_dir))
     total, chain = worst(root, frozenset())
     print("%d %s" % (total, " > ".join("%s(%d)" % (c.split("@")[0], frames.get(c, 0)) for c in chain)))
+
+
+def cmd_peak(fw_out):
+    best = {}
+    with open(fw_out) as f:
+        for line in f:
+            p = line.split()
+            if len(p) == 5 and p[0] == "stack":
+                kind, rest = "draw", p[1:4]
+            elif len(p) == 6 and p[0] == "stack" and p[1] == "fe":
+                kind, rest = "frontend", p[2:5]
+            else:
+                continue
+            depth = int(p[-1])
+            if depth > best.get(kind, (-1,))[0]:
+                best[kind] = (depth, rest)
+    if not best:
+        sys.exit("m4_count.py: no stack lines in %s" % fw_out)
+    for kind in ("draw", "frontend"):
+        if kind in best:
+            print("%s %d %s" % (kind, best[kind][0], " ".join(best[kind][1])))
 
 
 def cmd_linked(elf_nm, lib_nm, app_nm=None):
@@ -192,10 +224,12 @@ def main(argv):
         cmd_icount(argv[2])
     elif len(argv) >= 4 and argv[1] == "trace":
         cmd_trace(argv[2], argv[3])
+    elif len(argv) >= 3 and argv[1] == "peak":
+        cmd_peak(argv[2])
     elif len(argv) >= 4 and argv[1] == "linked":
         cmd_linked(argv[2], argv[3], argv[4] if len(argv) >= 5 else None)
     elif len(argv) >= 4 and argv[1] == "stack":
-        cmd_stack(argv[2], argv[3])
+        cmd_stack(argv[2], argv[3], argv[4:])
     else:
         sys.stderr.write(__doc__)
         return 2
