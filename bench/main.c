@@ -141,6 +141,16 @@ static void put_str(char **p, const char *s)
         *(*p)++ = *s++;
 }
 
+/* "<prefix><mesh> <level> <cache> ": the front-end run a line is about */
+static void put_fe_run(char **p, const char *prefix, const char *mesh, int level, int cache)
+{
+    put_str(p, prefix);
+    put_str(p, mesh);
+    put_str(p, " ");
+    put_str(p, bench_fe_level_names[level]);
+    put_str(p, cache ? " 1 " : " 0 ");
+}
+
 /* The draw calls' stack depth (fw_stack.h), measured with fxl_draw_triangle
  * only: bytes below run()'s stack pointer written during them. */
 static fxl_status_t run(const bench_cfg_t *c, draw_fn fn, uint32_t *ticks, uint32_t *depth)
@@ -252,18 +262,10 @@ int main(void)
                     tk = ticks_since(t0);
                     depth = (uint32_t)(top - fw_stack_low());
                 }
-                put_str(&q, "fe ");
-                put_str(&q, bm->name);
-                put_str(&q, " ");
-                put_str(&q, bench_fe_level_names[lv]);
-                put_str(&q, c ? " 1 " : " 0 ");
+                put_fe_run(&q, "fe ", bm->name, lv, c);
                 put_u32(&q, tk);
                 put_str(&q, st == FXL_OK ? " ok\n" : " error\n");
-                put_str(&q, "stack fe ");
-                put_str(&q, bm->name);
-                put_str(&q, " ");
-                put_str(&q, bench_fe_level_names[lv]);
-                put_str(&q, c ? " 1 " : " 0 ");
+                put_fe_run(&q, "stack fe ", bm->name, lv, c);
                 put_u32(&q, depth);
                 put_str(&q, "\n");
                 *q = 0;

@@ -228,25 +228,23 @@ EOF
         echo "# along the deepest call chain; libgcc helpers not included). An upper bound: the tool"
         echo "# lets the generic walk's pointer call reach the specialised walks too (draw_span_generic's"
         echo "# frame, 424-744 B, above them), which only fxl__draw_valid calls."
-        for cpu in "${cpus[@]}"; do
-            for opt in -Os -O2; do
-                d="$root/$sizew/${cpu#cortex-}$opt-full/core"
-                [ -d "$d" ] || continue
-                printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" fxl_draw_triangle)"
+        # stack_rows ROOT [CALLER=CALLEE...]: the bound for every core and level
+        stack_rows() {
+            local cpu opt d
+            for cpu in "${cpus[@]}"; do
+                for opt in -Os -O2; do
+                    d="$root/$sizew/${cpu#cortex-}$opt-full/core"
+                    [ -d "$d" ] || continue
+                    printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" "$@")"
+                done
             done
-        done
+        }
+        stack_rows fxl_draw_triangle
         echo
         echo "# the same for fxl_mesh_draw (the front end's frame under every draw: its callback"
         echo "# draw_one calls the rasterizer) and fxl_pipeline_emit with a callback that does nothing"
-        for cpu in "${cpus[@]}"; do
-            for opt in -Os -O2; do
-                d="$root/$sizew/${cpu#cortex-}$opt-full/core"
-                [ -d "$d" ] || continue
-                printf '%-14s %-4s %s\n' $cpu $opt \
-                    "$(python3 "$scripts/m4_count.py" stack "$d" fxl_mesh_draw fxl_pipeline_emit=draw_one)"
-                printf '%-14s %-4s %s\n' $cpu $opt "$(python3 "$scripts/m4_count.py" stack "$d" fxl_pipeline_emit)"
-            done
-        done
+        stack_rows fxl_mesh_draw fxl_pipeline_emit=draw_one
+        stack_rows fxl_pipeline_emit
         if [ -f "$m4w/icount/fw.txt" ]; then
             echo
             echo "# measured on qemu (benchmark firmware, -O2, examples/common/fw_stack.h): the deepest"
