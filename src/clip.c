@@ -135,9 +135,10 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
                                 fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n)
 {
     /* The polygon goes back and forth between scratch and out, one plane a
-     * pass: two buffers of FXL_CLIP_MAX_VERTS (432 B) where two of 16 in
-     * this frame (1,536 B) made the clipper the deepest frame of a
-     * firmware's front end (docs/porting.md, section 10). */
+     * pass: one local buffer of FXL_CLIP_MAX_VERTS (432 B on 32-bit cores)
+     * and the caller's, where two of 16 in this frame (1,536 B) made the
+     * clipper the deepest frame of a firmware's front end
+     * (docs/porting.md, section 10). */
     fxl_clipvert_t scratch[FXL_CLIP_MAX_VERTS];
     fxl_clipvert_t *cur = scratch, *next = out;
     int c0, c1, c2, pl;

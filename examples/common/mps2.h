@@ -14,7 +14,7 @@ void fw_semihost_exit(int code);
 
 /* Stack high-water marks (fw_stack.h): the depth a call used is
  * fw_stack_sp() before it, after fw_stack_paint(), minus fw_stack_low()
- * after it. */
+ * after it (0 from fw_stack_low: deeper than the painted window). */
 #include <stdint.h>
 void fw_stack_paint(void);
 uintptr_t fw_stack_sp(void);

@@ -156,14 +156,17 @@ def cmd_stack(ci_dir, root, extra=()):
                     if home.get(c) == f and c not in called and not c.startswith("fxl_") and c != root)
 
     for pair in extra:
-        caller, callee = pair.split("=", 1)
+        caller, sep, callee = pair.partition("=")
+        # a misspelt name would count as a 0-byte leaf: a bound too small
+        if not sep or caller not in frames or callee not in frames:
+            sys.exit("m4_count.py: %s: want CALLER=CALLEE, both functions of %s" % (pair, ci_dir))
         edges.setdefault(caller, set()).add(callee)
 
     def worst(n, path):
         if n in path:
             return (0, [n + "(cycle)"])
         best = (0, [])
-        for c in edges.get(n, ()):
+        for c in sorted(edges.get(n, ())):   # sorted: the same chain on ties, every run
             w = worst(c, path | {n})
             if w[0] > best[0]:
                 best = w

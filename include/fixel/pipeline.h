@@ -344,16 +344,20 @@ fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, f
  * order; attributes interpolated linearly in clip space. Each intersection
  * is computed from the inside vertex, so an edge shared by two triangles is
  * cut at the same point in both (watertight). *n = 0 when nothing is left.
- * in may overlap out (in[0..2] = out[0..2] is fine): it is read first; out
- * is also the clipper's work space, so after an error its contents are
- * undefined. FXL_ERR_RANGE for a vertex coordinate at FXL_CLIP_LIMIT_Q32
+ * in may overlap out (in[0..2] = out[0..2] is fine): it is read first. out
+ * is also the clipper's work space: whatever the result, out[*n..] (all of
+ * out when *n = 0, after an error too) holds no defined values.
+ * FXL_ERR_RANGE for a vertex coordinate at FXL_CLIP_LIMIT_Q32
  * or beyond, for an xf outside fxl_pipeline_prepare's ranges
  * (fxl_xform_project), and for a polygon that rounding made non-convex
  * and longer than FXL_CLIP_MAX_VERTS at some plane. */
 fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n);
 
-/* Receives each screen-space triangle; a negative return stops emission. */
+/* Receives each screen-space triangle; a negative return stops emission.
+ * tri points into fxl_pipeline_emit's own working vertices (the fan's
+ * triangles are passed in place): valid during the call only, and not to
+ * be written through (later triangles of the fan share its vertices). */
 typedef fxl_status_t (*fxl_emit_fn)(void *user, const fxl_vertex_t tri[3]);
 
 /* Transform, light, texgen, clip, project, cull a mesh and hand each
