@@ -95,6 +95,32 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
     if (res->w < xf->near_q32) res->w = xf->near_q32; /* rounding never takes it behind near */
 }
 
+/* Makes room in a polygon that is full (m = FXL_CLIP_MAX_VERTS vertices,
+ * so m >= 2): removes vertex i >= 1 nearest its predecessor (largest of
+ * |dx|, |dy|, |dw|; the first on ties) and returns m - 1. A convex polygon
+ * never fills up (3 + k vertices after k planes); one does only where the
+ * cut points' rounding made it non-convex, near two planes at once, and
+ * then its surplus vertices lie within that rounding of their neighbours.
+ * Refusing such a triangle stopped fxl_mesh_draw at a valid mesh. Every
+ * |coordinate| is below 2^61 (G w <= 2^60 on a guard plane), so the
+ * differences fit int64. */
+static uint32_t drop_closest(fxl_clipvert_t *poly, uint32_t m)
+{
+    uint32_t i, best = 1;
+    uint64_t best_d = UINT64_MAX;
+    for (i = 1; i < m; i++) {
+        const uint64_t dx = fxl__mag64(poly[i].x - poly[i - 1].x), dy = fxl__mag64(poly[i].y - poly[i - 1].y);
+        const uint64_t dw = fxl__mag64(poly[i].w - poly[i - 1].w);
+        const uint64_t d = dx > dy ? (dx > dw ? dx : dw) : (dy > dw ? dy : dw);
+        if (d < best_d) {
+            best_d = d;
+            best = i;
+        }
+    }
+    for (i = best; i + 1 < m; i++) poly[i] = poly[i + 1];
+    return m - 1;
+}
+
 /* Bit pl set where plane_dist(xf, pl, v) < 0. G w is formed once: through
  * plane_dist it was four 96-bit products a corner, twelve a triangle. */
 int fxl__clip_outcode(const fxl_xform_t *xf, int64_t x, int64_t y, int64_t w)
@@ -168,15 +194,15 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
                 const fxl_clipvert_t *a = &src[i], *b = &src[(i + 1) % count];
                 int64_t da = plane_dist(xf, pl, a), db = plane_dist(xf, pl, b);
                 /* A convex polygon gains at most one vertex a plane, so
-                 * after k planes it has at most 3 + k <= FXL_CLIP_MAX_VERTS.
-                 * Only rounding could make it non-convex and longer: such a
-                 * polygon, at any pass, is refused as its final count was. */
+                 * after k planes it has at most 3 + k <= FXL_CLIP_MAX_VERTS;
+                 * one that rounding made longer loses its nearest-neighbour
+                 * vertices (drop_closest). */
                 if (da >= 0) {
-                    if (m >= FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
+                    if (m >= FXL_CLIP_MAX_VERTS) m = drop_closest(dst, m);
                     dst[m++] = *a;
                 }
                 if ((da >= 0 && db < 0) || (da < 0 && db >= 0)) {
-                    if (m >= FXL_CLIP_MAX_VERTS) return FXL_ERR_RANGE;
+                    if (m >= FXL_CLIP_MAX_VERTS) m = drop_closest(dst, m);
                     if (da >= 0)
                         intersect(xf, pl, a, da, b, db, &dst[m]);
                     else

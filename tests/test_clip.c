@@ -313,6 +313,74 @@ static void test_clip_in_place_equals_separate_buffers(void)
     TEST_ASSERT_GREATER_THAN(2000, cut);
 }
 
+/* Triangles close to two planes at once, where the cut points' rounding
+ * makes the polygon non-convex: a plane then adds two or three vertices
+ * and the polygon reached 10 (a review's hill-climbing search found 11,303
+ * of them in valid pipelines; these are eight). They were refused with
+ * FXL_ERR_RANGE, which stopped fxl_mesh_draw at that triangle of a valid
+ * mesh; now the surplus vertices (within the rounding of a neighbour) are
+ * dropped and every vertex left projects. Viewport: a square of the given
+ * side, which sets the guard band; near and far q16. */
+static void test_clip_rounding_surplus_vertices_are_dropped_not_refused(void)
+{
+    static const struct {
+        int32_t side, near_q16, far_q16;
+        int64_t xyw[9];
+    } c[] = {
+        {2596, 151, 166, {-56622465LL, -132434267LL, 20983895LL, 68623105LL, -68462678LL, 10847749LL, -68350426LL,
+                          -58416012LL, 9255879LL}},
+        {1, 761, 1424, {24241861728LL, -28490343937LL, 111290406LL, -23182297251LL, -23182284288LL, 90555798LL,
+                        12641263426LL, -7131930369LL, 27859103LL}},
+        {1, 42983358, 191998306, {3221197051374359LL, -3221197051374322LL, 12582800981931LL, 3221197051804607LL,
+                                  -3221197051496569LL, 12582800984168LL, -721140771596326LL, -721140778296833LL,
+                                  2816956165222LL}},
+        {508, 2810139, 7519668, {5939708992849LL, -5939693490946LL, 184165301797LL, -15894183035550LL,
+                                 -15894765966227LL, 492830880165LL, -5939630901384LL, -5939609274879LL,
+                                 184162690474LL}},
+        {1680, 2614, 12613, {1670693714LL, 1670692366LL, 171311239LL, -6148375541LL, 11340894234LL, 1162884733LL,
+                             -1676380099LL, 1590718925LL, 163110837LL}},
+        {2288, 84, 92, {-24385623LL, 303251335LL, 42348643LL, -44903131LL, 10189385LL, 1422934LL, 42898422LL,
+                        42881071LL, 5988284LL}},
+        {1864, 24014998, 43962240, {13833626729462LL, 13833623462917LL, 1573846908591LL, -30083000598107LL,
+                                    30083021365537LL, 3422535969829LL, -13833623466829LL, 13833623466821LL,
+                                    1573846909372LL}},
+        {79, 41, 172, {2395763779LL, -5066967390LL, 24431790LL, 1131066188LL, 2014444220LL, -9713202LL,
+                       -1178048156LL, -1181279294LL, 5695866LL}},
+    };
+    size_t i;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        fxl_pipeline_t p;
+        fxl_xform_t xf;
+        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+        uint32_t n = 0, k;
+        fxl_status_t st;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_viewport(&p, 0, 0, c[i].side, c[i].side));
+        p.near_q16 = c[i].near_q16;
+        p.far_q16 = c[i].far_q16;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+        memset(in, 0, sizeof in);
+        for (k = 0; k < 3; k++) {
+            in[k].x = c[i].xyw[3 * k];
+            in[k].y = c[i].xyw[3 * k + 1];
+            in[k].w = c[i].xyw[3 * k + 2];
+        }
+        st = fxl_clip_triangle(&xf, in, out, &n);
+        if (st != FXL_OK || n < 3) {
+            snprintf(msg, sizeof msg, "case %u: status %d, %u vertices", (unsigned)i, (int)st, (unsigned)n);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        for (k = 0; k < n; k++) {
+            fxl_vertex_t v;
+            if (fxl_xform_project(&xf, &out[k], &v) != FXL_OK) {
+                snprintf(msg, sizeof msg, "case %u: vertex %u of %u does not project", (unsigned)i, (unsigned)k,
+                         (unsigned)n);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+}
+
 static void test_clip_shared_edge_cut_identically(void)
 {
     /* Triangles (a, b, c) and (b, a, d) share the edge a-b, which crosses
@@ -396,6 +464,7 @@ int main(void)
     RUN_TEST(test_clip_one_vertex_behind_near_gives_quad_on_plane);
     RUN_TEST(test_clip_random_triangles_match_double_reference);
     RUN_TEST(test_clip_in_place_equals_separate_buffers);
+    RUN_TEST(test_clip_rounding_surplus_vertices_are_dropped_not_refused);
     RUN_TEST(test_clip_shared_edge_cut_identically);
     RUN_TEST(test_clip_output_within_guard_band_and_projectable);
     RUN_TEST(test_clip_arguments);

@@ -347,10 +347,11 @@ fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, f
  * in may overlap out (in[0..2] = out[0..2] is fine): it is read first. out
  * is also the clipper's work space: whatever the result, out[*n..] (all of
  * out when *n = 0, after an error too) holds no defined values.
- * FXL_ERR_RANGE for a vertex coordinate at FXL_CLIP_LIMIT_Q32
- * or beyond, for an xf outside fxl_pipeline_prepare's ranges
- * (fxl_xform_project), and for a polygon that rounding made non-convex
- * and longer than FXL_CLIP_MAX_VERTS at some plane. */
+ * A polygon that the cut points' rounding made non-convex and longer than
+ * FXL_CLIP_MAX_VERTS at some plane (a triangle close to two planes at
+ * once) loses the vertices nearest their neighbours, within that rounding.
+ * FXL_ERR_RANGE for a vertex coordinate at FXL_CLIP_LIMIT_Q32 or beyond,
+ * and for an xf outside fxl_pipeline_prepare's ranges (fxl_xform_project). */
 fxl_status_t fxl_clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3],
                                fxl_clipvert_t out[FXL_CLIP_MAX_VERTS], uint32_t *n);
 
