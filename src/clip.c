@@ -201,7 +201,7 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
                     if (m >= FXL_CLIP_MAX_VERTS) m = drop_closest(dst, m);
                     dst[m++] = *a;
                 }
-                if ((da >= 0 && db < 0) || (da < 0 && db >= 0)) {
+                if ((da >= 0) != (db >= 0)) { /* the edge crosses the plane */
                     if (m >= FXL_CLIP_MAX_VERTS) m = drop_closest(dst, m);
                     if (da >= 0)
                         intersect(xf, pl, a, da, b, db, &dst[m]);

@@ -680,7 +680,7 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
         /* the corners in poly[0..2]: the clipper reads them before it
          * writes its polygon there (one array less in this frame, which
          * lies under every draw of fxl_mesh_draw) */
-        fxl_clipvert_t poly[FXL_CLIP_MAX_VERTS], *cv = poly;
+        fxl_clipvert_t poly[FXL_CLIP_MAX_VERTS];
         fxl_vertex_t scr[FXL_CLIP_MAX_VERTS];
         int32_t vt[3][3];
         uint32_t n, k, idx3[3];
@@ -705,17 +705,17 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
                 return st;
             }
             /* Copy out now: a later corner may evict this entry. */
-            cv[k].x = e->x;
-            cv[k].y = e->y;
-            cv[k].w = e->w;
+            poly[k].x = e->x;
+            poly[k].y = e->y;
+            poly[k].w = e->w;
             colour[k] = e->color;
             out_all &= e->outcode;
             out_any |= e->outcode;
             if (m->uv && p->texgen.mode == FXL_TEXGEN_NONE) {
-                cv[k].u = m->uv[idx].u;
-                cv[k].v = m->uv[idx].v;
+                poly[k].u = m->uv[idx].u;
+                poly[k].v = m->uv[idx].v;
             } else {
-                cv[k].u = cv[k].v = 0;
+                poly[k].u = poly[k].v = 0;
             }
             vt[k][0] = e->tex[0];
             vt[k][1] = e->tex[1];
@@ -724,7 +724,7 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
         if (p->texgen.mode != FXL_TEXGEN_NONE) {
             fxl_texcoord_t tc[3];
             fxl__texgen_finish(&p->texgen, (const int32_t(*)[3])vt, tc);
-            for (k = 0; k < 3; k++) { cv[k].u = tc[k].u; cv[k].v = tc[k].v; }
+            for (k = 0; k < 3; k++) { poly[k].u = tc[k].u; poly[k].v = tc[k].v; }
         }
         if (out_any == 0u) {
             /* Inside every plane: the clipper would return the corners as
@@ -732,14 +732,14 @@ fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl
              * the clipper's copies, q8 colour channels and outcodes. */
             n = 3;
             for (k = 0; k < 3; k++)
-                if ((st = project_inside(&xf, cache, ncache, idx3[k], &cv[k], colour[k], &scr[k])) != FXL_OK)
+                if ((st = project_inside(&xf, cache, ncache, idx3[k], &poly[k], colour[k], &scr[k])) != FXL_OK)
                     return st;
         } else {
             if (out_all == 0u) {
                 /* cut by some plane (xf is fxl_pipeline_prepare's: the
                  * unchecked forms); the cut vertices are new, so the
                  * corners' cached projections do not apply */
-                for (k = 0; k < 3; k++) unpack_q8(colour[k], &cv[k]);
+                for (k = 0; k < 3; k++) unpack_q8(colour[k], &poly[k]);
                 if ((st = fxl__clip_triangle(&xf, poly, poly, &n)) != FXL_OK) return st;
             } else {
                 n = 0; /* all three outside one plane */
