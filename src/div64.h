@@ -8,7 +8,10 @@
  * one iteration per quotient bit. Both give the exact truncated quotient, so
  * output is bit-identical either way; the loop is slower, and the core
  * divides 64-bit values only per triangle (set-up, edges) and once per span
- * (the generic walk's last segment).
+ * (the generic walk's last segment). FXL_SMALL_DIV64_HW (config.h) keeps
+ * the loop only for divisors beyond 32 bits on cores that divide 32 bits
+ * in hardware: ~24% fewer Cortex-M4 -Os instructions on small triangles,
+ * +360 B.
  */
 #ifndef FIXEL_DIV64_H
 #define FIXEL_DIV64_H
@@ -20,9 +23,10 @@
  * callers never pass it). Compiled in every build so tests check it against
  * the compiler's division on hosts. */
 uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d);
-/* n / d truncated toward zero by the same loop, for d != 0; INT64_MIN / -1
- * saturates to INT64_MAX (one out-of-line call: smaller than the signs
- * inline) */
+/* n / d truncated toward zero by fxl__udiv64 (the loop, or with
+ * FXL_SMALL_DIV64_HW its 32-bit divisors by fxl__udiv64_by32), for d != 0;
+ * INT64_MIN / -1 saturates to INT64_MAX (one out-of-line call: smaller
+ * than the signs inline) */
 int64_t fxl__sdiv64_loop(int64_t n, int64_t d);
 
 /* floor(n / d) for d != 0 from 32-bit divisions (0 for d == 0). Compiled
@@ -54,10 +58,16 @@ uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d);
 #endif
 #endif
 
+/* Size builds that divide 32-bit divisors in hardware anyway
+ * (FXL_SMALL_DIV64_HW, config.h): fxl__udiv64_by32 before the loop. */
+#define FXL__SMALL_BY32 (FXL_SMALL_DIV64 && FXL_SMALL_DIV64_HW && FXL__DIV32_HW)
+
 /* n / d, d != 0 */
 static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 {
-#if FXL_SMALL_DIV64
+#if FXL__SMALL_BY32
+    return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : fxl__udiv64_loop(n, d);
+#elif FXL_SMALL_DIV64
     return fxl__udiv64_loop(n, d);
 #elif FXL__DIV64_BY32
     return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : n / d;

@@ -35,9 +35,10 @@
  * distance), and where 32-bit division is an instruction (FXL__DIV32_HW:
  * Cortex-M3 and up, RISC-V with M) two of them with their corrections
  * (fxl__udiv64_by32) are ~5x faster than the shift-subtract loop that
- * FXL_SMALL_DIV64 gives size builds, which keep that loop for the core's
- * 16 KiB: in the firmware example's -Os lit frame the loop was 34% of the
- * front end. Exact either way: the same quotients. */
+ * FXL_SMALL_DIV64 gives size builds, whose core keeps that loop for its
+ * 16 KiB unless FXL_SMALL_DIV64_HW: in the firmware example's -Os lit
+ * frame the loop was 34% of the front end. Exact either way: the same
+ * quotients. */
 static inline uint64_t fxl__fe_udiv64(uint64_t n, uint64_t d)
 {
 #if FXL__DIV32_HW

@@ -91,8 +91,9 @@ static FXL__SETUP_INLINE int64_t gradient(int64_t N, area_t *det)
      * fits 63 bits (the usual case) one division with its remainder gives it
      * exactly - the same number the chunked path below computes with three,
      * which matters on Cortex-M where each is a library call. (Size-
-     * optimised builds take the general path alone: one division.) */
-    if (!FXL_SMALL_DIV64 && N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
+     * optimised builds take the general path alone, less code, unless
+     * their divisions are by32's: FXL_SMALL_DIV64_HW.) */
+    if ((!FXL_SMALL_DIV64 || FXL__SMALL_BY32) && N > -((int64_t)1 << (62 - FXL__PF)) && N < ((int64_t)1 << (62 - FXL__PF))) {
         const uint64_t a = (uint64_t)(N < 0 ? -N : N) << FXL__PF;   /* < 2^62 */
         uint64_t rem, q = fxl__div64_by(a, dv, &rem);
         /* the general path's test below, on floor(|N| 2^PF / den) */

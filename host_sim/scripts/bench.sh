@@ -168,6 +168,11 @@ EOF
 #define FXL_FAST_NATIVE 0
 #define FXL_FAST_NO_DEPTH 0
 EOF
+    cat >"$sizew/hwdiv_config.h" <<'EOF'
+/* Every feature; a size build's set-up divides by 32-bit divisors with the
+ * core's divide instruction (config.h). */
+#define FXL_SMALL_DIV64_HW 1
+EOF
     {
         echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size (rv32imac:"
         echo "# riscv64-unknown-elf-size) of libfixel.a"
@@ -177,6 +182,8 @@ EOF
         echo "# min = point + bilinear, subdivided, RGB565: FXL_HAVE_MIPMAP/GENERIC/DEPTH/AUTO 0."
         echo "# panel = every feature, specialised code only for byte-swapped targets with depth"
         echo "# (FXL_FAST_NATIVE 0, FXL_FAST_NO_DEPTH 0): what one SPI-panel product keeps."
+        echo "# hwdiv (-Os only) = every feature with FXL_SMALL_DIV64_HW 1: set-up's 32-bit divisors by the"
+        echo "# core's divide instruction (the M0+ has none: the same code as full there)."
         echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
         printf '%-14s %-4s %-5s %9s %6s %6s %9s %8s\n' cpu opt cfg archive data bss linked runtime
         cpus=(cortex-m0plus cortex-m4)
@@ -191,7 +198,9 @@ EOF
                 target=(CPU=$cpu)
             fi
             for opt in -Os -O2; do
-                for cfg in full min panel; do
+                cfgs=(full min panel)
+                [ "$opt" = -Os ] && cfgs+=(hwdiv)
+                for cfg in "${cfgs[@]}"; do
                     d="$root/$sizew/${cpu#cortex-}$opt-$cfg"
                     # From scratch: bench/Makefile's objects do not depend on
                     # the config header, so a changed configuration would

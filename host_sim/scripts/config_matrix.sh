@@ -41,6 +41,7 @@ configs=(
     "no-fast-bilinear-depth:-DFXL_FAST_BILINEAR=0 -DFXL_FAST_DEPTH=0"
     "no-fast-mip:-DFXL_FAST_MIP=0"
     "no-fast-at-all:-DFXL_FAST_NATIVE=0 -DFXL_FAST_SWAPPED=0"
+    "small-div-hw:-DFXL_SMALL_DIV64_HW=1"
 )
 warn=(-Wall -Wextra -Wpedantic -Werror)
 base=(-std=c99 -ffreestanding "-I$root/include" "-I$root/src")

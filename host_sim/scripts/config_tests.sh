@@ -19,6 +19,9 @@
 # feature and take a numeric option to its limit: tex14 (FXL_TEX_MAX_LOG2
 # 14), sub1 and sub6 (FXL_SUBPIXEL_BITS 1 and 6: tests of golden values,
 # which are the 1/16 px grid's, report IGNORE there; test_features.h).
+# Two keep every feature with a size build's division (small-div, and
+# small-div-hw with FXL_SMALL_DIV64_HW): the same images from other
+# arithmetic.
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
@@ -55,12 +58,19 @@ config_defines() {
         echo FXL_SUBPIXEL_BITS=6 ;;
     sub1) # every feature, vertices on a 1/2 px grid (the coarsest)
         echo FXL_SUBPIXEL_BITS=1 ;;
+    small-div) # every feature, the size builds' 64-bit division (fixel's
+        # loop, FXL_SMALL_DIV64) with the 32-bit steps of a core that
+        # divides in hardware (FXL__DIV32_HW), as a Cortex-M4 -Os build
+        echo FXL_SMALL_DIV64=1 FXL__DIV32_HW=1 ;;
+    small-div-hw) # the same with FXL_SMALL_DIV64_HW: 32-bit divisors by
+        # fxl__udiv64_by32, gradients with one division
+        echo FXL_SMALL_DIV64=1 FXL__DIV32_HW=1 FXL_SMALL_DIV64_HW=1 ;;
     *) return 1 ;;
     esac
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14 sub1 sub6)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14 sub1 sub6 small-div small-div-hw)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do

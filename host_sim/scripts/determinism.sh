@@ -4,7 +4,8 @@
 # Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
 # variants, then every pipeline scene, the gallery's p_*, x 4 variants drawn
 # from object-space meshes by the fixed-point front end, 320x240) with the
-# core built by: gcc -O0, -O2 and -Os (-Os with FXL__DIV32_HW), gcc -O2 with
+# core built by: gcc -O0, -O2 and -Os (-Os with FXL__DIV32_HW, and with
+# FXL_SMALL_DIV64_HW too), gcc -O2 with
 # the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
 # clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
@@ -62,6 +63,9 @@ run_host gcc-O2 gcc -O2
 # 32-bit steps of cores that divide in hardware (FXL__DIV32_HW), as a
 # Cortex-M4 or RV32IMAC -Os firmware has them
 run_host gcc-Os gcc -Os -DFXL__DIV32_HW=1
+# and with FXL_SMALL_DIV64_HW (config.h): set-up's 32-bit divisors by
+# fxl__udiv64_by32, its gradients with one division, as such a build has them
+run_host gcc-Os-hwdiv gcc -Os -DFXL__DIV32_HW=1 -DFXL_SMALL_DIV64_HW=1
 # the arithmetic of 32-bit cores without UMULL or UDIV (Cortex-M0+ at -O2):
 # products from 16-bit halves, the table-started reciprocal, set-up's
 # division by a reciprocal, and the 32-bit word forms of the roundings
