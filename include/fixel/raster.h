@@ -13,7 +13,13 @@
  *   nearer). Interpolation only uses ratios of inv_w within a triangle; the
  *   depth buffer stores inv_w >> 16, so keep one scale per frame (the front
  *   end uses near/w * 2^32, clamped to [1, 2^32 - 1]). inv_w == 0 is
- *   FXL_ERR_RANGE.
+ *   FXL_ERR_RANGE. What a pixel stores is its interpolated inv_w >> 16,
+ *   floored, from a plane that keeps 2^-20 of a unit and is stepped
+ *   between correction points like u and v: it can be one step off the
+ *   exact value's, even at a vertex: one whose inv_w is a multiple of 2^16
+ *   can store one less (below every vertex's inv_w >> 16 when it is the
+ *   farthest). Against a depth buffer cleared to 0 a pixel passes the test
+ *   for certain when its inv_w is 2^17 or more.
  * - u, v are normalised texture coordinates in q16 (65536 = one texture
  *   side), any int32 value. They are interpolated perspective-correctly:
  *   1/w, u/w, v/w are planes in screen space; u = (u/w) / (1/w) is exact at
@@ -24,7 +30,11 @@
  *   periods, in texels), plus 2^-27 |u| and 2^-17: about 3.2 * 2^-30 U R for
  *   U texels of range across a triangle and a depth ratio R (measured 0.15
  *   to 0.55 of it). 1/64 texel needs U R below ~10^7: split triangles that
- *   span many periods far into the distance. A triangle with a clamp or
+ *   span many periods far into the distance. When a vertex has inv_w of
+ *   2^31 or more every vertex's inv_w is halved (truncated) to fit 31 bits,
+ *   which adds up to 2 U / q texels at a point of interpolated inv_w q (U:
+ *   the triangle's range of u in texels): within 1/64 texel where q is
+ *   above 128 U. A triangle with a clamp or
  *   border vertex coordinate 32767 texels (of level 0) or more from 0 is
  *   divided at every pixel whatever `persp` says: such coordinates
  *   saturate, and cannot be stepped between. So is a needle: a sliver so
@@ -35,7 +45,11 @@
  *   or the per-segment LOD to read; it takes FXL_LOD_TRIANGLE's LOD.
  * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
  *   any u, v. Values outside never cause undefined behaviour: planes are
- *   evaluated in 64-bit modular arithmetic and clamped to the vertex range.
+ *   evaluated in 64-bit modular arithmetic, and the value a pixel takes is
+ *   saturated to its format (depth to 0 .. 2^32 - 1, Gouraud channels to
+ *   their 5 or 6 bits, clamp and border coordinates to int32; repeat and
+ *   mirror coordinates wrap), not to the vertex range, which rounding can
+ *   leave by a step.
  */
 #ifndef FIXEL_RASTER_H
 #define FIXEL_RASTER_H

@@ -15,7 +15,8 @@
  * nearest texel is opaque, and any key texel of the 2x2 footprint takes that
  * nearest texel's colour (weights unchanged, no division).
  * Sizes: power-of-two sides 1 .. 2^FXL_TEX_MAX_LOG2 only; other sizes get
- * FXL_ERR_UNSUPPORTED (pad or resample them with fixel-texconv).
+ * FXL_ERR_UNSUPPORTED (pad or resample the image first: fixel-texconv
+ * refuses other sizes too).
  * Texture coordinates are normalised: 1.0 (q16 65536) is one texture width.
  */
 #ifndef FIXEL_TEXTURE_H
