@@ -25,13 +25,26 @@
 #include "auto.h"
 #include "recip_run.h"
 
+/* Helpers that GCC -Os copies into each of their call sites in
+ * fxl__auto_bound: out of line in size builds (a few calls a triangle's
+ * set-up) they are 76 bytes less Cortex-M4 code (fifty-fourth session: room
+ * for the Gouraud vertex-range clamp within 16 KiB). Speed builds keep
+ * them inline. */
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+#define AUTO_SIZE_NOINLINE __attribute__((noinline))
+#define AUTO_SIZE_INLINE __attribute__((noinline))
+#else
+#define AUTO_SIZE_NOINLINE
+#define AUTO_SIZE_INLINE inline
+#endif
+
 /* Longest log2 L <= cap with 0.0482 L^3 2^lg <= budget (quadratic
  * segments, auto.h): 3 log2 L <= log2 budget + log2(12 sqrt 3) - lg, that
  * constant (4.377) rounded down to 1120/256, less margins for the log2
  * table (budget -1, |q_x|^2 +4, q_min^4 -4, |N| -1 steps). The budget
  * has already given up 1/16 of itself and 1/64 texel for the exact ends
  * and the fixed-point steps (fxl__quad_steps). */
-static int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
+static AUTO_SIZE_NOINLINE int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
 {
     int32_t k = lbq + 1120 - lg - 10;
     if (k < 0)
@@ -46,7 +59,7 @@ static int fit_log2_quad(int32_t lg, int32_t lbq, int cap)
  * exact pixels (k = 0) run at ~80 each. Per pixel, ~(150 + 60) / 2^kq + 4
  * against 150 / 2^k (80 at k = 0): two doublings pay from k = 0 to 4, one
  * from k = 1 to 3, none beyond. */
-static int quad_pays(int k, int kq)
+static AUTO_SIZE_NOINLINE int quad_pays(int k, int kq)
 {
     if (kq <= k)
         return 0;
@@ -156,7 +169,7 @@ static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
 
 /* q8 log2 in texels of a budget of b q16; for b <= 0 a value that lets no
  * segment through. */
-static inline int32_t log2_budget_q8(int32_t b)
+static AUTO_SIZE_INLINE int32_t log2_budget_q8(int32_t b)
 {
     return b > 0 ? fxl__log2_q8_32((uint32_t)b) - 16 * 256 : INT32_MIN / 4;
 }

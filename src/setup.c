@@ -308,12 +308,18 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
     }
     if (fxl__has_color(tri)) {
         /* Channels as q16 (r5, g6, b5), perspective-correct like u, v. */
-        static const int sh[3] = {11, 5, 0};
-        static const uint32_t mask[3] = {31, 63, 31};
+        static const uint8_t sh[3] = {11, 5, 0}, mask[3] = {31, 63, 31};
         int ch;
         for (ch = 0; ch < 3; ch++) {
-            for (i = 0; i < 3; i++)
-                a[i] = (int64_t)((v[i].color >> sh[ch]) & mask[ch]) << 16;
+            uint32_t lo = mask[ch], hi = 0;
+            for (i = 0; i < 3; i++) {
+                const uint32_t c = (v[i].color >> sh[ch]) & mask[ch];
+                lo = c < lo ? c : lo;
+                hi = c > hi ? c : hi;
+                a[i] = (int64_t)c << 16;
+            }
+            tri->color_lo[ch] = (uint8_t)lo;
+            tri->color_hi[ch] = (uint8_t)hi;
             persp_plane(tri, FXL__AR + ch, a, q, X, Y, &area);
         }
     }

@@ -628,8 +628,8 @@ static FXL__HOT_INLINE uint32_t sample_repeat(const fxl__level_t *lv, uint32_t u
  *   four wrapped fetches a pixel; the channels are modulated from the
  *   expanded form (the same bits compact565 would gather).
  * - A Gouraud channel at a pixel is c >> 16 exactly as seg_generic packs
- *   it: the corrections clamp each channel to its maximum (31 << 16 or
- *   63 << 16) and the steps, truncated toward zero, never pass the
+ *   it: the corrections clamp each channel to its vertex range (within 31
+ *   << 16 or 63 << 16) and the steps, truncated toward zero, never pass the
  *   segment's end, so no channel reaches the next one's bits. The
  *   channels are stepped with the + 1 of modulate565 already added. */
 static FXL__HOT_INLINE uint32_t seg_modulate_plain(const fxl__tri_t *tri, const fxl__seg_t *s, const int bilinear,
@@ -866,8 +866,9 @@ static FXL__HOT_INLINE void correct_t(const fxl__tri_t *tri, const int64_t pv[NP
         pt->v64 = v;
     }
     if (GW_COLOR) {
-        static const int64_t cmax[3] = {31 << 16, 63 << 16, 31 << 16};
+        /* each channel within its vertex range (a constant colour exactly) */
         for (i = 0; i < 3; i++) {
+            const int32_t lo = (int32_t)tri->color_lo[i] << 16, hi = (int32_t)tri->color_hi[i] << 16;
             if (mod && FXL__WORD32) {
                 /* a channel (below 2^23) is nearly always in fxl__persp's
                  * 32-bit case: there the value and its clamp in one word
@@ -876,13 +877,13 @@ static FXL__HOT_INLINE void correct_t(const fxl__tri_t *tri, const int64_t pv[NP
                 const int e = rc.n + fxl__persp_eb(tri->a_shift[FXL__AR + i]);
                 if (e <= -33 && e >= -62) {
                     const int32_t c = fxl__persp_w32(fxl__persp_prod(pv[PA + FXL__AR + i], &rc), e);
-                    pt->a[FXL__AR + i] = c < 0 ? 0u : (c > (int32_t)cmax[i] ? (uint32_t)cmax[i] : (uint32_t)c);
+                    pt->a[FXL__AR + i] = (uint32_t)(c < lo ? lo : (c > hi ? hi : c));
                     continue;
                 }
             }
             {
                 const int64_t c = fxl__persp(pv[PA + FXL__AR + i], &rc, tri->a_shift[FXL__AR + i]);
-                pt->a[FXL__AR + i] = (uint32_t)(c < 0 ? 0 : (c > cmax[i] ? cmax[i] : c));
+                pt->a[FXL__AR + i] = (uint32_t)(c < lo ? lo : (c > hi ? hi : c));
             }
         }
     }

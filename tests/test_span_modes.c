@@ -544,6 +544,68 @@ void test_gouraud_matches_reference_within_one_step(void)
     }
 }
 
+/* Gouraud channels stay within their vertex values: a triangle of one
+ * colour draws exactly that colour, and two colours give channels between
+ * theirs, in every perspective mode, with depth ratios up to 2^32 - 1.
+ * Before the corrections clamped to the vertex range (they clamped to
+ * 0 .. 31 or 63), rounding left ~1-2% of a one-colour triangle's pixels a
+ * step low (white drawn as 0xF7DE). */
+void test_gouraud_stays_within_its_vertex_colours(void)
+{
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    static const int16_t modes[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, 2, 16, FXL_PERSP_MAX, FXL_PERSP_AUTO};
+    static const int sh[3] = {11, 5, 0};
+    static const uint32_t mask[3] = {31, 63, 31};
+    static uint16_t img[W * H];
+    fxl_target_t t;
+    fxl_draw_t d;
+    char msg[200];
+    long drawn = 0;
+    int k;
+    seed = 54u;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, img, W, H, W, FXL_PIXFMT_RGB565));
+    for (k = 0; k < 1200; k++) {
+        fxl_vertex_t v[3];
+        uint32_t lo[3], hi[3];
+        const uint16_t c0 = (uint16_t)(rnd() | 1u), c1 = k & 1 ? (uint16_t)(rnd() | 1u) : c0;
+        int i, ch, p;
+        for (i = 0; i < 3; i++) {
+            v[i].x = (fxl_q16_t)((int32_t)(rnd() % (uint32_t)((W + 20) << 8)) - (10 << 8)) * 256;
+            v[i].y = (fxl_q16_t)((int32_t)(rnd() % (uint32_t)((H + 20) << 8)) - (10 << 8)) * 256;
+            /* far (1 .. 2^20) or anywhere up to 2^32 - 1 */
+            v[i].inv_w = rnd() & 1u ? 1u + rnd() % (1u << 20) : (rnd() << 8) | (rnd() & 255u) | 1u;
+            v[i].u = v[i].v = 0;
+            v[i].color = i == 2 ? c1 : c0;
+        }
+        for (ch = 0; ch < 3; ch++) {
+            const uint32_t a = (c0 >> sh[ch]) & mask[ch], b = (c1 >> sh[ch]) & mask[ch];
+            lo[ch] = a < b ? a : b;
+            hi[ch] = a < b ? b : a;
+        }
+        fxl_draw_defaults(&d);
+        d.depth = 0;
+        d.shade = FXL_SHADE_GOURAUD;
+        d.persp = modes[k % (int)(sizeof modes / sizeof modes[0])];
+        memset(img, 0, sizeof img);   /* colours are odd: never 0 */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+        for (p = 0; p < W * H; p++) {
+            if (!img[p])
+                continue;
+            drawn++;
+            for (ch = 0; ch < 3; ch++) {
+                const uint32_t c = (img[p] >> sh[ch]) & mask[ch];
+                if (c < lo[ch] || c > hi[ch]) {
+                    snprintf(msg, sizeof msg,
+                             "triangle %d (persp %d, colours %04x %04x, inv_w %u %u %u): pixel %d is %04x",
+                             k, d.persp, c0, c1, v[0].inv_w, v[1].inv_w, v[2].inv_w, p, img[p]);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+        }
+    }
+    TEST_ASSERT_GREATER_THAN(100000, drawn);
+}
+
 /* A 2x2 texture (red, green / blue, white) magnified onto a 10x10 square,
  * u, v from 0 to 1: pixel (i, j) samples u = (i + 0.5) / 5 texels. Point
  * sampling by hand, and one bilinear pixel computed by hand from the
@@ -604,6 +666,7 @@ int main(void)
     RUN_TEST(test_border_axis_stays_outside_on_levels_past_the_short_side);
     RUN_TEST(test_modulate_and_decal_follow_their_formulas);
     RUN_TEST(test_gouraud_matches_reference_within_one_step);
+    RUN_TEST(test_gouraud_stays_within_its_vertex_colours);
     RUN_TEST(test_point_and_bilinear_against_hand_computed_texels);
     return UNITY_END();
 }

@@ -65,7 +65,7 @@
  * multiplies, within (|u| + |v|) 2^-18 texel: the 40-degree-rolled floor
  * at 1.19x subdiv16's Cortex-M4 instructions instead of 2.66x (trilinear
  * 1.17x instead of 2.20x). 1.4 KB of Cortex-M4 code at -Os (the
- * every-feature core is 16,378 B with it), 24 KB at -O2 (run walks per
+ * every-feature core is 16,314 B with it), 24 KB at -O2 (run walks per
  * variant and a 1 KB seed table); without them such triangles take
  * segments. */
 #ifndef FXL_HAVE_RR

@@ -45,11 +45,11 @@
  *   or the per-segment LOD to read; it takes FXL_LOD_TRIANGLE's LOD.
  * - Accepted ranges: any int32 x, y (so |x|, |y| < 32768 px), inv_w >= 1,
  *   any u, v. Values outside never cause undefined behaviour: planes are
- *   evaluated in 64-bit modular arithmetic, and the value a pixel takes is
- *   saturated to its format (depth to 0 .. 2^32 - 1, Gouraud channels to
- *   their 5 or 6 bits, clamp and border coordinates to int32; repeat and
- *   mirror coordinates wrap), not to the vertex range, which rounding can
- *   leave by a step.
+ *   evaluated in 64-bit modular arithmetic. A Gouraud channel is clamped to
+ *   its three vertex values (one colour draws exactly that colour); other
+ *   values are saturated to their format (depth to 0 .. 2^32 - 1, clamp and
+ *   border coordinates to int32; repeat and mirror coordinates wrap), not
+ *   to the vertex range, which rounding can leave by a step.
  */
 #ifndef FIXEL_RASTER_H
 #define FIXEL_RASTER_H
