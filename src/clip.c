@@ -9,9 +9,10 @@
  * <= 2^24), so G w < 2^60, |d| < 2^61 and d_in - d_out < 2^62: no overflow.
  * Interpolation is linear in clip space, which is the perspective-correct
  * choice for every attribute. The parameter t = d_in / (d_in - d_out) is
- * formed in q31 from the two distances reduced to 32 significant bits, so
- * its relative error is below 2^-31; the new vertex is then put exactly on
- * the plane (w = near, x = G w, ...) so later stages can rely on it.
+ * a 32-bit mantissa with its own exponent, from the two distances each
+ * reduced to 32 significant bits, so its relative error is below 2^-30
+ * however small t is; the new vertex is then put exactly on the plane
+ * (w = near, x = G w, ...) so later stages can rely on it.
  */
 #include "pipeline_int.h"
 #include "div64.h"
@@ -48,15 +49,29 @@ static int64_t plane_dist(const fxl_xform_t *xf, int plane, const fxl_clipvert_t
     return plane_is_positive(plane) ? guard_w(xf, v->w) - c : guard_w(xf, v->w) + c;
 }
 
-static int64_t lerp64(int64_t a, int64_t b, uint32_t t_q31)
+/* t = m 2^-sh, sh in [31, 93] */
+typedef struct lerp_t {
+    uint32_t m;
+    unsigned sh;
+} lerp_t;
+
+static int64_t lerp64(int64_t a, int64_t b, const lerp_t *t)
 {
-    return a + FXL__HOT_MUL_SHR(b - a, t_q31, 31, NULL);
+    return a + FXL__HOT_MUL_SHR(b - a, t->m, t->sh, NULL);
 }
 
-static int32_t lerp32(int32_t a, int32_t b, uint32_t t_q31)
+static int32_t lerp32(int32_t a, int32_t b, const lerp_t *t)
 {
     /* the result lies between a and b, so it fits */
-    return (int32_t)lerp64(a, b, t_q31);
+    return (int32_t)lerp64(a, b, t);
+}
+
+/* x (> 0) shifted to 32 significant bits, [2^31, 2^32); *top its top bit */
+static uint64_t to_32_bits(uint64_t x, int *top)
+{
+    const int k = 63 - fxl_clz64(x);
+    *top = k;
+    return k > 31 ? x >> (k - 31) : x << (31 - k);
 }
 
 /* The point where the edge from `in` (d_in >= 0) to `out` (d_out < 0)
@@ -64,22 +79,28 @@ static int32_t lerp32(int32_t a, int32_t b, uint32_t t_q31)
 static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in, int64_t d_in,
                       const fxl_clipvert_t *out, int64_t d_out, fxl_clipvert_t *res)
 {
-    uint64_t num = (uint64_t)d_in, den = (uint64_t)d_in + (uint64_t)(-d_out);
-    uint32_t t;
-    int top = 63 - fxl_clz64(den);
-    if (top > 31) { /* keep 32 significant bits; num <= den stays true */
-        num >>= (top - 31);
-        den >>= (top - 31);
+    /* 0 <= d_in < d_in - d_out < 2^62. Both to 32 significant bits and
+     * t = (num / den) 2^(tn - td): the mantissa (num / den) 2^31 < 2^32
+     * keeps its precision when d_in is tiny beside d_out. One shared shift,
+     * as before, left a vertex just inside the near plane 1-2 bits of t:
+     * corners ~150 px off on scaled geometry with a small near. */
+    lerp_t t = {0u, 31u};
+    if (d_in > 0) {
+        int tn, td;
+        const uint64_t num = to_32_bits((uint64_t)d_in, &tn);
+        const uint64_t den = to_32_bits((uint64_t)d_in + (uint64_t)(-d_out), &td);
+        const uint64_t m = fxl__fe_udiv64((num << 31) + den / 2u, den);   /* <= 2^32 */
+        t.m = m > UINT32_MAX ? UINT32_MAX : (uint32_t)m;
+        t.sh = 31u + (unsigned)(td - tn);   /* td >= tn: d_in < den */
     }
-    t = (uint32_t)fxl__fe_udiv64((num << 31) + den / 2u, den); /* <= 2^31 */
-    res->x = lerp64(in->x, out->x, t);
-    res->y = lerp64(in->y, out->y, t);
-    res->w = lerp64(in->w, out->w, t);
-    res->u = lerp32(in->u, out->u, t);
-    res->v = lerp32(in->v, out->v, t);
-    res->r = lerp32(in->r, out->r, t);
-    res->g = lerp32(in->g, out->g, t);
-    res->b = lerp32(in->b, out->b, t);
+    res->x = lerp64(in->x, out->x, &t);
+    res->y = lerp64(in->y, out->y, &t);
+    res->w = lerp64(in->w, out->w, &t);
+    res->u = lerp32(in->u, out->u, &t);
+    res->v = lerp32(in->v, out->v, &t);
+    res->r = lerp32(in->r, out->r, &t);
+    res->g = lerp32(in->g, out->g, &t);
+    res->b = lerp32(in->b, out->b, &t);
     /* the intersection exactly on the plane */
     if (plane == PL_NEAR) {
         res->w = xf->near_q32;
