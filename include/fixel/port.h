@@ -319,7 +319,7 @@ typedef struct fxl_band {
  * only). Errors: FXL_ERR_ARG (NULL/zero, buf0 == buf1, buffers that share a
  * byte (buf0, buf1, depth, tris, bins over the sizes above), buf0, buf1 or
  * depth at an odd address, a panel whose init failed), FXL_ERR_RANGE (band_rows > height,
- * width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
+ * band_rows or width > FXL_TARGET_MAX_DIM, or a last band starting below frame row
  * FXL_TARGET_MAX_ORIGIN), FXL_ERR_NOMEM (bin_cap below one header per band
  * while non-zero), FXL_ERR_UNSUPPORTED (a depth band in a build without
  * FXL_HAVE_DEPTH). On an error *b is left unchanged. */
