@@ -144,9 +144,11 @@ typedef struct fxl_draw {
 /* Counters a draw adds to (pass NULL when not wanted). */
 typedef struct fxl_stats {
     uint32_t triangles;           /* submitted */
-    uint32_t drawn;               /* reached the span loops */
+    uint32_t drawn;               /* reached the span loops (a sliver between
+                                   * pixel centres may write none) */
     uint32_t culled_degenerate;   /* zero area after snapping */
-    uint32_t culled_outside;      /* no pixel centre inside the clip rectangle */
+    uint32_t culled_outside;      /* its bounding box holds no pixel centre
+                                   * of the clip rectangle */
     uint32_t culled_backface;     /* by the front end */
     uint32_t pixels;              /* pixels written */
     uint32_t spans;               /* non-empty clipped spans */
