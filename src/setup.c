@@ -318,8 +318,8 @@ fxl_status_t fxl__setup(fxl__tri_t *tri, const fxl_vertex_t v[3], const int32_t 
                 hi = c > hi ? c : hi;
                 a[i] = (int64_t)c << 16;
             }
-            tri->color_lo[ch] = (uint8_t)lo;
-            tri->color_hi[ch] = (uint8_t)hi;
+            tri->color_lo[ch] = (int32_t)(lo << 16);
+            tri->color_hi[ch] = (int32_t)(hi << 16);
             persp_plane(tri, FXL__AR + ch, a, q, X, Y, &area);
         }
     }

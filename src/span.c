@@ -868,7 +868,7 @@ static FXL__HOT_INLINE void correct_t(const fxl__tri_t *tri, const int64_t pv[NP
     if (GW_COLOR) {
         /* each channel within its vertex range (a constant colour exactly) */
         for (i = 0; i < 3; i++) {
-            const int32_t lo = (int32_t)tri->color_lo[i] << 16, hi = (int32_t)tri->color_hi[i] << 16;
+            const int32_t lo = tri->color_lo[i], hi = tri->color_hi[i];
             if (mod && FXL__WORD32) {
                 /* a channel (below 2^23) is nearly always in fxl__persp's
                  * 32-bit case: there the value and its clamp in one word
