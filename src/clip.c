@@ -91,16 +91,16 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
         int tn, td;
         const uint64_t num = to_32_bits((uint64_t)d_in, &tn);
         const uint64_t den = to_32_bits((uint64_t)d_in + (uint64_t)(-d_out), &td);
-        const uint64_t m = fxl__fe_udiv64((num << 31) + den / 2u, den);   /* <= 2^32 */
+        /* < 2^32: num < 2^32, den >= 2^31, so num 2^31 / den + 1/2 < 2^32 */
+        const uint64_t m = fxl__fe_udiv64((num << 31) + den / 2u, den);
         const int e = td - tn;   /* >= 0: d_in < den */
         if (e < 8) {
             /* t >= 2^-8: q31 keeps 24 significant bits of it and takes
              * the constant shift (the -O2 floor's submit was 10% dearer
              * with every cut through the variable one) */
-            const uint64_t q = e ? (m + ((uint64_t)1 << (e - 1))) >> e : m;
-            t.m = q > UINT32_MAX ? UINT32_MAX : (uint32_t)q;
+            t.m = (uint32_t)(e ? (m + ((uint64_t)1 << (e - 1))) >> e : m);
         } else {
-            t.m = m > UINT32_MAX ? UINT32_MAX : (uint32_t)m;
+            t.m = (uint32_t)m;
             t.sh = 31u + (unsigned)e;
         }
     }
@@ -211,7 +211,7 @@ fxl_status_t fxl__clip_triangle(const fxl_xform_t *xf, const fxl_clipvert_t in[3
     for (i = 0; i < 3; i++) scratch[i] = in[i];
     if ((c0 | c1 | c2) != 0) {
         /* The planes some vertex of the polygon is outside: the inputs', and
-         * each cut point's. A cut point carries t's rounding (q31) times its
+         * each cut point's. A cut point carries t's rounding times its
          * edge's length, and with a long edge and a tiny near plane that put
          * it past a guard plane no input vertex was outside (depth ratios of
          * ~10^6): skipped, that plane left a corner the projection refuses

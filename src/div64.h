@@ -23,10 +23,9 @@
  * callers never pass it). Compiled in every build so tests check it against
  * the compiler's division on hosts. */
 uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d);
-/* n / d truncated toward zero by fxl__udiv64 (the loop, or with
- * FXL_SMALL_DIV64_HW its 32-bit divisors by fxl__udiv64_by32), for d != 0;
- * INT64_MIN / -1 saturates to INT64_MAX (one out-of-line call: smaller
- * than the signs inline) */
+/* n / d truncated toward zero by the same loop, for d != 0; INT64_MIN / -1
+ * saturates to INT64_MAX (one out-of-line call: smaller than the signs
+ * inline) */
 int64_t fxl__sdiv64_loop(int64_t n, int64_t d);
 
 /* floor(n / d) for d != 0 from 32-bit divisions (0 for d == 0). Compiled
@@ -185,7 +184,9 @@ static inline int64_t fxl__sdiv64_mag(int64_t n, int64_t d)
 /* n / d truncated toward zero, as C's `/`, for d != 0 and not INT64_MIN / -1 */
 static inline int64_t fxl__sdiv64(int64_t n, int64_t d)
 {
-#if FXL_SMALL_DIV64
+#if FXL__SMALL_BY32
+    return fxl__sdiv64_mag(n, d);   /* fxl__udiv64: by32 for 32-bit divisors */
+#elif FXL_SMALL_DIV64
     return fxl__sdiv64_loop(n, d);
 #else
     return n / d;

@@ -434,7 +434,7 @@ int64_t fxl__sdiv64_loop(int64_t n, int64_t d)
 {
     /* |q| is 2^63 for INT64_MIN / 1 (INT64_MIN) and INT64_MIN / -1 (which
      * saturates): div64_from_mag rebuilds both without a signed overflow */
-    return div64_from_mag((n < 0) != (d < 0), fxl__udiv64(abs_u64(n), abs_u64(d)));
+    return div64_from_mag((n < 0) != (d < 0), fxl__udiv64_loop(abs_u64(n), abs_u64(d)));
 }
 
 int64_t fxl_div64_round(int64_t num, int64_t den)

@@ -546,7 +546,10 @@ void test_gouraud_matches_reference_within_one_step(void)
 
 /* Gouraud channels stay within their vertex values: a triangle of one
  * colour draws exactly that colour, and two colours give channels between
- * theirs, in every perspective mode, with depth ratios up to 2^32 - 1.
+ * theirs, in every perspective mode, with depth ratios up to 2^32 - 1;
+ * untextured, and every other triangle lit (MODULATE) on a white texture,
+ * which gives the colour back exactly (31 (c + 1) >> 5 = c): the speed
+ * builds' own walk for lit textures (draw_span_mod) and its pixel loop.
  * Before the corrections clamped to the vertex range (they clamped to
  * 0 .. 31 or 63), rounding left ~1-2% of a one-colour triangle's pixels a
  * step low (white drawn as 0xF7DE). */
@@ -557,13 +560,21 @@ void test_gouraud_stays_within_its_vertex_colours(void)
     static const int sh[3] = {11, 5, 0};
     static const uint32_t mask[3] = {31, 63, 31};
     static uint16_t img[W * H];
+    static const uint16_t white[8 * 8] = {
+        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
+        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
+        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
+        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
+        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
+    fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
     char msg[200];
-    long drawn = 0;
+    long drawn = 0, lit = 0;
     int k;
     seed = 54u;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, img, W, H, W, FXL_PIXFMT_RGB565));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, white, 8, 8, FXL_TEXFMT_RGB565, 1));
     for (k = 0; k < 1200; k++) {
         fxl_vertex_t v[3];
         uint32_t lo[3], hi[3];
@@ -574,7 +585,8 @@ void test_gouraud_stays_within_its_vertex_colours(void)
             v[i].y = (fxl_q16_t)((int32_t)(rnd() % (uint32_t)((H + 20) << 8)) - (10 << 8)) * 256;
             /* far (1 .. 2^20) or anywhere up to 2^32 - 1 */
             v[i].inv_w = rnd() & 1u ? 1u + rnd() % (1u << 20) : (rnd() << 8) | (rnd() & 255u) | 1u;
-            v[i].u = v[i].v = 0;
+            v[i].u = (fxl_q16_t)(rnd() % (4u << 16));
+            v[i].v = (fxl_q16_t)(rnd() % (4u << 16));
             v[i].color = i == 2 ? c1 : c0;
         }
         for (ch = 0; ch < 3; ch++) {
@@ -586,12 +598,18 @@ void test_gouraud_stays_within_its_vertex_colours(void)
         d.depth = 0;
         d.shade = FXL_SHADE_GOURAUD;
         d.persp = modes[k % (int)(sizeof modes / sizeof modes[0])];
+        if ((k / 2) & 1) {   /* lit texture: both colour cases, every mode */
+            d.texture = &tex;
+            d.texenv = FXL_TEXENV_MODULATE;
+            d.mip = FXL_MIP_NONE;
+        }
         memset(img, 0, sizeof img);   /* colours are odd: never 0 */
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
         for (p = 0; p < W * H; p++) {
             if (!img[p])
                 continue;
             drawn++;
+            lit += d.texture != NULL;
             for (ch = 0; ch < 3; ch++) {
                 const uint32_t c = (img[p] >> sh[ch]) & mask[ch];
                 if (c < lo[ch] || c > hi[ch]) {
@@ -604,6 +622,7 @@ void test_gouraud_stays_within_its_vertex_colours(void)
         }
     }
     TEST_ASSERT_GREATER_THAN(100000, drawn);
+    TEST_ASSERT_GREATER_THAN(drawn / 4, lit);
 }
 
 /* A 2x2 texture (red, green / blue, white) magnified onto a 10x10 square,

@@ -134,12 +134,12 @@
 /* With FXL_SMALL_DIV64, on cores whose 32-bit division is an instruction
  * (Cortex-M3/M4/M7/M33, RISC-V with M): 1 divides set-up's 64-bit values
  * by a divisor that fits 32 bits (doubled areas and edge heights: any
- * triangle within a 2048-pixel square) with those instructions, as speed
- * builds do, instead of the loop, and a gradient with one division instead
- * of two loops. Identical results. Cortex-M4 -Os: +360 B linked, small
- * triangles' draws -24% instructions (docs/porting.md, section 8).
- * Default 0: the every-feature -Os core stays within 16 KiB. No effect on
- * other cores. */
+ * triangle within a 2048-pixel square on the default 1/16 px grid) with
+ * those instructions, as speed builds do, instead of the loop, and a
+ * gradient with one division instead of two loops. Identical results.
+ * Cortex-M4 -Os: +366 B linked, small triangles' draws -24% instructions
+ * (docs/porting.md, section 8). Default 0: the every-feature -Os core
+ * stays within 16 KiB. No effect on other cores. */
 #ifndef FXL_SMALL_DIV64_HW
 #define FXL_SMALL_DIV64_HW 0
 #endif
