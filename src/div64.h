@@ -11,7 +11,7 @@
  * (the generic walk's last segment). FXL_SMALL_DIV64_HW (config.h) keeps
  * the loop only for divisors beyond 32 bits on cores that divide 32 bits
  * in hardware: ~24% fewer Cortex-M4 -Os instructions on small triangles,
- * +360 B.
+ * +366 B.
  */
 #ifndef FIXEL_DIV64_H
 #define FIXEL_DIV64_H

@@ -65,7 +65,7 @@
  * multiplies, within (|u| + |v|) 2^-18 texel: the 40-degree-rolled floor
  * at 1.19x subdiv16's Cortex-M4 instructions instead of 2.66x (trilinear
  * 1.17x instead of 2.20x). 1.4 KB of Cortex-M4 code at -Os (the
- * every-feature core is 16,314 B with it), 24 KB at -O2 (run walks per
+ * every-feature core is 16,302 B with it), 24 KB at -O2 (run walks per
  * variant and a 1 KB seed table); without them such triangles take
  * segments. */
 #ifndef FXL_HAVE_RR
@@ -89,7 +89,7 @@
  * the rest always takes the generic walk). Each combination of target format,
  * depth and filter has its own pixel loop, and in speed-optimised builds its
  * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 267 KB for all
- * (docs/bench/footprint.txt: 272,948 B linked; 110,290 B with
+ * (docs/bench/footprint.txt: 272,952 B linked; 110,294 B with
  * FXL_FAST_NATIVE 0 and FXL_FAST_NO_DEPTH 0); at -Os a pixel loop of
  * ~0.2 KB a filter and depth, shared by both formats (bilinear: one loop
  * with depth and without). A product that drives one panel format, or
