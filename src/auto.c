@@ -31,10 +31,8 @@
  * Speed builds keep them inline. */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
 #define AUTO_SIZE_NOINLINE __attribute__((noinline))
-#define AUTO_SIZE_INLINE __attribute__((noinline))
 #else
 #define AUTO_SIZE_NOINLINE
-#define AUTO_SIZE_INLINE inline
 #endif
 
 /* Longest log2 L <= cap with 0.0482 L^3 2^lg <= budget (quadratic
@@ -168,7 +166,7 @@ static int32_t budget_less_margins(const fxl_draw_t *d, int32_t texels)
 
 /* q8 log2 in texels of a budget of b q16; for b <= 0 a value that lets no
  * segment through. */
-static AUTO_SIZE_INLINE int32_t log2_budget_q8(int32_t b)
+static AUTO_SIZE_NOINLINE int32_t log2_budget_q8(int32_t b)
 {
     return b > 0 ? fxl__log2_q8_32((uint32_t)b) - 16 * 256 : INT32_MIN / 4;
 }

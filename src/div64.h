@@ -61,17 +61,20 @@ uint64_t fxl__udiv64_by32(uint64_t n, uint32_t d);
  * (FXL_SMALL_DIV64_HW, config.h): fxl__udiv64_by32 before the loop. */
 #define FXL__SMALL_BY32 (FXL_SMALL_DIV64 && FXL_SMALL_DIV64_HW && FXL__DIV32_HW)
 
-/* n / d, d != 0 */
+/* n / d, d != 0: a 32-bit divisor by fxl__udiv64_by32 where that is
+ * chosen (speed builds on cores with UDIV, or FXL_SMALL_DIV64_HW), the rest
+ * by the loop in size builds, by the compiler's division otherwise */
+#if FXL_SMALL_DIV64
+#define FXL__UDIV64_ANY(n, d) fxl__udiv64_loop(n, d)
+#else
+#define FXL__UDIV64_ANY(n, d) ((n) / (d))
+#endif
 static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 {
-#if FXL__SMALL_BY32
-    return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : fxl__udiv64_loop(n, d);
-#elif FXL_SMALL_DIV64
-    return fxl__udiv64_loop(n, d);
-#elif FXL__DIV64_BY32
-    return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : n / d;
+#if FXL__DIV64_BY32 || FXL__SMALL_BY32
+    return (d >> 32) == 0u ? fxl__udiv64_by32(n, (uint32_t)d) : FXL__UDIV64_ANY(n, d);
 #else
-    return n / d;
+    return FXL__UDIV64_ANY(n, d);
 #endif
 }
 

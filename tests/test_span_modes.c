@@ -560,12 +560,7 @@ void test_gouraud_stays_within_its_vertex_colours(void)
     static const int sh[3] = {11, 5, 0};
     static const uint32_t mask[3] = {31, 63, 31};
     static uint16_t img[W * H];
-    static const uint16_t white[8 * 8] = {
-        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
-        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
-        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
-        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF,
-        0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
+    static uint16_t white[8 * 8];
     fxl_texture_t tex;
     fxl_target_t t;
     fxl_draw_t d;
@@ -573,6 +568,8 @@ void test_gouraud_stays_within_its_vertex_colours(void)
     long drawn = 0, lit = 0;
     int k;
     seed = 54u;
+    for (k = 0; k < 8 * 8; k++)
+        white[k] = 0xFFFF;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, img, W, H, W, FXL_PIXFMT_RGB565));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, white, 8, 8, FXL_TEXFMT_RGB565, 1));
     for (k = 0; k < 1200; k++) {
