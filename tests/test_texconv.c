@@ -371,6 +371,67 @@ void test_i8_quantiser_maps_every_pixel_to_its_nearest_entry(void)
     free(src);
 }
 
+/* Median cut with one colour holding most of the pixels (a white
+ * background): a box whose last colour in the sort order held over half its
+ * pixels was split into itself and an empty box, whose mean divided by zero
+ * (the tool died on SIGFPE). 30% white among random colours: every entry
+ * must be a colour some pixel maps to, and white pixels must stay white. */
+void test_i8_quantiser_survives_a_dominant_colour(void)
+{
+    uint8_t *src = random_image(64, 64, 0);
+    texconv_opts_t o;
+    texconv_chain_t c;
+    uint32_t i, used[256] = {0}, white = 0;
+    char msg[96];
+    for (i = 0; i < 64 * 64; i++)
+        if (rnd() % 10 < 3) {
+            src[4 * i] = src[4 * i + 1] = src[4 * i + 2] = 255;
+            white++;
+        }
+    TEST_ASSERT_TRUE(white > 1000);
+    texconv_opts_default(&o);
+    o.format = FXL_TEXFMT_I8;
+    o.mips = TEXCONV_MIPS_NONE;
+    convert_file(src, 64, 64, &o, &c);
+    TEST_ASSERT_EQUAL_UINT32(256, c.palette_used);
+    for (i = 0; i < 64 * 64; i++) {
+        const uint32_t k = ((const uint8_t *)c.texels)[i];
+        used[k]++;
+        if (src[4 * i] == 255 && src[4 * i + 1] == 255 && src[4 * i + 2] == 255) {
+            snprintf(msg, sizeof msg, "white pixel %u: entry %u = 0x%04X", (unsigned)i, (unsigned)k,
+                     (unsigned)c.palette[k]);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(0xFFFF, c.palette[k], msg);
+        }
+    }
+    for (i = 0; i < 256; i++) {
+        snprintf(msg, sizeof msg, "entry %u (0x%04X) is used by no pixel", (unsigned)i, (unsigned)c.palette[i]);
+        TEST_ASSERT_TRUE_MESSAGE(used[i] > 0, msg);
+    }
+    texconv_chain_free(&c);
+    free(src);
+}
+
+/* The command line the outputs record names the tool "fixel-texconv"
+ * whatever argv[0] is; a shorter argv[0] (a symlink, exec -a) once sized
+ * that string too small (a heap overflow: ASan in make sanitize). */
+void test_short_program_name_is_not_an_overflow(void)
+{
+    uint8_t *src = random_image(4, 4, 3);
+    char *argv[] = {(char *)"t", (char *)path_in("s.png"), (char *)"-o", (char *)path_in("s.c"), NULL};
+    FILE *f;
+    char line[512];
+    int found = 0;
+    write_png(path_in("s.png"), 4, 4, src, PNG_COLOR_TYPE_RGBA, 8);
+    TEST_ASSERT_EQUAL_INT(0, texconv_main(4, argv));
+    f = fopen(path_in("s.c"), "r");
+    TEST_ASSERT_NOT_NULL(f);
+    while (fgets(line, sizeof line, f))
+        found |= strstr(line, "command: fixel-texconv ") != NULL;
+    fclose(f);
+    TEST_ASSERT_TRUE_MESSAGE(found, "the generated file names the command");
+    free(src);
+}
+
 /* ---- emitted C and blob ------------------------------------------------------------ */
 
 /* FNV-1a over the chain, palette and descriptor. The same function is
@@ -743,6 +804,8 @@ int main(void)
     RUN_TEST(test_roundtrip_rgb565_level0_equals_png_pixels);
     RUN_TEST(test_roundtrip_l8_and_exact_i8_with_key);
     RUN_TEST(test_i8_quantiser_maps_every_pixel_to_its_nearest_entry);
+    RUN_TEST(test_i8_quantiser_survives_a_dominant_colour);
+    RUN_TEST(test_short_program_name_is_not_an_overflow);
     RUN_TEST(test_emitted_c_compiles_and_holds_the_same_chain);
     RUN_TEST(test_blob_layout);
     RUN_TEST(test_missing_file_fails_and_writes_nothing);

@@ -252,7 +252,12 @@ static uint32_t median_cut(qcolor_t *col, uint32_t ncol, uint16_t *out, uint32_t
             if (2u * acc >= total)
                 break;
         }
-        split++; /* first colour of the upper half: 1 .. count-1 */
+        /* first colour of the upper half: 1 .. count-1. Without the test a
+         * last colour holding over half the box's pixels left the loop at
+         * count-1 and made the upper half empty (then a division by its
+         * zero pixel count below). */
+        if (split < box[best].count - 1u)
+            split++;
         box[nbox].first = box[best].first + split;
         box[nbox].count = box[best].count - split;
         box[best].count = split;
@@ -879,8 +884,10 @@ int texconv_main(int argc, char **argv)
     }
     texconv_image_free(&img);
 
+    /* the command as written below: the tool's own name for argv[0], which
+     * may be shorter (a symlink, exec -a) */
     for (i = 0; i < argc; i++)
-        cmd_len += strlen(argv[i]) + 1;
+        cmd_len += strlen(i == 0 ? "fixel-texconv" : argv[i]) + 1;
     command = (char *)malloc(cmd_len);
     if (command == NULL) {
         texconv_chain_free(&chain);
