@@ -28,6 +28,8 @@
 #define FXL__V_PT FXL_FAST_POINT
 #define FXL__V_BL (FXL_FAST_BILINEAR && FXL_HAVE_BILINEAR)
 #define FXL__V_MIP (FXL_FAST_MIP && FXL_HAVE_MIPMAP && FXL__FAST_SPANS)
+/* tinted copies of the one-level variants (FXL_FAST_TINT; speed builds) */
+#define FXL__V_TINT (FXL_FAST_TINT && FXL__FAST_SPANS && FXL_HAVE_GENERIC)
 #define FXL__V(bil, z, sw)                                                                                  \
     (((bil) ? FXL__V_BL : FXL__V_PT) && ((z) ? FXL__V_Z : FXL__V_NOZ) && ((sw) ? FXL__V_SWP : FXL__V_NAT))
 /* Size-optimised builds (no fast spans) keep one pixel loop a filter and
@@ -108,6 +110,38 @@ static inline uint32_t compact565(uint32_t x)
 {
     x &= 0x07E0F81Fu;
     return (x | (x >> 16)) & 0xFFFFu;
+}
+#endif
+
+#if FXL__V_TINT
+/* A flat tint's factors: each channel of the colour + 1 (1..32, 1..64,
+ * 1..32), as modulate565 below multiplies by them. */
+typedef struct fxl__tint {
+    uint32_t r, g, b;
+} fxl__tint_t;
+
+/* a byte swap (the tinted variants' stores: FXL_T_OUT names its argument
+ * once) */
+static inline uint16_t fxl__swap16(uint32_t c)
+{
+    return (uint16_t)((c >> 8) | (c << 8));
+}
+
+static inline void tint_init(fxl__tint_t *k, uint32_t c)
+{
+    k->r = ((c >> 11) & 31u) + 1u;
+    k->g = ((c >> 5) & 63u) + 1u;
+    k->b = (c & 31u) + 1u;
+}
+
+/* modulate565(t, colour) for t <= 0xFFFF with each channel left in place:
+ * (t & 0xF800) * r1 >> 5 is r * r1 << 6, whose bits 11..15 are those of
+ * (r * r1 >> 5) << 11 because r * r1 <= 31 * 32 < 2^10 (green: 63 * 64 <
+ * 2^12; blue needs no mask). Three multiplies, no unpacking. */
+static inline uint32_t tint565(uint32_t t, const fxl__tint_t *k)
+{
+    return ((((t & 0xF800u) * k->r) >> 5) & 0xF800u) | ((((t & 0x07E0u) * k->g) >> 6) & 0x07E0u) |
+           (((t & 0x001Fu) * k->b) >> 5);
 }
 #endif
 
@@ -216,6 +250,9 @@ typedef struct bl {
 #endif
 #if FXL__FMT_RUNTIME
     uint32_t osh;   /* as fl_t's */
+#endif
+#if FXL__V_TINT
+    fxl__tint_t tint;   /* the tinted variants' factors (FXL_T_TINT) */
 #endif
 } bl_t;
 
@@ -1365,6 +1402,9 @@ typedef struct fl {
 #if FXL__FMT_RUNTIME
     uint32_t osh;   /* the store's byte shift: 8 on swapped targets, else 0 */
 #endif
+#if FXL__V_TINT
+    fxl__tint_t tint;   /* the tinted variants' factors (FXL_T_TINT) */
+#endif
 } fl_t;
 
 #if FXL__V_ANY_PT
@@ -2468,6 +2508,96 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define FXL_T_SWAP 1
 #include "span_fast.h"
 #endif
+/* The tinted copies (FXL_FAST_TINT): the same walks and loops, each texel
+ * modulated by the draw's flat colour before the store (FXL_T_TINT). */
+#if FXL__V_TINT && FXL__V(0, 0, 0)
+#define FXL_T_LOOP loop_point_t
+#define FXL_T_SPAN span_point_t
+#define FXL_T_SEG seg_point_t
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(1, 0, 0)
+#define FXL_T_LOOP loop_bilin_t
+#define FXL_T_SPAN span_bilin_t
+#define FXL_T_SEG seg_bilin_t
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 0
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(0, 1, 0)
+#define FXL_T_LOOP loop_point_z_t
+#define FXL_T_SPAN span_point_z_t
+#define FXL_T_SEG seg_point_z_t
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(1, 1, 0)
+#define FXL_T_LOOP loop_bilin_z_t
+#define FXL_T_SPAN span_bilin_z_t
+#define FXL_T_SEG seg_bilin_z_t
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 0
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(0, 0, 1)
+#define FXL_T_LOOP loop_point_swap_t
+#define FXL_T_SPAN span_point_swap_t
+#define FXL_T_SEG seg_point_swap_t
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(1, 0, 1)
+#define FXL_T_LOOP loop_bilin_swap_t
+#define FXL_T_SPAN span_bilin_swap_t
+#define FXL_T_SEG seg_bilin_swap_t
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 0
+#define FXL_T_SWAP 1
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(0, 1, 1)
+#define FXL_T_LOOP loop_point_z_swap_t
+#define FXL_T_SPAN span_point_z_swap_t
+#define FXL_T_SEG seg_point_z_swap_t
+#define FXL_T_BILINEAR 0
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
+#if FXL__V_TINT && FXL__V(1, 1, 1)
+#define FXL_T_LOOP loop_bilin_z_swap_t
+#define FXL_T_SPAN span_bilin_z_swap_t
+#define FXL_T_SEG seg_bilin_z_swap_t
+#define FXL_T_BILINEAR 1
+#define FXL_T_MIPLIN 0
+#define FXL_T_DEPTH 1
+#define FXL_T_SWAP 1
+#define FXL_T_TINT 1
+#include "span_fast.h"
+#endif
 #if FXL__V(0, 0, 0) && FXL__V_MIP
 #define FXL_T_LOOP loop_pml
 #define FXL_T_LOOP1 loop_point
@@ -2549,7 +2679,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #include "span_fast.h"
 #endif
 
-/* Variant table, id = 1 + bilinear + 2 depth + 4 swap + 8 mip-linear; the
+/* Variant table, id = 1 + bilinear + 2 depth + 4 swap + 8 mip-linear + 16
+ * tinted (not with mip-linear: ids 17..24); the
  * seg column is what fxl__pick_seg_fn hands out for the id (seg_generic for
  * the blended variants, as they had no specialised loop), and draw_span
  * takes the span column only when the caller passed exactly that seg
@@ -2621,6 +2752,8 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define RT(bil, z, sw) FAST_ENTRY(IF_V(bil, z, sw, RT_SEG(bil, z)), 0)
 #define TWO(bil, z, sw, name)                                                                               \
     FAST_ENTRY(IF_V(bil, z, sw, IF_MIP(SEG_GENERIC)), IF_V(bil, z, sw, IF_MIP(span_##name##_pick)))
+/* a tinted one-level variant (ids 17..24, where FXL__V_TINT builds them) */
+#define TINTED(bil, z, sw, name) ONE(bil, z, sw, name)
 /* The span column exists only where the specialised walks are built. */
 #if FXL__FAST_SPANS
 #define FAST_ENTRY(seg, pick) {seg, pick}
@@ -2632,7 +2765,7 @@ static const struct {
 #if FXL__FAST_SPANS
     fxl__span_pick_fn pick;   /* the variant's walk for a triangle */
 #endif
-} fast_tab[17] = {
+} fast_tab[FXL__V_TINT ? 25 : 17] = {
     FAST_ENTRY(0, 0),
 #if FXL__FMT_RUNTIME
     RT(0, 0, 0),
@@ -2661,6 +2794,16 @@ static const struct {
     TWO(1, 0, 1, tri_swap),
     TWO(0, 1, 1, pml_z_swap),
     TWO(1, 1, 1, tri_z_swap),
+#if FXL__V_TINT
+    TINTED(0, 0, 0, point_t),
+    TINTED(1, 0, 0, bilin_t),
+    TINTED(0, 1, 0, point_z_t),
+    TINTED(1, 1, 0, bilin_z_t),
+    TINTED(0, 0, 1, point_swap_t),
+    TINTED(1, 0, 1, bilin_swap_t),
+    TINTED(0, 1, 1, point_z_swap_t),
+    TINTED(1, 1, 1, bilin_z_swap_t),
+#endif
 };
 
 int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear)
@@ -2668,13 +2811,21 @@ int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear
     const fxl_texture_t *t = d->texture;
     const uint32_t both = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
     const int zmode = target->depth && (d->depth & both);
+#if FXL__V_TINT
+    /* a flat tint: white leaves every texel as it is (modulate565), so it
+     * draws as REPLACE; other colours take the tinted copies (one level) */
+    const int flat_mod = d->texenv == FXL_TEXENV_MODULATE && d->shade == FXL_SHADE_FLAT;
+    const int tinted = flat_mod && d->color != 0xFFFFu;
+#else
+    const int flat_mod = 0, tinted = 0;
+#endif
     int id;
 
-    if (!(t && tex_repeat565(t) && d->texenv == FXL_TEXENV_REPLACE && t->log2_w + t->log2_h <= 16 &&
-          (!zmode || (d->depth & both) == both)))
+    if (!(t && tex_repeat565(t) && (d->texenv == FXL_TEXENV_REPLACE || flat_mod) && t->log2_w + t->log2_h <= 16 &&
+          (!zmode || (d->depth & both) == both) && !(tinted && mip_linear)))
         return 0;
     id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) +
-         (target->format == FXL_PIXFMT_RGB565_SWAP ? 4 : 0) + (mip_linear ? 8 : 0);
+         (target->format == FXL_PIXFMT_RGB565_SWAP ? 4 : 0) + (mip_linear ? 8 : 0) + (tinted ? 16 : 0);
     return fast_tab[id].seg ? id : 0;
 }
 

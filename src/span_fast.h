@@ -20,9 +20,11 @@
  *   FXL_T_DEPTH     0: no depth buffer, 1: test (greater is nearer) and write
  *   FXL_T_SWAP      0: native RGB565 stores, 1: byte-swapped stores, 2: as
  *                   the target's format says (size builds, FXL_T_SEG only)
+ *   FXL_T_TINT      (optional, one level, FXL_T_SWAP 0 or 1) 1: each texel
+ *                   is modulated by the draw's flat colour before the store
  * Preconditions (fxl__fast_id in span.c checks them): RGB565 texels, repeat
- * wrap on both axes, no colour key, REPLACE, flat shading, level-0
- * log2_w + log2_h <= 16.
+ * wrap on both axes, no colour key, REPLACE (FXL_T_TINT: MODULATE), flat
+ * shading, level-0 log2_w + log2_h <= 16.
  * Why a template: the pixel loop is the cost of every pixel and the segment
  * walk around it the cost of every 16; one source of truth for sixteen
  * variants keeps branches and calls out of both without sixteen copies.
@@ -46,24 +48,41 @@
 #define FXL_T_ROWC FXL__CAT(FXL_T_SPAN, _rowc)
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
-/* a texel as the target stores it */
-#if FXL_T_SWAP == 2
+/* a texel as the target stores it: tinted first in the tinted variants
+ * (FXL_T_TINT: the factors in the level state FXL_T_TL, L unless a walk
+ * says otherwise, set with it by FXL_T_LV_INIT from the draw's colour) */
+#ifndef FXL_T_TINT
+#define FXL_T_TINT 0
+#endif
+#define FXL_T_TL L
+#if FXL_T_TINT
+#define FXL_T_TINTED(c) tint565((c), &(FXL_T_TL)->tint)
+#define FXL_T_TINT_INIT(Lp) tint_init(&(Lp)->tint, tri->draw->color)
+#else
+#define FXL_T_TINTED(c) (c)
+#define FXL_T_TINT_INIT(Lp) ((void)0)
+#endif
+#if FXL_T_SWAP == 2 && FXL_T_TINT
+#error "tinted variants are speed-build ones (FXL_T_SWAP 0 or 1)"
+#elif FXL_T_SWAP == 2
 /* either format, by the level state's shift osh (0 or 8; FXL__FMT_RUNTIME
  * in span.c): c c' = c * 0x10001 holds c twice, so its low half is c and
  * its bits 8..23 c's bytes swapped (a multiply and a shift, where c << osh
  * | c >> osh took three) */
 #define FXL_T_OUT(c) ((uint16_t)(((uint32_t)(c) * 0x10001u) >> L->osh))
+#elif FXL_T_SWAP && FXL_T_TINT
+#define FXL_T_OUT(c) fxl__swap16(FXL_T_TINTED(c))
 #elif FXL_T_SWAP
 #define FXL_T_OUT(c) ((uint16_t)(((c) >> 8) | ((c) << 8)))
 #else
-#define FXL_T_OUT(c) ((uint16_t)(c))
+#define FXL_T_OUT(c) ((uint16_t)FXL_T_TINTED(c))
 #endif
 #if FXL_T_BILINEAR
 #define FXL_T_LV bl_t
-#define FXL_T_LV_INIT(Lp, lv, u, v) bl_init(Lp, lv, u, v)
+#define FXL_T_LV_INIT(Lp, lv, u, v) (bl_init(Lp, lv, u, v), FXL_T_TINT_INIT(Lp))
 #else
 #define FXL_T_LV fl_t
-#define FXL_T_LV_INIT(Lp, lv, u, v) fl_init(Lp, lv)
+#define FXL_T_LV_INIT(Lp, lv, u, v) (fl_init(Lp, lv), FXL_T_TINT_INIT(Lp))
 #endif
 #if FXL__FAST_SPANS && !FXL_T_MIPLIN
 /* its copy for segments on one texel row (span_loop.h, FXL_T_ROWLOOP) */
@@ -608,7 +627,7 @@ static FXL__NOINLINE void FXL__CAT(FXL_T_LEAN, _fixed)(const fxl__tri_t *tri, in
 static FXL__HOT_INLINE uint32_t FXL_T_LRUN(uint64_t *ps, uint32_t *pc, int32_t m, uint16_t *d, uint16_t *z,
                                            const uint32_t zz, const uint16_t *row, const uint32_t su,
                                            const uint32_t shu, const uint32_t mu16, const fxl__raxis_t *au,
-                                           const int k, const int hi)
+                                           const int k, const int hi, const fl_t *L)
 {
     const uint64_t gN = au->gN;
     const int32_t r = au->r;
@@ -625,6 +644,7 @@ static FXL__HOT_INLINE uint32_t FXL_T_LRUN(uint64_t *ps, uint32_t *pc, int32_t m
     (void)shu;
     (void)mu16;
     (void)half;
+    (void)L;   /* the tint's factors (FXL_T_TINT) */
     do {
         const uint32_t c1 = FXL_T_LPOINT(s += gN, hi);
         uint32_t U = c0 << su;
@@ -717,11 +737,11 @@ static FXL__NOINLINE uint32_t FXL_T_LROW(const fxl__raxis_t *au, const fl_t *L, 
              * cores, where the benchmark draws without depth, keep only
              * the general one: ~2 KB of Cortex-M4 code each) */
             if (FXL_T_LHOT && k == 4 && FXL__WORD32 && ku >= 33)
-                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 1);
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 1, L);
             else if (FXL_T_LHOT && k == 4)
-                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 0);
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, 4, 0, L);
             else
-                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, k, 0);
+                rejected += FXL_T_LRUN(&s, &c0, m, d, z, zz, row, su, shu, mu16, au, k, 0, L);
             x += m << k;
             continue;
         }
@@ -1267,7 +1287,11 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
 #else
                     c = L.tex[FXL__IDX_MASKS(u, v << L.lw, L.mu16, L.mv16)];
 #endif
+#undef FXL_T_TL
+#define FXL_T_TL (&L)   /* a level state here, not a pointer */
                 *dst = FXL_T_OUT(c);
+#undef FXL_T_TL
+#define FXL_T_TL L
 #if FXL_T_DEPTH
                 written++;
             }
@@ -1400,6 +1424,10 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_LV
 #undef FXL_T_LV_INIT
 #undef FXL_T_OUT
+#undef FXL_T_TINTED
+#undef FXL_T_TINT_INIT
+#undef FXL_T_TL
+#undef FXL_T_TINT
 #undef FXL_T_LOOP
 #ifdef FXL_T_QLOOP
 #undef FXL_T_QLOOP

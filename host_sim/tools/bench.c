@@ -111,6 +111,7 @@ typedef struct options {
     const char *fw_filters;
     int fw_meshes;
     const char *mip;   /* draw, gen-fw: none|nearest|linear overrides the filter's mip mode */
+    const char *tint;  /* draw: RGB565 in hex, MODULATE by that flat colour (FXL_FAST_TINT) */
 } options_t;
 
 /* The filter's mip mode, or the one --mip names (draw, gen-fw) */
@@ -130,7 +131,7 @@ static void usage(FILE *f)
             "           [--m4 FILE] [--m0 FILE] [--rv32 FILE] [--csv FILE] [--plot-dir DIR]\n"
             "      every scene x method x filter against the reference: coverage, texel\n"
             "      error, PSNR, host Mpixels/s; joins instruction counts; writes the CSV\n"
-            "  draw [--scene S] [--method M] [--filter F] [--mip none|nearest|linear]\n"
+            "  draw [--scene S] [--method M] [--filter F] [--mip none|nearest|linear] [--tint RGB565HEX]\n"
             "      one frame of each configuration, for callgrind:\n"
             "      valgrind --tool=callgrind --collect-atstart=no \\\n"
             "               --toggle-collect=fxl_draw_triangle fixel-bench draw --scene floor\n"
@@ -745,6 +746,10 @@ static int cmd_draw(const options_t *o)
                     continue;
                 draw_settings(&methods[mi], &filters[fi], &tex.tex, &d);
                 d.mip = mip_of(o, &filters[fi]);
+                if (o->tint) {
+                    d.texenv = FXL_TEXENV_MODULATE;
+                    d.color = (uint16_t)strtoul(o->tint, NULL, 16);
+                }
                 (void)fxl_target_clear(&fr.target, 0);
                 (void)fxl_target_clear_depth(&fr.target);
                 if (draw_scene(&s, &d, &fr.target) != FXL_OK)
@@ -1116,6 +1121,8 @@ static int check_names(const options_t *o)
     else if (o->mip && strcmp(o->mip, "none") != 0 && strcmp(o->mip, "nearest") != 0 &&
              strcmp(o->mip, "linear") != 0)
         bad = o->mip, what = "--mip";
+    else if (o->tint && (strlen(o->tint) != 4 || strspn(o->tint, "0123456789abcdefABCDEF") != 4))
+        bad = o->tint, what = "--tint (4 hex digits of RGB565)";
     if (bad == NULL) {
         /* --filters: a comma-separated list of filter names */
         const char *p = o->fw_filters;
@@ -1196,6 +1203,8 @@ int main(int argc, char **argv)
             dst = &o.fw_filters;
         else if (strcmp(a, "--mip") == 0)
             dst = &o.mip;
+        else if (strcmp(a, "--tint") == 0)
+            dst = &o.tint;
         else if (strcmp(a, "--meshes") == 0 || strcmp(a, "--runs") == 0) {
             /* atoi took "abc" and "-5" for 0 timing runs without a word */
             char *end;

@@ -85,8 +85,8 @@
 #define FXL_HAVE_GENERIC 1
 #endif
 
-/* Specialised code per kind of draw (RGB565 repeat-wrapped textures, REPLACE;
- * the rest always takes the generic walk). Each combination of target format,
+/* Specialised code per kind of draw (RGB565 repeat-wrapped textures, REPLACE,
+ * and flat MODULATE with FXL_FAST_TINT; the rest always takes the generic walk). Each combination of target format,
  * depth and filter has its own pixel loop, and in speed-optimised builds its
  * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 267 KB for all
  * (docs/bench/footprint.txt: 272,952 B linked; 110,294 B with
@@ -117,6 +117,18 @@
 #ifndef FXL_FAST_MIP         /* two levels blended: point-mip-linear (with
                               * FXL_FAST_POINT), trilinear (with BILINEAR) */
 #define FXL_FAST_MIP FXL_HAVE_MIPMAP
+#endif
+/* Flat-tinted draws (MODULATE with FXL_SHADE_FLAT: every texel times one
+ * colour, the cheapest lighting) in speed-optimised builds: 1 adds a
+ * tinted copy of each one-level variant kept above, the same walks with
+ * the texel modulated before the store, and sends such draws to it (a
+ * white tint to the untinted one). Off by default: each copy is ~19-24 KB
+ * of Cortex-M4 code at -O2 (docs/design.md, "Flat-tinted draws"). Without
+ * it they take the generic walk, 2-7x the instructions a pixel of the
+ * untinted draw. Size builds (-Os) and builds without FXL_HAVE_GENERIC
+ * (which refuse MODULATE) never build these copies. */
+#ifndef FXL_FAST_TINT
+#define FXL_FAST_TINT 0
 #endif
 
 /* 64-bit division by fixel's own shift-subtract loop instead of the
