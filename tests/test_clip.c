@@ -335,6 +335,80 @@ static void test_clip_near_cut_keeps_precision_for_tiny_t(void)
     TEST_ASSERT_GREATER_THAN(2000, corners);
 }
 
+/* A long edge from in front of the eye to far behind it, cut near t ~ 1/2
+ * where it crosses the screen: t's rounding (~2^-32 with 32-bit
+ * distances) times an edge 2^30 times longer than near put such corners
+ * up to ~280 px off the exact cut (near 2^-16, depths to 30,000; 0.14 px
+ * at near 0.001 and depths to 1,000). Those cuts now take the exact mean
+ * (clip.c, near_cut). Random t in [0.05, 0.95], edges 2^20 to 2^51 q32
+ * units across, near 2^-16, 9/65536 and 0.01: every on-screen near-plane
+ * corner within one q32 unit plus 1/2048 px of the exact cut of the
+ * integer inputs. */
+static void test_clip_near_cut_of_long_edges_is_exact(void)
+{
+    int i, k, corners = 0;
+    double worst = 0;
+    rng_seed(5505);
+    for (i = 0; i < 3000; i++) {
+        const double near_ = (i % 3) == 0 ? 1.0 / 65536 : (i % 3) == 1 ? 9.0 / 65536 : 0.01;
+        const fxl_xform_t xf = make_xform(near_, 0);
+        const long double nq = (long double)xf.near_q32;
+        const double span = ldexp(1.0, (int)rng_range(20, 51));   /* w from in front to behind */
+        const double t = rng_range(0.05, 0.95);
+        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+        uint32_t n, m;
+        memset(in, 0, sizeof in);
+        {
+            /* edge 0-1 crosses near at t, at (cx, cy) on screen whatever
+             * its reach (dx, dy); vertex 2 is vertex 0 moved a little, so
+             * edge 2-1's cut is on screen too */
+            const double dx = rng_range(-1.0, 1.0) * fmin(ldexp(1.0, 51), 40.0 * span);
+            const double dy = rng_range(-1.0, 1.0) * fmin(ldexp(1.0, 51), 40.0 * span);
+            const double cx = rng_range(-0.8, 0.8) * (double)xf.near_q32, cy = rng_range(-0.8, 0.8) * (double)xf.near_q32;
+            in[0].w = xf.near_q32 + (int64_t)(t * span);
+            in[1].w = xf.near_q32 - (int64_t)((1.0 - t) * span);   /* behind the near plane */
+            in[0].x = (int64_t)(cx - t * dx);
+            in[0].y = (int64_t)(cy - t * dy);
+            in[1].x = (int64_t)(cx + (1.0 - t) * dx);
+            in[1].y = (int64_t)(cy + (1.0 - t) * dy);
+            in[2] = in[0];
+            in[2].x += (int64_t)(0.1 * (double)xf.near_q32 / (1.0 - t));
+        }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+        for (m = 0; m < n; m++) {
+            long double best = 1e30L;
+            int visible = 0;
+            if (out[m].w != xf.near_q32 || (out[m].x < 0 ? -out[m].x : out[m].x) > xf.near_q32 ||
+                (out[m].y < 0 ? -out[m].y : out[m].y) > xf.near_q32)
+                continue;
+            for (k = 0; k < 3; k += 2) {
+                const long double tt = ((long double)in[k].w - nq) / ((long double)in[k].w - (long double)in[1].w);
+                const long double x = in[k].x + tt * ((long double)in[1].x - in[k].x);
+                const long double y = in[k].y + tt * ((long double)in[1].y - in[k].y);
+                const long double e = 160 * fmaxl(fabsl((out[m].x - x) / nq), fabsl((out[m].y - y) / nq));
+                if (e < best) {
+                    best = e;
+                    visible = fabsl(x) <= nq && fabsl(y) <= nq;
+                }
+            }
+            if (!visible)
+                continue;
+            corners++;
+            if ((double)best > worst)
+                worst = (double)best;
+            /* one q32 unit of position is 160 / near_q32 px here (0.0024 px
+             * at near 2^-16): rounding to it, plus 1/2048 px */
+            if (best > 1.0L / 2048 + 160 / nq) {
+                snprintf(msg, sizeof msg, "case %d: near-plane corner %u is %.3Lg px from the exact cut", i,
+                         (unsigned)m, best);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    printf("clip: %d near-plane corners of long edges cut near t = 1/2, worst %.3g px\n", corners, worst);
+    TEST_ASSERT_GREATER_THAN(2000, corners);
+}
+
 /* The clipper reads its input before it writes: out may be in (the front
  * end clips each triangle in place, one array less under every draw).
  * Random triangles, many of them cut by several planes: in place gives
@@ -534,6 +608,7 @@ int main(void)
     RUN_TEST(test_clip_one_vertex_behind_near_gives_quad_on_plane);
     RUN_TEST(test_clip_random_triangles_match_double_reference);
     RUN_TEST(test_clip_near_cut_keeps_precision_for_tiny_t);
+    RUN_TEST(test_clip_near_cut_of_long_edges_is_exact);
     RUN_TEST(test_clip_in_place_equals_separate_buffers);
     RUN_TEST(test_clip_rounding_surplus_vertices_are_dropped_not_refused);
     RUN_TEST(test_clip_shared_edge_cut_identically);
