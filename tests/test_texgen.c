@@ -76,7 +76,7 @@ static void check_polar(int mode)
     for (i = 0; i < 20000; i++) {
         fxl_vec3_t p[3];
         fxl_texcoord_t t[3];
-        double c[3], r = pow(100.0, rng_range(0, 1)), th = rng_range(0, TWO_PI), ph = rng_range(0.05, 3.09);
+        double c[3], r = pow(10.0, rng_range(-2.7, 2)), th = rng_range(0, TWO_PI), ph = rng_range(0.05, 3.09);
         int k;
         tg.axis = (uint8_t)(i % 3);
         /* a small triangle around one point: no seam inside, no pole */
@@ -99,9 +99,11 @@ static void check_polar(int mode)
             if (eu > max_u) max_u = eu;
             if (ev > max_v) max_v = ev;
             /* u: atan2 rounding 0.5 LSB + CORDIC 2^-11 LSB. v (spherical):
-             * 0.5 LSB rounding + floor-sqrt r error 2^-16 / |p| rad, /pi,
-             * with |p| >= 1: <= 0.5 + 0.32 LSB. Cylindrical v = h exactly. */
-            if (eu > 0.5 + ldexp(1, -10) || ev > (mode == FXL_TEXGEN_SPHERICAL ? 0.83 : 0)) {
+             * the same, and r's floored square root of a, b scaled to
+             * 2^29..2^30: 2^-29 rad / pi = 4e-5 LSB, whatever |p| (0.002
+             * to 100 here; unscaled it was 2^-16 / |p| rad: 31 LSB at
+             * 0.01). Cylindrical v = h exactly. */
+            if (eu > 0.5 + ldexp(1, -10) || ev > (mode == FXL_TEXGEN_SPHERICAL ? 0.5 + ldexp(1, -9) : 0)) {
                 snprintf(msg, sizeof msg, "mode %d axis %d point (%g %g %g): u err %.3f v err %.3f LSB",
                          mode, tg.axis, q[0], q[1], q[2], eu, ev);
                 TEST_FAIL_MESSAGE(msg);
