@@ -65,17 +65,52 @@ static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
     }
 }
 
+/* The non-pole u's shifted by whole periods to span as little as they can
+ * (the circle cut at the widest gap between them), the first of them kept
+ * where it is. Shifting each to within half a period of the first, as
+ * before the fifty-fifth session, left 0.5, 0.75, 0 spanning 0.75 where
+ * 0.5, 0.75, 1 spans 0.5 (a review). */
+static void fix_seam(int64_t u[3], const int pole[3])
+{
+    int64_t w[3], gap = -1;
+    int idx[3], n = 0, i, j, cut = 0;
+    for (i = 0; i < 3; i++)
+        if (!pole[i]) {
+            /* u in [0, 65536] (atan2): one period's representative */
+            w[n] = u[i] & 65535;
+            idx[n++] = i;
+        }
+    if (n < 2) return;
+    /* sorted by w (at most three: insertion) */
+    for (i = 1; i < n; i++)
+        for (j = i; j > 0 && w[j] < w[j - 1]; j--) {
+            const int64_t tw = w[j];
+            const int ti = idx[j];
+            w[j] = w[j - 1]; w[j - 1] = tw;
+            idx[j] = idx[j - 1]; idx[j - 1] = ti;
+        }
+    /* the widest gap, the one across the period (w[n-1] -> w[0] + 65536)
+     * first: it leaves them as they are on ties */
+    for (i = 0; i < n; i++) {
+        const int64_t g = i == 0 ? w[0] + 65536 - w[n - 1] : w[i] - w[i - 1];
+        if (g > gap) { gap = g; cut = i; }
+    }
+    /* those before the cut move up a period */
+    for (i = 0; i < cut; i++) w[i] += 65536;
+    /* then all by the periods that put the first non-pole vertex back */
+    for (i = 0; i < n; i++)
+        if (idx[i] == (pole[0] ? (pole[1] ? 2 : 1) : 0)) {
+            const int64_t d = u[idx[i]] - w[i];   /* a whole number of periods */
+            for (j = 0; j < n; j++) u[idx[j]] = w[j] + d;
+            break;
+        }
+}
+
 static void fix_seam_and_poles(int64_t u[3], const int pole[3])
 {
-    int i, ref = -1, count = 0;
+    int i, count = 0;
     int64_t sum = 0;
-    for (i = 0; i < 3; i++) {
-        if (pole[i]) continue;
-        if (ref < 0) { ref = i; continue; }
-        /* Shift by whole periods to within half a period of the reference. */
-        while (u[i] - u[ref] > 32768) u[i] -= 65536;
-        while (u[ref] - u[i] > 32768) u[i] += 65536;
-    }
+    fix_seam(u, pole);
     for (i = 0; i < 3; i++)
         if (!pole[i]) { sum += u[i]; count++; }
     if (count == 0) { /* the whole triangle on the axis: any u will do */

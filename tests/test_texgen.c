@@ -152,6 +152,53 @@ static void test_seam_triangle_does_not_span_whole_texture(void)
     }
 }
 
+/* The seam shift takes the shortest arrangement of the three u's: 0.5,
+ * 0.75, 0 becomes 0.5, 0.75, 1 (span 0.5), not 0.5, 0.75, 0 (0.75, what
+ * shifting each to within half a period of the first gave: a cap
+ * triangle of a four-sided prism). Random triples: the span is the least
+ * over the circle's cuts, each u stays at its place of the texture, and
+ * the first vertex's u is its own theta. */
+static void test_seam_takes_the_shortest_span(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    int i, k, j;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    rng_seed(5505);
+    for (i = 0; i < 5000; i++) {
+        double want[3], best = 2, lo = 1e9, hi = -1e9;
+        for (k = 0; k < 3; k++) {
+            want[k] = i == 0 ? (k == 0 ? 0.5 : k == 1 ? 0.75 : 0.0) : rng_range(0, 1);
+            p[k] = around_y(want[k], 0.1 * k);
+        }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        for (k = 0; k < 3; k++) {
+            /* cutting the circle just below vertex k's angle */
+            double l2 = 1e9, h2 = -1e9;
+            for (j = 0; j < 3; j++) {
+                double a = want[j] - want[k];
+                a -= floor(a);
+                if (a < l2) l2 = a;
+                if (a > h2) h2 = a;
+            }
+            if (h2 - l2 < best) best = h2 - l2;
+        }
+        for (k = 0; k < 3; k++) {
+            const double u = q16d(t[k].u);
+            TEST_ASSERT_DOUBLE_WITHIN(2.0 / 65536, 0, wrap_diff(u, want[k]));
+            if (u < lo) lo = u;
+            if (u > hi) hi = u;
+        }
+        /* the first vertex keeps its own theta */
+        TEST_ASSERT_DOUBLE_WITHIN(2.0 / 65536, want[0], q16d(t[0].u));
+        snprintf(msg, sizeof msg, "triple %d (%.4f %.4f %.4f): span %.4f, shortest %.4f", i, want[0], want[1],
+                 want[2], hi - lo, best);
+        TEST_ASSERT_TRUE_MESSAGE(hi - lo <= best + 3.0 / 65536, msg);
+    }
+}
+
 static void test_pole_takes_mean_theta_of_other_vertices(void)
 {
     fxl_texgen_t tg;
@@ -302,6 +349,7 @@ int main(void)
     RUN_TEST(test_cylindrical_matches_double);
     RUN_TEST(test_spherical_matches_double);
     RUN_TEST(test_seam_triangle_does_not_span_whole_texture);
+    RUN_TEST(test_seam_takes_the_shortest_span);
     RUN_TEST(test_pole_takes_mean_theta_of_other_vertices);
     RUN_TEST(test_cube_faces_and_atlas_layout);
     RUN_TEST(test_cube_major_axis_ties_take_the_first_axis);

@@ -207,8 +207,9 @@ typedef struct fxl_texgen {
 void fxl_texgen_defaults(fxl_texgen_t *tg);
 /* Generate (u, v) for the three vertices of one triangle from positions in
  * the chosen space. Seams: for cylindrical and spherical u, vertices are
- * shifted by whole periods so each lies within half a period of the others
- * (u may leave [0, 1); repeat wrap makes that right). Poles (a vertex on the
+ * shifted by whole periods so that together they span as little as they can,
+ * the first keeping its own u (others may leave [0, 1]; repeat wrap makes
+ * that right). Poles (a vertex on the
  * axis, where theta is undefined) take the mean theta of the other
  * vertices. Cube: one face per triangle. */
 fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3],
