@@ -155,6 +155,8 @@ void fxl_mat4_rotate_x(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 1, 2);
 void fxl_mat4_rotate_y(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 2, 0); }
 void fxl_mat4_rotate_z(fxl_mat4_t *m, fxl_angle_t a) { rotate_plane(m, a, 0, 1); }
 
+static fxl_status_t normalize_q30(const int64_t in[3], int64_t out[3]);
+
 fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_angle_t a)
 {
     int64_t ax[3], len2, omc;
@@ -171,20 +173,25 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
      * is (2^16 - 2^8)^2 <= len2 <= (2^16 + 2^8)^2. */
     if (len2 < (int64_t)(65536 - 256) * (65536 - 256) || len2 > (int64_t)(65536 + 256) * (65536 + 256))
         return FXL_ERR_RANGE;
+    /* The tolerance is for the q16 rounding of a unit axis, not a scale:
+     * the axis is made unit length (q30) first, so the result is a rotation
+     * (before the fifty-fifth session an axis 2^-8 long scaled by up to
+     * 2^-6: m[1][1] 1.0157 at 180 degrees about (0, 65792, 0)). */
+    if (normalize_q30(ax, ax) != FXL_OK) return FXL_ERR_RANGE;
     fxl__sincos_q30(a, &s30, &c30);
     omc = ((int64_t)1 << 30) - c30; /* 1 - cos, q30, in [0, 2^31] */
     fxl_mat4_identity(m);
     /* R = c I + (1 - c) a a^T + s [a]x, in q30, rounded once to q16. */
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
-            int64_t aa = fxl__shr_round(ax[i] * ax[j], 2); /* q30, |.| <= 2^34 */
+            int64_t aa = fxl__shr_round(ax[i] * ax[j], 30); /* q30, |.| <= 2^30 */
             int64_t e = fxl__mul_shr(aa, (uint32_t)omc, 30, NULL);
             if (i == j) {
                 e += c30;
             } else {
                 int k = 3 - i - j; /* the third axis */
                 /* [a]x has -a_k at (0,1), (1,2), (2,0) and +a_k mirrored. */
-                int64_t sk = fxl__shr_round((int64_t)s30 * ax[k], 16);
+                int64_t sk = fxl__shr_round((int64_t)s30 * ax[k], 30);
                 e += ((i + 1) % 3 == j) ? -sk : sk;
             }
             m->m[i][j] = (fxl_q16_t)fxl__shr_round(e, 14);

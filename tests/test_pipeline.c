@@ -190,7 +190,11 @@ static void test_rotate_axis_matches_rodrigues(void)
         if (len < 0.1) continue;
         axis.x = dq16(ax[0] / len); axis.y = dq16(ax[1] / len); axis.z = dq16(ax[2] / len);
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_rotate_axis(&m, &axis, ang));
+        /* the rotation about the q16 axis's direction (it is made unit
+         * length first) */
         a[0] = q16d(axis.x); a[1] = q16d(axis.y); a[2] = q16d(axis.z);
+        len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        a[0] /= len; a[1] /= len; a[2] /= len;
         x = TWO_PI * ang / 65536.0; cs = cos(x); sn = sin(x);
         for (r = 0; r < 3; r++)
             for (c = 0; c < 3; c++) {
@@ -217,6 +221,42 @@ static void test_rotate_axis_rejects_non_unit_axis(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &bad, 100));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_rotate_axis(&m, &huge, 100));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_mat4_rotate_axis(NULL, &bad, 100));
+}
+
+/* An accepted axis that is not unit length (within 2^-8) still gives a
+ * rotation: the axis is normalised first. Before the fifty-fifth session
+ * (0, 65536 + 256, 0) at 180 degrees gave m[1][1] = 1.0157, scaling every
+ * point on the axis by that. Off-axis directions at the tolerance's edge:
+ * the matrix is orthonormal to 2^-15 and keeps its axis fixed. */
+static void test_rotate_axis_of_tolerated_length_is_a_rotation(void)
+{
+    const fxl_vec3_t axes[] = {{0, 65536 + 256, 0}, {0, 65536 - 256, 0}, {37837, 37837, 37837},
+                               {-37700, 37950, 37837}, {46521, 0, -46521}};
+    const fxl_angle_t angles[] = {FXL_ANGLE_DEG(180), FXL_ANGLE_DEG(90), FXL_ANGLE_DEG(33), 12345};
+    size_t i, j;
+    int r, c, k;
+    for (i = 0; i < sizeof axes / sizeof axes[0]; i++)
+        for (j = 0; j < sizeof angles / sizeof angles[0]; j++) {
+            fxl_mat4_t m;
+            fxl_vec3_t on;
+            double worst = 0;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_rotate_axis(&m, &axes[i], angles[j]));
+            for (r = 0; r < 3; r++)
+                for (c = 0; c < 3; c++) {
+                    double dot = 0;
+                    for (k = 0; k < 3; k++) dot += q16d(m.m[r][k]) * q16d(m.m[c][k]);
+                    dot -= r == c ? 1.0 : 0.0;
+                    if (fabs(dot) > worst) worst = fabs(dot);
+                }
+            snprintf(msg, sizeof msg, "axis %u angle %u: rows off orthonormal by %.3g", (unsigned)i, (unsigned)j,
+                     worst);
+            TEST_ASSERT_TRUE_MESSAGE(worst < ldexp(1, -15), msg);
+            /* a point on the axis stays where it is */
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_transform_vector(&m, &axes[i], &on));
+            TEST_ASSERT_INT32_WITHIN(8, axes[i].x, on.x);
+            TEST_ASSERT_INT32_WITHIN(8, axes[i].y, on.y);
+            TEST_ASSERT_INT32_WITHIN(8, axes[i].z, on.z);
+        }
 }
 
 /* pipeline.h: |axis| = 1 within 2^-8. On a coordinate axis |a| is the q16
@@ -1254,6 +1294,7 @@ int main(void)
     RUN_TEST(test_rotations_match_double);
     RUN_TEST(test_rotate_axis_matches_rodrigues);
     RUN_TEST(test_rotate_axis_rejects_non_unit_axis);
+    RUN_TEST(test_rotate_axis_of_tolerated_length_is_a_rotation);
     RUN_TEST(test_rotate_axis_unit_tolerance_is_exactly_two_to_minus_8);
     RUN_TEST(test_mat4_mul_and_transform_match_double);
     RUN_TEST(test_mat4_mul_overflow_saturates_with_status);

@@ -100,7 +100,8 @@ fxl_status_t fxl_mat4_transform_vector(const fxl_mat4_t *m, const fxl_vec3_t *v,
 void fxl_mat4_rotate_x(fxl_mat4_t *m, fxl_angle_t a);
 void fxl_mat4_rotate_y(fxl_mat4_t *m, fxl_angle_t a);
 void fxl_mat4_rotate_z(fxl_mat4_t *m, fxl_angle_t a);
-/* About a unit axis (|axis| = 1 within 2^-8, else FXL_ERR_RANGE). */
+/* About a unit axis (|axis| = 1 within 2^-8, else FXL_ERR_RANGE; the axis is
+ * normalised, so the result is a rotation). */
 fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_angle_t a);
 void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
