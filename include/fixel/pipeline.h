@@ -162,7 +162,10 @@ typedef enum fxl_texgen_mode {
 
 typedef enum fxl_texgen_space {
     FXL_TEXGEN_OBJECT = 0,         /* mesh positions as given */
-    FXL_TEXGEN_EYE = 1             /* positions after model and view */
+    FXL_TEXGEN_EYE = 1             /* positions after model and view: each
+                                    * mesh vertex's must be within q16
+                                    * (+-32768 units), culled or not, else
+                                    * FXL_ERR_RANGE (fxl_xform_eye) */
 } fxl_texgen_space_t;
 
 /* Planar: which two coordinates become (u, v). */
