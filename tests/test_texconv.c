@@ -752,9 +752,22 @@ void test_c_keyword_names_are_refused(void)
     const char *from_file[] = {path_in("int.png"), "-o", path_in("o.c")};
     write_png(path_in("in.png"), 2, 2, src, PNG_COLOR_TYPE_RGBA, 8);
     write_png(path_in("int.png"), 2, 2, src, PNG_COLOR_TYPE_RGBA, 8);
+    /* names the generated file's headers use gave C that did not compile */
+    static const char *const clash[] = {"uint16_t", "fxl_texture_t", "fxl_brick", "FXL_OK", "_Brick",
+                                        "__brick", "UINT16_MAX", "INT8_MIN", "INTMAX_C"};
+    size_t k;
     TEST_ASSERT_EQUAL_INT(2, run_tool(named, 5));
     TEST_ASSERT_EQUAL_INT(2, run_tool(from_file, 3));
+    for (k = 0; k < sizeof clash / sizeof clash[0]; k++) {
+        named[4] = clash[k];
+        TEST_ASSERT_EQUAL_INT_MESSAGE(2, run_tool(named, 5), clash[k]);
+    }
     TEST_ASSERT_FALSE(exists(path_in("o.c")));
+    /* and ordinary ones are taken (mixed case is not a limit macro) */
+    named[4] = "brick_2";
+    TEST_ASSERT_EQUAL_INT(0, run_tool(named, 5));
+    named[4] = "Max_C";
+    TEST_ASSERT_EQUAL_INT(0, run_tool(named, 5));
     free(src);
 }
 

@@ -679,6 +679,26 @@ static int parse_rgb(const char *s, uint32_t *out)
 
 /* A C identifier that is not a C99 keyword ("--name int" emitted
  * `const fxl_texture_t int = {`, which does not compile). */
+/* Whether identifier s belongs to a name space the generated file's
+ * headers use: names ending in _t (POSIX; every <stdint.h> type and
+ * fxl_texture_t), fixel's fxl_ and FXL_, C's reserved _X and __, and the
+ * <stdint.h> limit macros (upper case ending in _MAX, _MIN or _C, such as
+ * UINT16_MAX). Such a --name gave C that did not compile, with exit 0. */
+static int reserved_name(const char *s)
+{
+    const size_t n = strlen(s);
+    size_t i;
+    int upper = 1;
+    if ((n >= 2 && strcmp(s + n - 2, "_t") == 0) || strncmp(s, "fxl_", 4) == 0 || strncmp(s, "FXL_", 4) == 0 ||
+        (s[0] == '_' && (s[1] == '_' || (s[1] >= 'A' && s[1] <= 'Z'))))
+        return 1;
+    for (i = 0; i < n; i++)
+        if (s[i] >= 'a' && s[i] <= 'z')
+            upper = 0;
+    return upper && ((n >= 4 && (strcmp(s + n - 4, "_MAX") == 0 || strcmp(s + n - 4, "_MIN") == 0)) ||
+                     (n >= 2 && strcmp(s + n - 2, "_C") == 0));
+}
+
 static int is_identifier(const char *s)
 {
     static const char *const keywords[] = {
@@ -698,7 +718,7 @@ static int is_identifier(const char *s)
     for (k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
         if (strcmp(s, keywords[k]) == 0)
             return 0;
-    return 1;
+    return !reserved_name(s);
 }
 
 /* The directory part of `path` ("." when none) and its last component. */
@@ -857,7 +877,8 @@ int texconv_main(int argc, char **argv)
         name = name_buf;
     }
     if (!is_identifier(name)) {
-        fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword); "
+        fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword, or a name "
+                        "<stdint.h> or fixel uses: *_t, fxl_*, FXL_*, _X*, __*, *_MAX, *_MIN, *_C); "
                         "choose another with --name\n",
                 name == name_buf ? "the name taken from the input file," : "--name", name);
         return 2;
