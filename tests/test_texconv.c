@@ -618,7 +618,7 @@ void test_missing_file_fails_and_writes_nothing(void)
 {
     const char *args[] = {path_in("nope.png"), "-o", path_in("out.c"), "--bin",
                           path_in("out.bin")};
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(args, 5));
+    TEST_ASSERT_EQUAL_INT(1, run_tool(args, 5));
     TEST_ASSERT_FALSE(exists(path_in("out.c")));
     TEST_ASSERT_FALSE(exists(path_in("out.bin")));
     TEST_ASSERT_EQUAL_INT(0, dir_entries());
@@ -658,11 +658,12 @@ void test_unsupported_inputs_fail_cleanly(void)
     TEST_ASSERT_NOT_NULL(f);
     fputs("this is not a PNG file\n", f);
     fclose(f);
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(npot, 3));   /* 12x8: not a power of two */
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(text, 3));
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(badname, 5));
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(badopt, 5));
-    TEST_ASSERT_NOT_EQUAL(0, run_tool(noout, 1));
+    /* the input's faults exit 1, the command line's 2 (docs/textures.md) */
+    TEST_ASSERT_EQUAL_INT(1, run_tool(npot, 3));   /* 12x8: not a power of two */
+    TEST_ASSERT_EQUAL_INT(1, run_tool(text, 3));
+    TEST_ASSERT_EQUAL_INT(2, run_tool(badname, 5));
+    TEST_ASSERT_EQUAL_INT(2, run_tool(badopt, 5));
+    TEST_ASSERT_EQUAL_INT(2, run_tool(noout, 1));
     TEST_ASSERT_FALSE(exists(path_in("out.c")));
     TEST_ASSERT_EQUAL_INT(2, dir_entries());
     free(src);

@@ -467,7 +467,8 @@ void test_misaligned_texels_or_palette_are_refused(void)
 void test_fetch_every_level_stays_inside_it(void)
 {
     /* 8x4 chain (32 + 8 + 2 + 1 texels): each level filled with its own
-     * number; any coordinate in any mode must read that number. */
+     * number; any coordinate in any mode must read that number, or in
+     * border mode the border colour outside the level. */
     fxl_texture_t t = valid_rgb565();
     uint32_t lv, i;
     int mode;
@@ -476,15 +477,20 @@ void test_fetch_every_level_stays_inside_it(void)
     for (lv = 0; lv < 4; lv++)
         for (i = fxl_texture_level_offset(&t, lv); i < fxl_texture_level_offset(&t, lv + 1); i++)
             g_rgb[i] = (uint16_t)(0x10 + lv);
-    for (mode = 0; mode < FXL_WRAP_BORDER; mode++) {
+    t.border = 0xBEEF;
+    for (mode = 0; mode <= FXL_WRAP_BORDER; mode++) {
         t.wrap_u = t.wrap_v = (uint8_t)mode;
         for (lv = 0; lv < 4; lv++) {
+            const int32_t w = 8 >> lv ? 8 >> lv : 1, h = 4 >> lv ? 4 >> lv : 1;
             probes(8, c);
             for (i = 0; i < NPROBE; i++) {
-                uint16_t got = fxl_texture_fetch(&t, lv, c[i], c[NPROBE - 1 - i], NULL);
-                snprintf(msg, sizeof msg, "mode %d level %u coord %ld", mode, (unsigned)lv,
-                         (long)c[i]);
-                TEST_ASSERT_EQUAL_HEX32_MESSAGE(0x10 + lv, got, msg);
+                const int32_t x = c[i], y = c[NPROBE - 1 - i];
+                const int inside = x >= 0 && x < w && y >= 0 && y < h;
+                uint16_t got = fxl_texture_fetch(&t, lv, x, y, NULL);
+                snprintf(msg, sizeof msg, "mode %d level %u coord %ld, %ld", mode, (unsigned)lv, (long)x,
+                         (long)y);
+                TEST_ASSERT_EQUAL_HEX32_MESSAGE(mode == FXL_WRAP_BORDER && !inside ? 0xBEEFu : 0x10u + lv, got,
+                                                msg);
             }
         }
     }
