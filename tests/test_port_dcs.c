@@ -2,8 +2,10 @@
  * init, windows and pixels, every preset and rotation, the HAL contract and
  * its error paths. The wire is recorded by the panel emulator (panel_emu.h). */
 #define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/time.h>
 
 #include "unity.h"
 #include "fixel/port.h"
@@ -595,6 +597,132 @@ void test_display_off_and_on(void)
     assert_wire(from, exp, COUNT(exp));
 }
 
+/* fxl_dcs_run's own contract (the presets' steps never had a delay in the
+ * ILI9341 steps, nor did any test run it directly): a step's delay follows
+ * its bytes; without delay_ms the step is sent and the run stops with
+ * FXL_ERR_UNSUPPORTED; a step of more than 15 parameters is FXL_ERR_ARG
+ * with the steps before it sent and nothing of it. */
+void test_dcs_run_steps_delays_and_refusals(void)
+{
+    static const fxl_dcs_step_t steps[] = {
+        {0xB1, 2, 10, {0x01, 0x02}},
+        {0xB2, 0, 0, {0}},
+        {0xB3, 1, 120, {0x7F}},
+    };
+    static const uint32_t all[] = {C(0xB1), D(0x01), D(0x02), W(10), C(0xB2), C(0xB3), D(0x7F), W(120)};
+    static const uint32_t first[] = {C(0xB1), D(0x01), D(0x02)};
+    fxl_dcs_step_t big[2] = {{0xB4, 1, 0, {0x11}}, {0xB5, 16, 0, {0}}};
+    size_t from;
+    start_emu("ili9341");
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_dcs_run(&hal, steps, COUNT(steps)));
+    assert_wire(from, all, COUNT(all));
+    /* no delay callback: the first step goes out, then the refusal */
+    hal.delay_ms = NULL;
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_UNSUPPORTED, fxl_dcs_run(&hal, steps, COUNT(steps)));
+    assert_wire(from, first, COUNT(first));
+    /* an oversized step: the one before it sent, nothing of it */
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_run(&hal, big, 2));
+    {
+        static const uint32_t before[] = {C(0xB4), D(0x11)};
+        assert_wire(from, before, COUNT(before));
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_dcs_run(&hal, NULL, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_run(&hal, NULL, 1));
+    assert_no_protocol_errors();
+}
+
+/* A HAL without a wait hook whose DMA completes later, asynchronously: a
+ * timer signal plays the DMA-complete interrupt 1 ms after each pixels().
+ * The driver must spin on the completion counter before any further cmd()
+ * or pixels() (the other no-hook tests complete inside pixels(), so a driver
+ * that did not wait at all passed them). */
+static fxl_panel_t async_panel;
+static volatile sig_atomic_t async_busy;
+static int async_violations, async_started;
+
+static void async_complete(int sig)
+{
+    (void)sig;
+    async_busy = 0;
+    fxl_port_transfer_done(&async_panel);
+}
+
+static fxl_status_t async_cmd(void *user, uint8_t cmd, const uint8_t *params, size_t n)
+{
+    (void)user;
+    (void)cmd;
+    (void)params;
+    (void)n;
+    if (async_busy)
+        async_violations++;
+    return FXL_OK;
+}
+
+static fxl_status_t async_pixels(void *user, const void *data, size_t bytes)
+{
+    struct itimerval it;
+    (void)user;
+    (void)data;
+    (void)bytes;
+    if (async_busy)
+        async_violations++;
+    async_busy = 1;
+    async_started++;
+    memset(&it, 0, sizeof it);
+    it.it_value.tv_usec = 1000;
+    TEST_ASSERT_EQUAL_INT(0, setitimer(ITIMER_REAL, &it, NULL));
+    return FXL_OK;
+}
+
+static fxl_status_t async_delay(void *user, uint32_t ms)
+{
+    (void)user;
+    (void)ms;
+    return FXL_OK;
+}
+
+void test_without_wait_hook_the_driver_waits_for_a_late_completion(void)
+{
+    static uint16_t line[240];
+    struct sigaction sa, old;
+    fxl_port_hal_t h;
+    int i;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = async_complete;
+    sigemptyset(&sa.sa_mask);
+    TEST_ASSERT_EQUAL_INT(0, sigaction(SIGALRM, &sa, &old));
+    memset(&h, 0, sizeof h);
+    h.cmd = async_cmd;
+    h.pixels = async_pixels;
+    h.delay_ms = async_delay;
+    async_busy = 0;
+    async_violations = async_started = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&async_panel, &h, &fxl_ili9341_240x320, 0));
+    for (i = 0; i < 8; i++) {
+        /* a window (commands) after each line, a wait for a numbered one */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&async_panel, 0, i, 240, 1));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&async_panel, line, sizeof line));
+        if (i == 3)
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_done(&async_panel, async_panel.started));
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_display(&async_panel, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&async_panel));
+    {
+        /* disarmed before the default action (exit) is back */
+        struct itimerval off;
+        memset(&off, 0, sizeof off);
+        TEST_ASSERT_EQUAL_INT(0, setitimer(ITIMER_REAL, &off, NULL));
+    }
+    TEST_ASSERT_EQUAL_INT(0, sigaction(SIGALRM, &old, NULL));
+    TEST_ASSERT_EQUAL_INT(8, async_started);
+    TEST_ASSERT_EQUAL_UINT32(8, async_panel.done);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, async_violations, "HAL called while a transfer was in flight");
+    TEST_ASSERT_EQUAL_INT(0, async_busy);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -624,5 +752,7 @@ int main(void)
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
     RUN_TEST(test_bad_write_sizes_are_arg_errors);
     RUN_TEST(test_display_off_and_on);
+    RUN_TEST(test_dcs_run_steps_delays_and_refusals);
+    RUN_TEST(test_without_wait_hook_the_driver_waits_for_a_late_completion);
     return UNITY_END();
 }

@@ -36,7 +36,9 @@
  *            in flight.
  * Callbacks return FXL_OK or a negative status; the driver turns a failure
  * into FXL_ERR_IO. The driver never calls cmd() or pixels() while a pixel
- * transfer is in flight, so the HAL needs no queue (fxl_dcs_cmd, _window
+ * transfer of the same panel is in flight, so the HAL needs no queue (two
+ * panels on one bus: wait_idle the other first, or make the HAL wait for the
+ * bus; fxl_dcs_cmd, _window
  * and _run take a HAL, not a panel, and do not wait: call them only after
  * fxl_panel_wait_idle() returned FXL_OK).
  *
