@@ -274,6 +274,55 @@ static void test_clip_random_triangles_match_double_reference(void)
  * on a 320 px wide view (measured worst 1.4e-4 px). With t as a q31
  * fraction the worst of these corners was 71 px off (a review found ~150
  * px from a scaled mesh). */
+/* How far (px of a 320-px-wide screen) output corner o lies from the exact
+ * cut of edge 0-1 or 2-1 nearest it (vertex 1 behind the near plane), for
+ * a corner on the near plane and on screen whose cut is on screen too;
+ * -1 for any other corner (off screen the guard planes may have cut too:
+ * the guard band's business). */
+static long double near_corner_error(const fxl_xform_t *xf, const fxl_clipvert_t in[3], const fxl_clipvert_t *o)
+{
+    const long double nq = (long double)xf->near_q32;
+    long double best = 1e30L;
+    int k, visible = 0;
+    if (o->w != xf->near_q32 || (o->x < 0 ? -o->x : o->x) > xf->near_q32 || (o->y < 0 ? -o->y : o->y) > xf->near_q32)
+        return -1;
+    for (k = 0; k < 3; k += 2) {
+        const long double t = ((long double)in[k].w - nq) / ((long double)in[k].w - (long double)in[1].w);
+        const long double x = in[k].x + t * ((long double)in[1].x - in[k].x);
+        const long double y = in[k].y + t * ((long double)in[1].y - in[k].y);
+        const long double e = 160 * fmaxl(fabsl((o->x - x) / nq), fabsl((o->y - y) / nq));
+        if (e < best) {
+            best = e;
+            visible = fabsl(x) <= nq && fabsl(y) <= nq;
+        }
+    }
+    return visible ? best : -1;
+}
+
+/* Clips in (under xf) and holds every near-plane corner near_corner_error
+ * measures to `bound` px (case i in the message); counts them in *corners
+ * and keeps the worst. */
+static void check_near_corners(const fxl_xform_t *xf, const fxl_clipvert_t in[3], long double bound, int i,
+                               int *corners, double *worst)
+{
+    fxl_clipvert_t out[FXL_CLIP_MAX_VERTS];
+    uint32_t n, m;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(xf, in, out, &n));
+    for (m = 0; m < n; m++) {
+        const long double best = near_corner_error(xf, in, &out[m]);
+        if (best < 0)
+            continue;
+        (*corners)++;
+        if ((double)best > *worst)
+            *worst = (double)best;
+        if (best > bound) {
+            snprintf(msg, sizeof msg, "case %d: near-plane corner %u is %.3Lg px from the exact cut", i, (unsigned)m,
+                     best);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+}
+
 static void test_clip_near_cut_keeps_precision_for_tiny_t(void)
 {
     int i, k, corners = 0;
@@ -282,9 +331,7 @@ static void test_clip_near_cut_keeps_precision_for_tiny_t(void)
     for (i = 0; i < 4000; i++) {
         const double near_ = (i % 2) ? 9.0 / 65536 : 0.01;
         const fxl_xform_t xf = make_xform(near_, 0);
-        const long double nq = (long double)xf.near_q32;
-        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
-        uint32_t n, m;
+        fxl_clipvert_t in[3];
         memset(in, 0, sizeof in);
         for (k = 0; k < 3; k += 2) {   /* 0 and 2 just inside, 1 far behind */
             const int64_t d_in = (int64_t)ldexp(1.0, (int)rng_range(0, 24)) + (int64_t)rng_range(0, 1000);
@@ -301,35 +348,7 @@ static void test_clip_near_cut_keeps_precision_for_tiny_t(void)
             in[1].x = (int64_t)(rng_range(-0.4, 0.4) * reach);
             in[1].y = (int64_t)(rng_range(-0.4, 0.4) * reach);
         }
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
-        for (m = 0; m < n; m++) {
-            long double best = 1e30L;
-            int visible = 0;
-            /* a corner on screen (off it, guard planes may have cut too) */
-            if (out[m].w != xf.near_q32 || (out[m].x < 0 ? -out[m].x : out[m].x) > xf.near_q32 ||
-                (out[m].y < 0 ? -out[m].y : out[m].y) > xf.near_q32)
-                continue;
-            for (k = 0; k < 3; k += 2) {   /* the cut of edge k-1 nearest the output */
-                const long double t = ((long double)in[k].w - nq) / ((long double)in[k].w - (long double)in[1].w);
-                const long double x = in[k].x + t * ((long double)in[1].x - in[k].x);
-                const long double y = in[k].y + t * ((long double)in[1].y - in[k].y);
-                const long double e = 160 * fmaxl(fabsl((out[m].x - x) / nq), fabsl((out[m].y - y) / nq));
-                if (e < best) {
-                    best = e;
-                    visible = fabsl(x) <= nq && fabsl(y) <= nq;
-                }
-            }
-            if (!visible)
-                continue;   /* off screen: the guard band's business */
-            corners++;
-            if ((double)best > worst)
-                worst = (double)best;
-            if (best > 1.0L / 64) {
-                snprintf(msg, sizeof msg, "case %d: near-plane corner %u is %.3Lg px from the exact cut", i,
-                         (unsigned)m, best);
-                TEST_FAIL_MESSAGE(msg);
-            }
-        }
+        check_near_corners(&xf, in, 1.0L / 64, i, &corners, &worst);
     }
     printf("clip: %d near-plane corners of tiny-t cuts, worst %.3g px\n", corners, worst);
     TEST_ASSERT_GREATER_THAN(2000, corners);
@@ -346,17 +365,15 @@ static void test_clip_near_cut_keeps_precision_for_tiny_t(void)
  * integer inputs. */
 static void test_clip_near_cut_of_long_edges_is_exact(void)
 {
-    int i, k, corners = 0;
+    int i, corners = 0;
     double worst = 0;
     rng_seed(5505);
     for (i = 0; i < 3000; i++) {
         const double near_ = (i % 3) == 0 ? 1.0 / 65536 : (i % 3) == 1 ? 9.0 / 65536 : 0.01;
         const fxl_xform_t xf = make_xform(near_, 0);
-        const long double nq = (long double)xf.near_q32;
         const double span = ldexp(1.0, (int)rng_range(20, 51));   /* w from in front to behind */
         const double t = rng_range(0.05, 0.95);
-        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
-        uint32_t n, m;
+        fxl_clipvert_t in[3];
         memset(in, 0, sizeof in);
         {
             /* edge 0-1 crosses near at t, at (cx, cy) on screen whatever
@@ -374,36 +391,9 @@ static void test_clip_near_cut_of_long_edges_is_exact(void)
             in[2] = in[0];
             in[2].x += (int64_t)(0.1 * (double)xf.near_q32 / (1.0 - t));
         }
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
-        for (m = 0; m < n; m++) {
-            long double best = 1e30L;
-            int visible = 0;
-            if (out[m].w != xf.near_q32 || (out[m].x < 0 ? -out[m].x : out[m].x) > xf.near_q32 ||
-                (out[m].y < 0 ? -out[m].y : out[m].y) > xf.near_q32)
-                continue;
-            for (k = 0; k < 3; k += 2) {
-                const long double tt = ((long double)in[k].w - nq) / ((long double)in[k].w - (long double)in[1].w);
-                const long double x = in[k].x + tt * ((long double)in[1].x - in[k].x);
-                const long double y = in[k].y + tt * ((long double)in[1].y - in[k].y);
-                const long double e = 160 * fmaxl(fabsl((out[m].x - x) / nq), fabsl((out[m].y - y) / nq));
-                if (e < best) {
-                    best = e;
-                    visible = fabsl(x) <= nq && fabsl(y) <= nq;
-                }
-            }
-            if (!visible)
-                continue;
-            corners++;
-            if ((double)best > worst)
-                worst = (double)best;
-            /* one q32 unit of position is 160 / near_q32 px here (0.0024 px
-             * at near 2^-16): rounding to it, plus 1/2048 px */
-            if (best > 1.0L / 2048 + 160 / nq) {
-                snprintf(msg, sizeof msg, "case %d: near-plane corner %u is %.3Lg px from the exact cut", i,
-                         (unsigned)m, best);
-                TEST_FAIL_MESSAGE(msg);
-            }
-        }
+        /* one q32 unit of position is 160 / near_q32 px here (0.0024 px
+         * at near 2^-16): rounding to it, plus 1/2048 px */
+        check_near_corners(&xf, in, 1.0L / 2048 + 160 / (long double)xf.near_q32, i, &corners, &worst);
     }
     printf("clip: %d near-plane corners of long edges cut near t = 1/2, worst %.3g px\n", corners, worst);
     TEST_ASSERT_GREATER_THAN(2000, corners);
