@@ -229,6 +229,96 @@ void test_read_png_any_colour_type_gives_rgba8(void)
     free(src);
 }
 
+/* A 4x2 PNG written from packed rows as given: colour type, bit depth,
+ * interlace, and a tRNS chunk (trns_n > 0: a grey or RGB key colour). */
+static void write_raw_png(const char *path, int color, int depth, int interlace, const png_byte *rows,
+                          size_t row_bytes, const png_color_16 *trns)
+{
+    FILE *f = fopen(path, "wb");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png_create_info_struct(png);
+    png_bytep rp[2];
+    TEST_ASSERT_NOT_NULL(f);
+    if (setjmp(png_jmpbuf(png)))
+        TEST_FAIL_MESSAGE("libpng write failed");
+    png_init_io(png, f);
+    png_set_IHDR(png, info, 4, 2, depth, color, interlace, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (trns)
+        png_set_tRNS(png, info, NULL, 0, (png_color_16p)trns);
+    png_write_info(png, info);
+    rp[0] = (png_bytep)rows;
+    rp[1] = (png_bytep)rows + row_bytes;
+    png_write_image(png, rp);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    fclose(f);
+}
+
+/* The colour types and depths the first reading test does not write: grey
+ * with alpha, grey at 1, 2 and 4 bits (expanded by 255, 85, 17), a tRNS
+ * key on grey and on RGB (that colour transparent, the rest opaque), and
+ * an interlaced (Adam7) RGBA image. Each 4x2 image must read as the RGBA8
+ * pixels it holds. */
+void test_read_png_grey_alpha_low_depths_trns_and_interlace(void)
+{
+    static const png_byte ga[] = {0, 255, 40, 128, 90, 0, 255, 7, 1, 2, 3, 4, 5, 6, 200, 201};
+    static const png_byte g1[] = {0xA0, 0x50};                 /* 1 0 1 0 / 0 1 0 1 */
+    static const png_byte g2[] = {0x1B, 0xE4};                 /* 0 1 2 3 / 3 2 1 0 */
+    static const png_byte g4[] = {0x01, 0x8F, 0xF7, 0x3C};     /* 0 1 8 15 / 15 7 3 12 */
+    static const png_byte gk[] = {10, 20, 30, 20, 20, 40, 50, 20};
+    static const png_byte rgbk[] = {1, 2, 3, 9, 9, 9, 1, 2, 3, 4, 5, 6, 9, 9, 9, 7, 8, 9, 1, 2, 3, 0, 0, 0};
+    png_byte rgba[32];
+    png_color_16 kg, kc;
+    uint8_t want[8][32];
+    const char *what[8] = {"grey+alpha", "grey 1 bit", "grey 2 bit", "grey 4 bit", "grey tRNS", "RGB tRNS",
+                           "interlaced RGBA", ""};
+    texconv_image_t img;
+    char err[256], msg[96];
+    int t, i;
+    memset(&kg, 0, sizeof kg);
+    memset(&kc, 0, sizeof kc);
+    kg.gray = 20;
+    kc.red = 9;
+    kc.green = 9;
+    kc.blue = 9;
+    for (i = 0; i < 32; i++)
+        rgba[i] = (png_byte)(i * 37 + 11);
+    for (i = 0; i < 8; i++) {
+        const int v1 = (g1[i / 4] >> (7 - i % 4)) & 1, v2 = (g2[i / 4] >> (6 - 2 * (i % 4))) & 3;
+        const int v4 = (g4[i / 2] >> (i % 2 ? 0 : 4)) & 15;
+        const int grey[5] = {ga[2 * i], v1 * 255, v2 * 85, v4 * 17, gk[i]};
+        const int alpha[5] = {ga[2 * i + 1], 255, 255, 255, gk[i] == 20 ? 0 : 255};
+        int k;
+        for (k = 0; k < 5; k++) {
+            want[k][4 * i] = want[k][4 * i + 1] = want[k][4 * i + 2] = (uint8_t)grey[k];
+            want[k][4 * i + 3] = (uint8_t)alpha[k];
+        }
+        for (k = 0; k < 3; k++)
+            want[5][4 * i + k] = rgbk[3 * i + k];
+        want[5][4 * i + 3] = (rgbk[3 * i] == 9 && rgbk[3 * i + 1] == 9 && rgbk[3 * i + 2] == 9) ? 0 : 255;
+        memcpy(&want[6][4 * i], &rgba[4 * i], 4);
+    }
+    write_raw_png(path_in("t0.png"), PNG_COLOR_TYPE_GRAY_ALPHA, 8, PNG_INTERLACE_NONE, ga, 8, NULL);
+    write_raw_png(path_in("t1.png"), PNG_COLOR_TYPE_GRAY, 1, PNG_INTERLACE_NONE, g1, 1, NULL);
+    write_raw_png(path_in("t2.png"), PNG_COLOR_TYPE_GRAY, 2, PNG_INTERLACE_NONE, g2, 1, NULL);
+    write_raw_png(path_in("t3.png"), PNG_COLOR_TYPE_GRAY, 4, PNG_INTERLACE_NONE, g4, 2, NULL);
+    write_raw_png(path_in("t4.png"), PNG_COLOR_TYPE_GRAY, 8, PNG_INTERLACE_NONE, gk, 4, &kg);
+    write_raw_png(path_in("t5.png"), PNG_COLOR_TYPE_RGB, 8, PNG_INTERLACE_NONE, rgbk, 12, &kc);
+    write_raw_png(path_in("t6.png"), PNG_COLOR_TYPE_RGBA, 8, PNG_INTERLACE_ADAM7, rgba, 16, NULL);
+    for (t = 0; t < 7; t++) {
+        char name[16];
+        snprintf(name, sizeof name, "t%d.png", t);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(0, texconv_read_png(path_in(name), &img, err, sizeof err), what[t]);
+        TEST_ASSERT_EQUAL_UINT32(4, img.width);
+        TEST_ASSERT_EQUAL_UINT32(2, img.height);
+        for (i = 0; i < 32; i++) {
+            snprintf(msg, sizeof msg, "%s: byte %d (pixel %d)", what[t], i, i / 4);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(want[t][i], img.rgba[i], msg);
+        }
+        texconv_image_free(&img);
+    }
+}
+
 /* ---- round trips through fxl_texture_fetch --------------------------------------- */
 
 static void convert_file(const uint8_t *rgba, uint32_t w, uint32_t h, const texconv_opts_t *o,
@@ -815,6 +905,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_colour_conversions_round_to_nearest);
     RUN_TEST(test_read_png_any_colour_type_gives_rgba8);
+    RUN_TEST(test_read_png_grey_alpha_low_depths_trns_and_interlace);
     RUN_TEST(test_roundtrip_rgb565_level0_equals_png_pixels);
     RUN_TEST(test_roundtrip_l8_and_exact_i8_with_key);
     RUN_TEST(test_i8_quantiser_maps_every_pixel_to_its_nearest_entry);
