@@ -680,8 +680,13 @@ void test_blob_layout(void)
     TEST_ASSERT_EQUAL_UINT8(FXL_WRAP_CLAMP, blob[10]);
     TEST_ASSERT_EQUAL_UINT8(FXL_WRAP_CLAMP, blob[11]);
     TEST_ASSERT_EQUAL_UINT8(FXL_TEXF_KEY, blob[12]);
+    TEST_ASSERT_EQUAL_UINT8(0, blob[13]);   /* reserved */
     TEST_ASSERT_EQUAL_UINT8(23, blob[20]);
     TEST_ASSERT_EQUAL_UINT8(0, blob[21]);
+    TEST_ASSERT_EQUAL_UINT8(0, blob[22]);   /* texel count, high half */
+    TEST_ASSERT_EQUAL_UINT8(0, blob[23]);
+    TEST_ASSERT_EQUAL_UINT8(0, blob[18]);   /* reserved */
+    TEST_ASSERT_EQUAL_UINT8(0, blob[19]);
     texconv_opts_default(&o);
     o.format = FXL_TEXFMT_I8;
     o.has_key = 1;
@@ -690,6 +695,11 @@ void test_blob_layout(void)
     TEST_ASSERT_EQUAL_INT(0, texconv_read_png(path_in("b.png"), &img, err, sizeof err));
     TEST_ASSERT_EQUAL_INT(0, texconv_convert(&img, &o, &c, err, sizeof err));
     texconv_image_free(&img);
+    /* key and border, little-endian, as the converted descriptor has them */
+    TEST_ASSERT_EQUAL_UINT8(c.tex.key & 0xFF, blob[14]);
+    TEST_ASSERT_EQUAL_UINT8(c.tex.key >> 8, blob[15]);
+    TEST_ASSERT_EQUAL_UINT8(c.tex.border & 0xFF, blob[16]);
+    TEST_ASSERT_EQUAL_UINT8(c.tex.border >> 8, blob[17]);
     {
         uint32_t i;
         for (i = 0; i < 256; i++) {
