@@ -2811,19 +2811,25 @@ int fxl__fast_id(const fxl_target_t *target, const fxl_draw_t *d, int mip_linear
     const fxl_texture_t *t = d->texture;
     const uint32_t both = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
     const int zmode = target->depth && (d->depth & both);
-#if FXL__V_TINT
-    /* a flat tint: white leaves every texel as it is (modulate565), so it
-     * draws as REPLACE; other colours take the tinted copies (one level) */
-    const int flat_mod = d->texenv == FXL_TEXENV_MODULATE && d->shade == FXL_SHADE_FLAT;
-    const int tinted = flat_mod && d->color != 0xFFFFu;
-#else
-    const int flat_mod = 0, tinted = 0;
-#endif
-    int id;
+    int id, tinted = 0;
 
-    if (!(t && tex_repeat565(t) && (d->texenv == FXL_TEXENV_REPLACE || flat_mod) && t->log2_w + t->log2_h <= 16 &&
-          (!zmode || (d->depth & both) == both) && !(tinted && mip_linear)))
+    /* (speed builds only look past REPLACE: the size builds' test is as
+     * before, byte for byte) */
+    if (!(t && tex_repeat565(t) && (d->texenv == FXL_TEXENV_REPLACE || (FXL_HAVE_GENERIC && FXL__FAST_SPANS)) &&
+          t->log2_w + t->log2_h <= 16 && (!zmode || (d->depth & both) == both)))
         return 0;
+    if (d->texenv != FXL_TEXENV_REPLACE) {
+        /* a flat tint: white leaves every texel as it is (modulate565), so
+         * it draws as REPLACE in speed builds (at -Os the test cost 32 of
+         * the 82 bytes left under 16 KiB); other colours take the tinted
+         * copies (one level) where they are built. Tested after REPLACE:
+         * before it, small triangles cost 8 x86 instructions more. */
+        if (!(FXL_HAVE_GENERIC && FXL__FAST_SPANS && d->texenv == FXL_TEXENV_MODULATE && d->shade == FXL_SHADE_FLAT))
+            return 0;
+        tinted = d->color != 0xFFFFu;
+        if (tinted && (!FXL__V_TINT || mip_linear))
+            return 0;
+    }
     id = 1 + (d->filter == FXL_FILTER_BILINEAR ? 1 : 0) + (zmode ? 2 : 0) +
          (target->format == FXL_PIXFMT_RGB565_SWAP ? 4 : 0) + (mip_linear ? 8 : 0) + (tinted ? 16 : 0);
     return fast_tab[id].seg ? id : 0;

@@ -39,9 +39,10 @@ static int64_t mag(int64_t x) { return x < 0 ? -x : x; }
  * vertex: u in [0, 65536], v in [0, 65536] (spherical) or h (cylindrical). */
 static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
 {
-    int64_t a, b, h, r, m;
+    int64_t a, b, h, h0, r, m;
     int k = 0;
     axis_frame(tg->axis, pos, &a, &b, &h);
+    h0 = h;
     out[0] = (int32_t)((fxl__atan2_q32(b, a) + 0x8000u) >> 16); /* [0, 65536] */
     /* r and phi depend only on the ratios of a, b, h: scaled up to just
      * below 2^30, r's floored square root errs by 2^-30 of the largest
@@ -61,7 +62,7 @@ static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
         /* phi in [0, 2^31] q32 turns; v = phi / half turn, q16. */
         out[1] = (int32_t)((fxl__atan2_q32(r, h) + 0x4000u) >> 15);
     } else {
-        out[1] = (int32_t)(h >> k); /* h is a q16 input coordinate */
+        out[1] = (int32_t)h0; /* h is a q16 input coordinate */
     }
 }
 

@@ -2392,7 +2392,9 @@ void test_modulate_loop_matches_generic_loop(void)
         d.mip = (uint8_t)(mip == 2 ? FXL_MIP_LINEAR : mip == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
         d.texenv = FXL_TEXENV_MODULATE;
         d.shade = (uint8_t)(gouraud ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT);
-        d.color = 0xB5D3u;
+        /* flat white (drawn as REPLACE) on one configuration in seven
+         * (7 is coprime with the 4 modes: every mode gets some) */
+        d.color = cfg % 7 == 3 && !gouraud ? 0xFFFFu : 0xB5D3u;
         if (!keyed_twin_draws(&d, &dg, &tex, &keyed, fmt, depth))
             continue;
         for (k = 0; k < NT; k++) {
@@ -2592,13 +2594,20 @@ void test_level_row_walk_matches_generic(void)
     occ[2] = vtx(LW * 0.1, LH + 5, 0.1, 0, 0);
     flat_draw(&dflat);
     dflat.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
-    for (cfg = 0; cfg < 7 * 2 * 2 * 2; cfg++) {
+    for (cfg = 0; cfg < 7 * 2 * 2 * 2 * 3; cfg++) {
         const int pm = cfg % 7, depth = (cfg / 7) & 1, swap = (cfg / 14) & 1, clip = (cfg / 28) & 1;
+        /* REPLACE, then MODULATE by a flat colour (the tinted walks with
+         * FXL_FAST_TINT, else the generic one) and by white (REPLACE's) */
+        const int tint = cfg / 56;
         const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
         const fxl_rect_t cr = {13, 1, LW - 29, LH - 1};
         fxl_draw_defaults(&d);
         d.filter = FXL_FILTER_POINT;
         d.persp = persp[pm];
+        if (tint) {
+            d.texenv = FXL_TEXENV_MODULATE;
+            d.color = tint == 1 ? 0xB5D3u : 0xFFFFu;
+        }
         if (!depth)
             d.depth = 0;
         for (k = 0; k < NT; k++) {
@@ -2635,8 +2644,8 @@ void test_level_row_walk_matches_generic(void)
                 memset(&st[pass], 0, sizeof st[pass]);
                 TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, pass ? &dg : &d, tris[k], &st[pass]));
             }
-            snprintf(msg, sizeof msg, "persp %d depth %d swap %d clip %d triangle %d", persp[pm], depth, swap, clip,
-                     k);
+            snprintf(msg, sizeof msg, "persp %d depth %d swap %d clip %d tint %d triangle %d", persp[pm], depth, swap,
+                     clip, tint, k);
             for (i = 0; i < LW * LH; i++) {
                 if (fast[i] != gen[i] || (depth && zfast[i] != zgen[i])) {
                     char m2[260];
@@ -2648,7 +2657,8 @@ void test_level_row_walk_matches_generic(void)
             TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[1].pixels, st[0].pixels, msg);
             /* the walk under test where this build has it (none at -Os) */
             TEST_ASSERT_EQUAL_UINT32_MESSAGE(FXL__FAST_SPANS && (swap ? FXL_FAST_SWAPPED : FXL_FAST_NATIVE) &&
-                                                     FXL_FAST_POINT && (depth ? FXL_FAST_DEPTH : FXL_FAST_NO_DEPTH)
+                                                     FXL_FAST_POINT && (depth ? FXL_FAST_DEPTH : FXL_FAST_NO_DEPTH) &&
+                                                     (tint != 1 || FXL_FAST_TINT)
                                                  ? 0u
                                                  : 1u,
                                              st[0].generic, msg);

@@ -854,8 +854,9 @@ void test_c_keyword_names_are_refused(void)
     write_png(path_in("in.png"), 2, 2, src, PNG_COLOR_TYPE_RGBA, 8);
     write_png(path_in("int.png"), 2, 2, src, PNG_COLOR_TYPE_RGBA, 8);
     /* names the generated file's headers use gave C that did not compile */
-    static const char *const clash[] = {"uint16_t", "fxl_texture_t", "fxl_brick", "FXL_OK", "_Brick",
-                                        "__brick", "UINT16_MAX", "INT8_MIN", "INTMAX_C"};
+    static const char *const clash[] = {"uint16_t", "fxl_texture_t", "fxl_brick", "FXL_OK", "FIXEL_TEXTURE_H",
+                                        "_Brick",   "__brick",       "UINT16_MAX", "INT8_MIN", "INTMAX_C",
+                                        "INT8_WIDTH"};
     size_t k;
     TEST_ASSERT_EQUAL_INT(2, run_tool(named, 5));
     TEST_ASSERT_EQUAL_INT(2, run_tool(from_file, 3));

@@ -681,22 +681,24 @@ static int parse_rgb(const char *s, uint32_t *out)
  * `const fxl_texture_t int = {`, which does not compile). */
 /* Whether identifier s belongs to a name space the generated file's
  * headers use: names ending in _t (POSIX; every <stdint.h> type and
- * fxl_texture_t), fixel's fxl_ and FXL_, C's reserved _X and __, and the
- * <stdint.h> limit macros (upper case ending in _MAX, _MIN or _C, such as
- * UINT16_MAX). Such a --name gave C that did not compile, with exit 0. */
+ * fxl_texture_t), fixel's fxl_, FXL_ and FIXEL_ (its include guards), C's
+ * reserved _X and __, and the <stdint.h> limit macros (upper case ending
+ * in _MAX, _MIN, _WIDTH (C23) or _C, such as UINT16_MAX). Such a --name
+ * gave C that did not compile, with exit 0. */
 static int reserved_name(const char *s)
 {
     const size_t n = strlen(s);
     size_t i;
     int upper = 1;
     if ((n >= 2 && strcmp(s + n - 2, "_t") == 0) || strncmp(s, "fxl_", 4) == 0 || strncmp(s, "FXL_", 4) == 0 ||
+        strncmp(s, "FIXEL_", 6) == 0 ||
         (s[0] == '_' && (s[1] == '_' || (s[1] >= 'A' && s[1] <= 'Z'))))
         return 1;
     for (i = 0; i < n; i++)
         if (s[i] >= 'a' && s[i] <= 'z')
             upper = 0;
     return upper && ((n >= 4 && (strcmp(s + n - 4, "_MAX") == 0 || strcmp(s + n - 4, "_MIN") == 0)) ||
-                     (n >= 2 && strcmp(s + n - 2, "_C") == 0));
+                     (n >= 6 && strcmp(s + n - 6, "_WIDTH") == 0) || (n >= 2 && strcmp(s + n - 2, "_C") == 0));
 }
 
 static int is_identifier(const char *s)
@@ -878,7 +880,7 @@ int texconv_main(int argc, char **argv)
     }
     if (!is_identifier(name)) {
         fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword, or a name "
-                        "<stdint.h> or fixel uses: *_t, fxl_*, FXL_*, _X*, __*, *_MAX, *_MIN, *_C); "
+                        "<stdint.h> or fixel uses: *_t, fxl_*, FXL_*, FIXEL_*, _X*, __*, *_MAX, *_MIN, *_WIDTH, *_C); "
                         "choose another with --name\n",
                 name == name_buf ? "the name taken from the input file," : "--name", name);
         return 2;

@@ -121,8 +121,8 @@
 /* Flat-tinted draws (MODULATE with FXL_SHADE_FLAT: every texel times one
  * colour, the cheapest lighting) in speed-optimised builds: 1 adds a
  * tinted copy of each one-level variant kept above, the same walks with
- * the texel modulated before the store, and sends such draws to it (a
- * white tint to the untinted one). Off by default: each copy is ~19-24 KB
+ * the texel modulated before the store, and sends such draws to it. (A
+ * white tint draws as REPLACE in every speed build.) Off by default: each copy is ~19-24 KB
  * of Cortex-M4 code at -O2 (docs/design.md, "Flat-tinted draws"). Without
  * it they take the generic walk, 2-7x the instructions a pixel of the
  * untinted draw. Size builds (-Os) and builds without FXL_HAVE_GENERIC
