@@ -73,8 +73,19 @@ static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
  * 0.5, 0.75, 1 spans 0.5 (a review). */
 static void fix_seam(int64_t u[3], const int pole[3])
 {
-    int64_t w[3], gap = -1;
+    int64_t w[3], gap = -1, lo = 65536, hi = 0;
     int idx[3], n = 0, i, j, cut = 0;
+    for (i = 0; i < 3; i++)
+        if (!pole[i]) {   /* u in [0, 65536] (atan2) */
+            lo = u[i] < lo ? u[i] : lo;
+            hi = u[i] > hi ? u[i] : hi;
+        }
+    /* Within half a period of each other (most triangles: away from the
+     * seam) the gap across the period is the widest: nothing moves (nor
+     * with fewer than two non-pole vertices: hi <= lo). The sort below,
+     * for every triangle, cost the sphere's front end 7% a vertex on a
+     * Cortex-M4. */
+    if (hi - lo <= 32768) return;
     for (i = 0; i < 3; i++)
         if (!pole[i]) {
             /* u in [0, 65536] (atan2): one period's representative */
