@@ -119,14 +119,19 @@ static inline uint32_t compact565(uint32_t x)
 typedef struct fxl__tint {
     uint32_t r, g, b;
 } fxl__tint_t;
+#endif
 
+#if FXL__V_TINT && FXL__V_ANY && FXL__V_SWP
 /* a byte swap (the tinted variants' stores: FXL_T_OUT names its argument
- * once) */
+ * once; only where byte-swapped walks are built: clang warns of an unused
+ * static inline function) */
 static inline uint16_t fxl__swap16(uint32_t c)
 {
     return (uint16_t)((c >> 8) | (c << 8));
 }
+#endif
 
+#if FXL__V_TINT && FXL__V_ANY
 static inline void tint_init(fxl__tint_t *k, uint32_t c)
 {
     k->r = ((c >> 11) & 31u) + 1u;

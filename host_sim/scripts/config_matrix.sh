@@ -44,6 +44,7 @@ configs=(
     "small-div-hw:-DFXL_SMALL_DIV64_HW=1"
     "tint:-DFXL_FAST_TINT=1"
     "tint-panel:-DFXL_FAST_TINT=1 -DFXL_FAST_NATIVE=0 -DFXL_FAST_NO_DEPTH=0 -DFXL_FAST_MIP=0"
+    "tint-native:-DFXL_FAST_TINT=1 -DFXL_FAST_SWAPPED=0 -DFXL_FAST_BILINEAR=0"
 )
 warn=(-Wall -Wextra -Wpedantic -Werror)
 base=(-std=c99 -ffreestanding "-I$root/include" "-I$root/src")
