@@ -158,33 +158,36 @@ static uint32_t nearest_index(const mipctx_t *m, const uint32_t rgb8[3])
     return best;
 }
 
+/* One channel's sum over n sources -> its code: the nearest to the mean in
+ * a linear space (its table), the mean rounded to nearest in stored codes
+ * (table NULL). */
+static uint32_t channel(const uint16_t *table, uint32_t count, uint32_t sum, uint32_t n)
+{
+    return table != NULL ? encode_lin(table, count, sum, n) : (sum + n / 2u) / n;
+}
+
 /* The channels' sums over n opaque sources -> stored value: the nearest
  * code to each mean (linear spaces) or the mean rounded to nearest (stored
  * codes); never returns the key when keyed. */
 static uint32_t encode(const mipctx_t *m, const uint32_t sum[3], uint32_t n)
 {
-    uint32_t v, rgb8[3], i, ch[3];
+    uint32_t v, rgb8[3], i;
 
-    for (i = 0; i < 3u; i++)
-        ch[i] = (sum[i] + n / 2u) / n;
     switch (m->format) {
     case FXL_TEXFMT_L8:
-        v = m->lin8 != NULL ? encode_lin(m->lin8, 256u, sum[0], n) : ch[0];
+        v = channel(m->lin8, 256u, sum[0], n);
         /* One grey step up (down at 255): invisible, and keeps it opaque. */
         if (m->keyed && v == m->key)
             v = v == 255u ? 254u : v + 1u;
         return v;
     case FXL_TEXFMT_I8:
         for (i = 0; i < 3u; i++)
-            rgb8[i] = m->lin8 != NULL ? encode_lin(m->lin8, 256u, sum[i], n) : ch[i];
+            rgb8[i] = channel(m->lin8, 256u, sum[i], n);
         return nearest_index(m, rgb8);
     case FXL_TEXFMT_RGB565:
     default:
-        if (m->lin8 != NULL)
-            v = (encode_lin(m->lin5, 32u, sum[0], n) << 11) | (encode_lin(m->lin6, 64u, sum[1], n) << 5) |
-                encode_lin(m->lin5, 32u, sum[2], n);
-        else
-            v = (ch[0] << 11) | (ch[1] << 5) | ch[2];
+        v = (channel(m->lin5, 32u, sum[0], n) << 11) | (channel(m->lin6, 64u, sum[1], n) << 5) |
+            channel(m->lin5, 32u, sum[2], n);
         /* The blue LSB is the least visible bit of an RGB565 word. */
         if (m->keyed && v == m->key)
             v ^= 1u;

@@ -2743,6 +2743,12 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define IF_FMT_1 IF_SWP
 #define IF_V(bil, z, sw, x) IF_FILT_##bil(IF_DEPTH_##z(IF_FMT_##sw(x)))
 #define ONE(bil, z, sw, name) FAST_ENTRY(IF_V(bil, z, sw, seg_##name), IF_V(bil, z, sw, span_##name##_pick))
+/* the eight one-level rows in id order, their names ending in sfx (empty,
+ * or _t for the tinted copies) */
+#define ONE_ROWS(sfx)                                                                                       \
+    ONE(0, 0, 0, point##sfx), ONE(1, 0, 0, bilin##sfx), ONE(0, 1, 0, point_z##sfx), ONE(1, 1, 0, bilin_z##sfx), \
+        ONE(0, 0, 1, point_swap##sfx), ONE(1, 0, 1, bilin_swap##sfx), ONE(0, 1, 1, point_z_swap##sfx),         \
+        ONE(1, 1, 1, bilin_z_swap##sfx)
 /* Size builds: a row of a kept variant names its loop (FXL__FMT_RUNTIME):
  * bilinear, the one with depth where that is kept. */
 #define RT_SEG_01 seg_point_z
@@ -2757,8 +2763,6 @@ typedef fxl__span_fn (*fxl__span_pick_fn)(fxl__tri_t *tri);
 #define RT(bil, z, sw) FAST_ENTRY(IF_V(bil, z, sw, RT_SEG(bil, z)), 0)
 #define TWO(bil, z, sw, name)                                                                               \
     FAST_ENTRY(IF_V(bil, z, sw, IF_MIP(SEG_GENERIC)), IF_V(bil, z, sw, IF_MIP(span_##name##_pick)))
-/* a tinted one-level variant (ids 17..24, where FXL__V_TINT builds them) */
-#define TINTED(bil, z, sw, name) ONE(bil, z, sw, name)
 /* The span column exists only where the specialised walks are built. */
 #if FXL__FAST_SPANS
 #define FAST_ENTRY(seg, pick) {seg, pick}
@@ -2782,14 +2786,7 @@ static const struct {
     RT(0, 1, 1),
     RT(1, 1, 1),
 #else
-    ONE(0, 0, 0, point),
-    ONE(1, 0, 0, bilin),
-    ONE(0, 1, 0, point_z),
-    ONE(1, 1, 0, bilin_z),
-    ONE(0, 0, 1, point_swap),
-    ONE(1, 0, 1, bilin_swap),
-    ONE(0, 1, 1, point_z_swap),
-    ONE(1, 1, 1, bilin_z_swap),
+    ONE_ROWS(),
 #endif
     TWO(0, 0, 0, pml),
     TWO(1, 0, 0, tri),
@@ -2799,15 +2796,8 @@ static const struct {
     TWO(1, 0, 1, tri_swap),
     TWO(0, 1, 1, pml_z_swap),
     TWO(1, 1, 1, tri_z_swap),
-#if FXL__V_TINT
-    TINTED(0, 0, 0, point_t),
-    TINTED(1, 0, 0, bilin_t),
-    TINTED(0, 1, 0, point_z_t),
-    TINTED(1, 1, 0, bilin_z_t),
-    TINTED(0, 0, 1, point_swap_t),
-    TINTED(1, 0, 1, bilin_swap_t),
-    TINTED(0, 1, 1, point_z_swap_t),
-    TINTED(1, 1, 1, bilin_z_swap_t),
+#if FXL__V_TINT   /* the tinted one-level variants, ids 17..24 */
+    ONE_ROWS(_t),
 #endif
 };
 

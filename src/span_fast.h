@@ -49,14 +49,16 @@
 
 /* One segment: n >= 1 pixels from dst (and zb). Returns the pixels written. */
 /* a texel as the target stores it: tinted first in the tinted variants
- * (FXL_T_TINT: the factors in the level state FXL_T_TL, L unless a walk
- * says otherwise, set with it by FXL_T_LV_INIT from the draw's colour) */
+ * (FXL_T_TINT: the factors in the level state L, set with it by
+ * FXL_T_LV_INIT from the draw's colour) */
 #ifndef FXL_T_TINT
 #define FXL_T_TINT 0
 #endif
-#define FXL_T_TL L
+#if FXL_T_TINT && FXL_T_MIPLIN
+#error "tinted variants are one-level ones (FXL_T_MIPLIN 0)"
+#endif
 #if FXL_T_TINT
-#define FXL_T_TINTED(c) tint565((c), &(FXL_T_TL)->tint)
+#define FXL_T_TINTED(c) tint565((c), &L->tint)
 #define FXL_T_TINT_INIT(Lp) tint_init(&(Lp)->tint, tri->draw->color)
 #else
 #define FXL_T_TINTED(c) (c)
@@ -1287,11 +1289,7 @@ static FXL__UNSWITCH void FXL_T_RRW(const fxl__tri_t *tri, int32_t row, int32_t 
 #else
                     c = L.tex[FXL__IDX_MASKS(u, v << L.lw, L.mu16, L.mv16)];
 #endif
-#undef FXL_T_TL
-#define FXL_T_TL (&L)   /* a level state here, not a pointer */
                 *dst = FXL_T_OUT(c);
-#undef FXL_T_TL
-#define FXL_T_TL L
 #if FXL_T_DEPTH
                 written++;
             }
@@ -1426,7 +1424,6 @@ static fxl__span_fn FXL__CAT(FXL_T_SPAN, _pick)(fxl__tri_t *tri)
 #undef FXL_T_OUT
 #undef FXL_T_TINTED
 #undef FXL_T_TINT_INIT
-#undef FXL_T_TL
 #undef FXL_T_TINT
 #undef FXL_T_LOOP
 #ifdef FXL_T_QLOOP
