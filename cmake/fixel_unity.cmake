@@ -57,7 +57,7 @@ macro(_fxl_unity_from_fetchcontent)
   if(NOT TARGET unity)
     message(FATAL_ERROR "fixel: Unity at ${unity_SOURCE_DIR} did not define target 'unity'")
   endif()
-  target_compile_definitions(unity PUBLIC UNITY_INCLUDE_DOUBLE UNITY_USE_FLUSH_STDOUT)
+  target_compile_definitions(unity PUBLIC UNITY_INCLUDE_DOUBLE UNITY_SUPPORT_64 UNITY_USE_FLUSH_STDOUT)
   target_link_libraries(fixel_unity INTERFACE unity)
 endmacro()
 
@@ -120,13 +120,13 @@ function(_fxl_unity_installed_usable out_var)
   include(CMakePushCheckState)
   cmake_push_check_state(RESET)
   set(CMAKE_REQUIRED_LIBRARIES unity::framework)
-  set(CMAKE_REQUIRED_DEFINITIONS -DUNITY_INCLUDE_DOUBLE)
+  set(CMAKE_REQUIRED_DEFINITIONS -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64)
   set(CMAKE_REQUIRED_QUIET ON)
   check_c_source_compiles([[
 #include "unity.h"
 void setUp(void) {}
 void tearDown(void) {}
-static void t(void) { TEST_ASSERT_DOUBLE_WITHIN(0.5, 1.0, 1.25); }
+static void t(void) { TEST_ASSERT_DOUBLE_WITHIN(0.5, 1.0, 1.25); TEST_ASSERT_EQUAL_INT64(1, 1); }
 int main(void) { UNITY_BEGIN(); RUN_TEST(t); return UNITY_END(); }
 ]] FXL_INSTALLED_UNITY_HAS_DOUBLE)
   cmake_pop_check_state()
@@ -147,7 +147,7 @@ function(fxl_resolve_unity)
     return()
   endif()
   add_library(fixel_unity INTERFACE)
-  target_compile_definitions(fixel_unity INTERFACE UNITY_INCLUDE_DOUBLE UNITY_USE_FLUSH_STDOUT)
+  target_compile_definitions(fixel_unity INTERFACE UNITY_INCLUDE_DOUBLE UNITY_SUPPORT_64 UNITY_USE_FLUSH_STDOUT)
   set(provider "")
 
   if(FXL_UNITY_COMPAT)
@@ -163,8 +163,9 @@ function(fxl_resolve_unity)
         set(provider "source-dir")
         set(detail "FETCHCONTENT_SOURCE_DIR_UNITY=${FETCHCONTENT_SOURCE_DIR_UNITY}")
       else()
-        message(WARNING "fixel: FETCHCONTENT_SOURCE_DIR_UNITY=${FETCHCONTENT_SOURCE_DIR_UNITY}"
-                        " has no src/unity.h; ignoring it")
+        message(FATAL_ERROR "fixel: FETCHCONTENT_SOURCE_DIR_UNITY=${FETCHCONTENT_SOURCE_DIR_UNITY}"
+                        " has no src/unity.h (expected a checkout of ThrowTheSwitch/Unity v2.6.1);"
+                        " fix the path or drop the option")
       endif()
     endif()
 
