@@ -122,9 +122,14 @@ fi
 if [ "$(id -u)" -ne 0 ]; then
     if have sudo && sudo -n true 2>/dev/null; then
         sudo_cmd=(sudo -n)
-    else
+    elif have sudo; then
         echo "deps.sh: not root and sudo needs a password; run:" >&2
         echo "  sudo apt-get update && sudo apt-get install -y ${all_missing[*]}" >&2
+        [ ${#missing[@]} -eq 0 ] && exit 0
+        exit 1
+    else
+        echo "deps.sh: not root and no sudo; as root, run:" >&2
+        echo "  apt-get update && apt-get install -y ${all_missing[*]}" >&2
         [ ${#missing[@]} -eq 0 ] && exit 0
         exit 1
     fi
@@ -133,7 +138,10 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 apt=("${sudo_cmd[@]}" apt-get -q -o Dpkg::Use-Pty=0)
 echo "deps.sh: ${apt[*]} update"
-"${apt[@]}" update
+if ! "${apt[@]}" update; then
+    echo "deps.sh: '${apt[*]} update' failed (network? sources.list?)" >&2
+    exit 1
+fi
 
 if [ ${#missing[@]} -gt 0 ]; then
     echo "deps.sh: ${apt[*]} install -y --no-install-recommends ${missing[*]}"
