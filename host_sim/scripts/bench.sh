@@ -15,6 +15,9 @@
 #   BENCH_RUNS=5     timing runs per configuration (median)
 #   BENCH_TRACE=1    also count floor subdiv16 point/bilinear exactly from a
 #                    QEMU exec trace (a few seconds); 0 skips it
+#   BENCH_OUT=DIR    write the CSVs, charts and footprint there instead of
+#                    docs/bench/ (which a run without every counting tool
+#                    refuses to overwrite, unless BENCH_PARTIAL=1)
 set -euo pipefail
 # A parent make (make bench) must not hand its jobserver to the make calls below.
 unset MAKEFLAGS MFLAGS MAKELEVEL
@@ -37,6 +40,23 @@ t_start=$SECONDS
 say() { printf '[bench %3ds] %s\n' $((SECONDS - t_start)) "$*" >&2; }
 have() { command -v "$1" >/dev/null 2>&1; }
 
+# docs/bench/ holds the published figures: without the counting tools a run
+# would replace every instruction count in results.csv and frontend.csv by
+# an empty cell or nan. Refuse unless asked (BENCH_PARTIAL=1), or write to
+# BENCH_OUT instead.
+out=${BENCH_OUT:-$out}
+if [ "$out" = docs/bench ] && [ "${BENCH_PARTIAL:-0}" != 1 ]; then
+    lacking=()
+    for tool in valgrind arm-none-eabi-gcc qemu-system-arm riscv64-unknown-elf-gcc qemu-system-riscv32; do
+        have "$tool" || lacking+=("$tool")
+    done
+    if [ ${#lacking[@]} -gt 0 ]; then
+        echo "bench.sh: missing ${lacking[*]}; docs/bench/ would lose their counts." >&2
+        echo "  install them (scripts/deps.sh firmware optional), or rerun with" >&2
+        echo "  BENCH_OUT=<dir> (write elsewhere) or BENCH_PARTIAL=1 (overwrite anyway)" >&2
+        exit 1
+    fi
+fi
 mkdir -p "$out" "$hostw" "$m4w" "$m0w" "$rvw" "$sizew"
 
 if [ ! -d "$build" ]; then
