@@ -91,15 +91,37 @@ static inline uint64_t fxl__udiv64(uint64_t n, uint64_t d)
 #endif
 #endif
 
-static inline uint64_t fxl__umul32(uint32_t a, uint32_t b)
+/* ARMv6-M size builds: the halves out of line (fxl__umul32_halves,
+ * fixed.c), one copy for every product, ~25 instructions a call against
+ * __aeabi_lmul's ~45. */
+#ifndef FXL__MUL_HALVES_CALL
+#if defined(__ARM_ARCH_6M__) && defined(__OPTIMIZE_SIZE__)
+#define FXL__MUL_HALVES_CALL 1
+#else
+#define FXL__MUL_HALVES_CALL 0
+#endif
+#endif
+
+static inline uint64_t fxl__umul32_by_halves(uint32_t a, uint32_t b)
 {
-#if FXL__MUL_HALVES
     const uint32_t a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
     const uint32_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
     const uint32_t mid = p01 + p10;                  /* weight 2^16, may wrap */
     const uint32_t lo = p00 + (mid << 16);
     const uint32_t hi = p11 + (mid >> 16) + ((uint32_t)(mid < p01) << 16) + (uint32_t)(lo < p00);
     return ((uint64_t)hi << 32) | lo;
+}
+
+/* fxl__umul32_by_halves out of line (compiled in every build, so host
+ * tests check it) */
+uint64_t fxl__umul32_halves(uint32_t a, uint32_t b);
+
+static inline uint64_t fxl__umul32(uint32_t a, uint32_t b)
+{
+#if FXL__MUL_HALVES
+    return fxl__umul32_by_halves(a, b);
+#elif FXL__MUL_HALVES_CALL
+    return fxl__umul32_halves(a, b);
 #else
     return (uint64_t)a * b;
 #endif

@@ -333,6 +333,37 @@ int fxl_clz64(uint64_t x)
     return 32 + fxl_clz32((uint32_t)x);
 }
 
+uint64_t fxl__umul32_halves(uint32_t a, uint32_t b)
+{
+    return fxl__umul32_by_halves(a, b);
+}
+
+#if !FXL__DIV32_HW
+/* fxl__udiv64_loop's loop in one word, for 0 < d <= n < 2^32: half the
+ * instructions an iteration on a 32-bit core. Most of the generic walk's
+ * step divisions are such; on cores without a divide instruction
+ * (FXL__DIV32_HW, div64.h) they all take the loop: the Cortex-M0+ -Os
+ * cube's ~270 instructions a step became ~120. Cores that divide 32 bits
+ * in hardware divide those steps directly and keep 42 B of -Os core. */
+static uint32_t udiv32_loop(uint32_t n, uint32_t d)
+{
+    uint32_t q = 0;
+    int s = fxl_clz32(d) - fxl_clz32(n);
+
+    d <<= s;
+    for (;;) {
+        if (n >= d) {
+            n -= d;
+            q |= 1u;
+        }
+        if (s-- == 0)
+            return q;
+        q <<= 1;
+        d >>= 1;
+    }
+}
+#endif
+
 uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
 {
     uint64_t q = 0;
@@ -340,6 +371,10 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
 
     if (d == 0 || n < d)
         return 0;
+#if !FXL__DIV32_HW
+    if ((n >> 32) == 0u)
+        return udiv32_loop((uint32_t)n, (uint32_t)d);
+#endif
     /* align d's leading one with n's: d << s <= n < d << (s + 1), so the
      * quotient has s + 1 bits, one per iteration */
     s = fxl_clz64(d) - fxl_clz64(n);

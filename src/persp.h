@@ -143,7 +143,7 @@ static inline int32_t fxl__log2_q8_32(uint32_t x)
  * (MUL, MLA, UMULL). */
 static inline int64_t fxl__mul_s32(int32_t a, int32_t b)
 {
-#if FXL__MUL_HALVES
+#if FXL__MUL_HALVES || FXL__MUL_HALVES_CALL
     /* the unsigned product of the bit patterns, less 2^32 b for a < 0 and
      * 2^32 a for b < 0 (modulo 2^64) */
     const uint64_t u = fxl__umul32((uint32_t)a, (uint32_t)b);

@@ -2972,6 +2972,26 @@ static FXL__NOINLINE void draw_span_rr(const fxl__tri_t *tri, fxl__seg_fn fn, in
 }
 #endif
 
+/* The generic walk's two correction points: swapped after each segment,
+ * or (FXL__GW_SWAP 0) p1 copied to p0. Thumb-2 cores (Cortex-M3/M4/M7/M33)
+ * copy the 48 bytes inline with LDM/STM, 28 B less code at -Os, where the
+ * core keeps within 16 KiB. Elsewhere a size build calls memcpy for the
+ * copy (newlib-nano's is a byte loop: ~290 Cortex-M0+ instructions a
+ * segment), so the walk swaps. Those cores also step a full segment's
+ * planes by gpxN instead of a product, four calls to __aeabi_lmul on the
+ * Cortex-M0+ (Thumb-2 has UMULL; the branch costs 62 B at -Os). Cortex-M0+
+ * -Os cube, subdiv16 point: 2.78 M -> 2.52 M instructions with the swap,
+ * 2.32 M -> 2.23 M with gpxN (fixed.c's one-word division loop between;
+ * docs/design.md, "Size builds on the Cortex-M0+"). 64-bit hosts swap too,
+ * so the tests run this form; determinism.sh's -Os builds copy. */
+#ifndef FXL__GW_SWAP
+#if defined(__thumb2__)
+#define FXL__GW_SWAP 0
+#else
+#define FXL__GW_SWAP 1
+#endif
+#endif
+
 /* generic_walk and correct_t: always inline (GCC), in size builds too,
  * where each has one caller (no mod copy): left out of line at -Os the walk
  * sat under a wrapper's frame on the Cortex-M0+ (+24 B of stack, +16 B). */
@@ -2995,7 +3015,14 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
     /* Affine spans are cut every FXL_PERSP_MAX pixels too (see raster.c). */
     const int k = tri->seg_log2;
     int32_t x, i;
-    point_t p0, p1;
+    /* the segment's two correction points; FXL__GW_SWAP swaps them after
+     * each segment instead of copying p1 to p0 */
+    point_t pts[2];
+#if FXL__GW_SWAP
+    point_t *p0 = &pts[0], *p1 = &pts[1];
+#else
+    point_t *const p0 = &pts[0], *const p1 = &pts[1];
+#endif
     fxl__seg_t seg;
     uint32_t written = 0;
 #if FXL_HAVE_AUTO
@@ -3021,9 +3048,9 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
         pv[i] = fxl__rr_plane(tri, tri->pl[i], x, Yc - tri->Y0);
     for (; i < NPLANES; i++)
         pv[i] = 0;
-    point_zero(&p0);
-    point_zero(&p1);
-    GW_CORRECT(&p0);
+    point_zero(p0);
+    point_zero(p1);
+    GW_CORRECT(p0);
 #if FXL_HAVE_MIPMAP
     int32_t lod_held = 0;   /* AUTO: the LOD of the latest grid point */
 #endif
@@ -3057,19 +3084,25 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             n = xr - x;
             div = n - 1;   /* the last segment ends on the last pixel */
         }
-        /* div >= 0 pixels on (a 64 x 32 multiply, modular: for a full
-         * segment of 2^k it is gpxN) */
-        for (i = 0; i < np; i++)
-            pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
-        GW_CORRECT(&p1);
+        /* div >= 0 pixels on: a 64 x 32 multiply, modular, or for a full
+         * segment of 2^k gpxN, the same value (on the Cortex-M0+ each
+         * product is a call to __aeabi_lmul) */
+        if (FXL__GW_SWAP && full && ki == k) {
+            for (i = 0; i < np; i++)
+                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpxN[i]);
+        } else {
+            for (i = 0; i < np; i++)
+                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
+        }
+        GW_CORRECT(p1);
 #define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
         a = x > cl ? x : cl;
         b = x + n < cr ? x + n : cr;
         off = a - x;
         if (GW_UV) {
-            du0 = STEP(coord_diff(&p1, &p0, FXL__AU, GW_SIGNED_U));
-            dv0 = STEP(coord_diff(&p1, &p0, FXL__AV, GW_SIGNED_V));
+            du0 = STEP(coord_diff(p1, p0, FXL__AU, GW_SIGNED_U));
+            dv0 = STEP(coord_diff(p1, p0, FXL__AV, GW_SIGNED_V));
 #if FXL_HAVE_MIPMAP
             if (tri->nlevels > 1) {
                 int32_t lod = tri->lod_q8_tri;
@@ -3079,7 +3112,7 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
                         lod = lod_held;
                     else
 #endif
-                        lod = lod_held = seg_lod(tri, tri->lod_at(tri, q0, p0.u64, p0.v64));
+                        lod = lod_held = seg_lod(tri, tri->lod_at(tri, q0, p0->u64, p0->v64));
                 }
                 level = seg_levels(tri, lod, &seg);
             }
@@ -3099,23 +3132,23 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             if (quad) {
                 /* one level, repeat or mirror axes (auto.c): level 0, and
                  * the differences are the modular ones */
-                const int32_t d[2] = {fxl__i32_of_bits(p1.a[FXL__AU] - p0.a[FXL__AU]),
-                                      fxl__i32_of_bits(p1.a[FXL__AV] - p0.a[FXL__AV])};
+                const int32_t d[2] = {fxl__i32_of_bits(p1->a[FXL__AU] - p0->a[FXL__AU]),
+                                      fxl__i32_of_bits(p1->a[FXL__AV] - p0->a[FXL__AV])};
                 uint32_t st[4];
-                fxl__quad_steps(d, p0.g, p1.g, full ? n : div, full ? ki : -1, st);
+                fxl__quad_steps(d, p0->g, p1->g, full ? n : div, full ? ki : -1, st);
                 const uint32_t su = st[0], ddu = st[1], sv = st[2], ddv = st[3];
                 /* the step at the first pixel drawn */
                 seg.du = fxl__i32_of_bits(su + ddu * (uint32_t)off);
                 seg.dv = fxl__i32_of_bits(sv + ddv * (uint32_t)off);
                 seg.ddu = fxl__i32_of_bits(ddu);
                 seg.ddv = fxl__i32_of_bits(ddv);
-                seg.u = fxl__seg_coord(p0.a[FXL__AU], fxl__i32_of_bits(su), seg.ddu, off);
-                seg.v = fxl__seg_coord(p0.a[FXL__AV], fxl__i32_of_bits(sv), seg.ddv, off);
+                seg.u = fxl__seg_coord(p0->a[FXL__AU], fxl__i32_of_bits(su), seg.ddu, off);
+                seg.v = fxl__seg_coord(p0->a[FXL__AV], fxl__i32_of_bits(sv), seg.ddv, off);
             } else
 #endif
             {
-                seg.u = shift_coord(p0.a[FXL__AU], lsu, GW_SIGNED_U) + (uint32_t)seg.du * (uint32_t)off;
-                seg.v = shift_coord(p0.a[FXL__AV], lsv, GW_SIGNED_V) + (uint32_t)seg.dv * (uint32_t)off;
+                seg.u = shift_coord(p0->a[FXL__AU], lsu, GW_SIGNED_U) + (uint32_t)seg.du * (uint32_t)off;
+                seg.v = shift_coord(p0->a[FXL__AV], lsv, GW_SIGNED_V) + (uint32_t)seg.dv * (uint32_t)off;
             }
 #if FXL_HAVE_MIPMAP
             if (seg.lvl2) {
@@ -3123,20 +3156,20 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
                 const int lsv2 = lsv < (int)tri->tex->log2_h ? lsv + 1 : lsv;
                 seg.du2 = shift_step(du0, lsu2, GW_SIGNED_U);
                 seg.dv2 = shift_step(dv0, lsv2, GW_SIGNED_V);
-                seg.u2 = shift_coord(p0.a[FXL__AU], lsu2, GW_SIGNED_U) + (uint32_t)seg.du2 * (uint32_t)off;
-                seg.v2 = shift_coord(p0.a[FXL__AV], lsv2, GW_SIGNED_V) + (uint32_t)seg.dv2 * (uint32_t)off;
+                seg.u2 = shift_coord(p0->a[FXL__AU], lsu2, GW_SIGNED_U) + (uint32_t)seg.du2 * (uint32_t)off;
+                seg.v2 = shift_coord(p0->a[FXL__AV], lsv2, GW_SIGNED_V) + (uint32_t)seg.dv2 * (uint32_t)off;
             }
 #endif
         }
         if (GW_COLOR) {
             for (i = 0; i < 3; i++) {
-                seg.dc[i] = step_i32((int32_t)p1.a[FXL__AR + i] - (int32_t)p0.a[FXL__AR + i], full, ki, div);
-                seg.c[i] = p0.a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
+                seg.dc[i] = step_i32((int32_t)p1->a[FXL__AR + i] - (int32_t)p0->a[FXL__AR + i], full, ki, div);
+                seg.c[i] = p0->a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
             }
         }
-        seg.dz = FXL_HAVE_DEPTH ? sat_i32(STEP((int64_t)p1.z - (int64_t)p0.z)) : 0;
+        seg.dz = FXL_HAVE_DEPTH ? sat_i32(STEP((int64_t)p1->z - (int64_t)p0->z)) : 0;
 #undef STEP
-        seg.z = p0.z + (uint32_t)seg.dz * (uint32_t)off;
+        seg.z = p0->z + (uint32_t)seg.dz * (uint32_t)off;
 
         if (a < b) {
             int32_t idx = (row - tg->origin_y) * tg->stride + (a - tg->origin_x);
@@ -3146,7 +3179,15 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             written += fn(tri, &seg);
         }
         x += n;
-        p0 = p1;
+#if FXL__GW_SWAP
+        {
+            point_t *const t = p0;
+            p0 = p1;
+            p1 = t;
+        }
+#else
+        *p0 = *p1;
+#endif
     }
     if (tri->stats) {
         tri->stats->pixels += written;

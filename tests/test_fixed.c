@@ -828,6 +828,24 @@ static void test_udiv64_loop_matches_c_division(void)
     TEST_ASSERT_TRUE(fxl__udiv64_loop(6u, 7u) == 0u);
     TEST_ASSERT_TRUE(fxl__udiv64_loop(7u, 7u) == 1u);
     TEST_ASSERT_TRUE(fxl__udiv64_loop(UINT64_MAX, 1u) == UINT64_MAX);
+    /* the one-word loop (n < 2^32, cores without a divide instruction): the
+     * generic walk's step divisors (segment lengths), one below, at and one
+     * above multiples up to the top of the word */
+    for (j = 1; j <= 300; j++) {
+        static const uint64_t ks[] = {1u, 2u, 0x7FFFu, 0x10000u, 0x3FFFFFFFu};
+        const int nk = (int)(sizeof ks / sizeof ks[0]);
+        const uint64_t d = (uint64_t)j, top = UINT64_C(0xFFFFFFFF) / d;
+        for (i = 0; i < nk + 2; i++) {
+            /* the listed multipliers, then the word's last two multiples */
+            const uint64_t k = i < nk ? ks[i] : top - (uint64_t)(i - nk);
+            if (k * d > UINT64_C(0xFFFFFFFF) || k == 0u)
+                continue;
+            check_udiv64_loop(k * d - 1u, d);
+            check_udiv64_loop(k * d, d);
+            if (k * d < UINT64_C(0xFFFFFFFF))
+                check_udiv64_loop(k * d + 1u, d);
+        }
+    }
     lcg_seed(0xD1F64u);
     for (i = 0; i < RANDOM_ITERS; i++) {
         const uint64_t n = rand64() >> (lcg_next() >> 26), d = rand64() >> (lcg_next() >> 26);
@@ -930,12 +948,14 @@ static void test_mul_halves_match_64bit_products(void)
         for (j = 0; j < ne; j++) {
             const int32_t a = (int32_t)e[i], b = (int32_t)e[j];
             TEST_ASSERT_TRUE(fxl__umul32(e[i], e[j]) == (uint64_t)e[i] * e[j]);
+            TEST_ASSERT_TRUE(fxl__umul32_halves(e[i], e[j]) == (uint64_t)e[i] * e[j]);   /* -Os copy */
             TEST_ASSERT_TRUE(fxl__mul_s32(a, b) == (int64_t)a * b);
         }
     lcg_seed(0x3A1F5u);
     for (i = 0; i < RANDOM_ITERS; i++) {
         const uint32_t a = rand32(), b = rand32() >> (lcg_next() >> 27);
         TEST_ASSERT_TRUE(fxl__umul32(a, b) == (uint64_t)a * b);
+        TEST_ASSERT_TRUE(fxl__umul32_halves(a, b) == (uint64_t)a * b);
         TEST_ASSERT_TRUE(fxl__mul_s32((int32_t)a, (int32_t)b) == (int64_t)(int32_t)a * (int32_t)b);
     }
 }

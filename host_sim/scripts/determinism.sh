@@ -4,11 +4,12 @@
 # Renders the list in determinism/det_entries.h (every gallery scene x 9 draw
 # variants, then every pipeline scene, the gallery's p_*, x 4 variants drawn
 # from object-space meshes by the fixed-point front end, 320x240) with the
-# core built by: gcc -O0, -O2 and -Os (-Os with FXL__DIV32_HW, and with
+# core built by: gcc -O0, -O2 and -Os (-Os with the Cortex-M0+'s arithmetic,
+# with FXL__DIV32_HW and FXL__GW_SWAP 0, and with
 # FXL_SMALL_DIV64_HW too), gcc -O2 with
 # the Cortex-M0+ arithmetic (FXL__MUL_HALVES, FXL__DIV_TABLE, FXL__DIV64_RECIP), gcc -O2
 # with specialised code left out (FXL_FAST_POINT/SWAPPED/MIP 0), clang -O2 (when
-# clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and for Cortex-M0+ run on
+# clang exists), arm-none-eabi-gcc -O2 for Cortex-M4 and -O2 and -Os for Cortex-M0+ run on
 # qemu-system-arm -M mps2-an386 with semihosting (when both exist),
 # riscv64-unknown-elf-gcc for RV32IMAC (-O2, -Os, and with Zbb), RV32I, RV32E
 # and RV64IMAC run on qemu-system-riscv32/64 -M virt (when both exist), and
@@ -61,11 +62,16 @@ run_host gcc-O2 gcc -O2
 # -Os selects the size-optimised code: the generic span walk instead of the
 # specialised ones, fixel's own 64-bit division (FXL_SMALL_DIV64); with the
 # 32-bit steps of cores that divide in hardware (FXL__DIV32_HW), as a
-# Cortex-M4 or RV32IMAC -Os firmware has them
-run_host gcc-Os gcc -Os -DFXL__DIV32_HW=1
+# Cortex-M4 or RV32IMAC -Os firmware has them, and the generic walk's
+# copied correction point (FXL__GW_SWAP 0, span.c) of Thumb-2 cores
+run_host gcc-Os gcc -Os -DFXL__DIV32_HW=1 -DFXL__GW_SWAP=0
 # and with FXL_SMALL_DIV64_HW (config.h): set-up's 32-bit divisors by
 # fxl__udiv64_by32, its gradients with one division, as such a build has them
-run_host gcc-Os-hwdiv gcc -Os -DFXL__DIV32_HW=1 -DFXL_SMALL_DIV64_HW=1
+run_host gcc-Os-hwdiv gcc -Os -DFXL__DIV32_HW=1 -DFXL__GW_SWAP=0 -DFXL_SMALL_DIV64_HW=1
+# and as a Cortex-M0+ -Os build has them: every step through the division
+# loop, in one word below 2^32 (fixed.c), 32 x 32-bit products from halves
+# out of line (FXL__MUL_HALVES_CALL, div64.h)
+run_host gcc-Os-m0 gcc -Os -DFXL__MUL_HALVES_CALL=1
 # the arithmetic of 32-bit cores without UMULL or UDIV (Cortex-M0+ at -O2):
 # products from 16-bit halves, the table-started reciprocal, set-up's
 # division by a reciprocal, and the 32-bit word forms of the roundings
@@ -84,11 +90,11 @@ fi
 # One bare-metal build run on qemu-system-arm -M mps2-an386 (a Cortex-M4),
 # with semihosting for the output. A failed run leaves an incomplete list,
 # which the comparison reports.
-run_arm() {   # name cpu
-    local name=$1 cpu=$2
-    echo "== $name: arm-none-eabi-gcc -mcpu=$cpu -O2 on qemu-system-arm -M mps2-an386"
+run_arm() {   # name cpu [opt]
+    local name=$1 cpu=$2 opt=${3:--O2}
+    echo "== $name: arm-none-eabi-gcc -mcpu=$cpu $opt on qemu-system-arm -M mps2-an386"
     # shellcheck disable=SC2086
-    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib -O2 $warn -mcpu="$cpu" -mthumb \
+    arm-none-eabi-gcc -std=c99 -ffreestanding -nostdlib $opt $warn -mcpu="$cpu" -mthumb \
         -mfloat-abi=soft -ffunction-sections -fdata-sections $inc \
         -T "$root/examples/common/mps2_an386.ld" -Wl,--gc-sections \
         "$root/examples/common/mps2_startup.c" "$root/determinism/det_main.c" $core -lgcc -o "$out/det_$name.elf"
@@ -104,6 +110,9 @@ if command -v arm-none-eabi-gcc >/dev/null 2>&1 && command -v qemu-system-arm >/
     # runs unchanged on the M4's ARMv7-M, and the micro:bit model has too
     # little RAM for a 320x240 frame.
     run_arm m0plus-O2 cortex-m0plus
+    # and its size build: the generic walk with swapped correction points,
+    # gpxN steps and the one-word division loop (span.c, fixed.c)
+    run_arm m0plus-Os cortex-m0plus -Os
 else
     echo "== m4-O2: needs arm-none-eabi-gcc and qemu-system-arm (apt-get install gcc-arm-none-eabi" \
          "libnewlib-arm-none-eabi qemu-system-arm); skipped"
