@@ -146,7 +146,7 @@ fxl_q16_t fxl_q16_mul_sat(fxl_q16_t a, fxl_q16_t b)
  * result, v its value. */
 static fxl_status_t q16_chk_store(int ok, fxl_q16_t v, fxl_q16_t *out)
 {
-    if (out == NULL) { /* not in the header's contract: a NULL out is an ARG error */
+    if (out == NULL) { /* fixed.h: a NULL out is FXL_ERR_ARG */
         return FXL_ERR_ARG;
     }
     if (!ok) {

@@ -440,12 +440,11 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw, cons
     fxl_status_t st;
     if (!target || !draw || !verts || (!idx && count))
         return FXL_ERR_ARG;
-    if (count == 0)
-        return FXL_OK;
     /* the settings once: every triangle of the list would get the same
-     * answer (~120 Cortex-M4 instructions a triangle) */
+     * answer (~120 Cortex-M4 instructions a triangle); checked for an empty
+     * list too, as fxl_draw_triangle checks them for a culled triangle */
     st = fxl_draw_check(target, draw);
-    if (st != FXL_OK)
+    if (st != FXL_OK || count == 0)
         return st;
     for (i = 0; i < count; i++) {
         fxl_vertex_t tv[3];

@@ -125,7 +125,7 @@ fxl_status_t fxl_target_init(fxl_target_t *t, uint16_t *pixels, int32_t width,
 fxl_status_t fxl_target_set_origin(fxl_target_t *t, int32_t origin_x, int32_t origin_y)
 {
     fxl_status_t st;
-    if (t == NULL) {
+    if (t == NULL || !fxl__aligned(t->pixels, 2u)) {
         return FXL_ERR_ARG;
     }
     /* The old origin is not checked: it is being replaced. */

@@ -3161,10 +3161,13 @@ void test_indexed_draw_matches_single_draws(void)
     for (i = 0; i < W * H; i++)
         TEST_ASSERT_EQUAL_HEX16(0, a[i]);
     TEST_ASSERT_EQUAL_UINT32(0, sa.triangles);
-    /* An empty list draws nothing and has no error to report. */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_indexed(&ta, &d, vs, NV, idx, 0, &sa));
-    /* A bad vertex stops the list there, after the triangles before it. */
+    /* An empty list draws nothing, but its settings are checked as a culled
+     * triangle's are: the same error, and none once they are valid. */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&ta, &d, vs, NV, idx, 0, &sa));
     d.persp = FXL_PERSP_SPAN;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_indexed(&ta, &d, vs, NV, NULL, 0, &sa));
+    TEST_ASSERT_EQUAL_UINT32(0, sa.triangles);
+    /* A bad vertex stops the list there, after the triangles before it. */
     vs[NV - 1].inv_w = 0;   /* the bottom-right corner: the last triangle only */
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_draw_indexed(&ta, &d, vs, NV, idx, NT, &sa));
     TEST_ASSERT_EQUAL_UINT32(NT - 1, sa.triangles);

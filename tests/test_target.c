@@ -157,15 +157,20 @@ static void test_odd_address_buffers_are_refused_with_arg(void)
 
 /* The struct is plain data: a pixel or depth pointer moved to an odd
  * address by hand after init is refused by the clears as init refuses it,
- * before any (misaligned) store; the buffer keeps its canaries. */
+ * before any (misaligned) store; the buffer keeps its canaries. Every
+ * other call re-checks the pixel pointer too (set_origin once did not). */
 static void test_odd_pointers_edited_in_are_refused_by_clears(void)
 {
     static uint16_t words[STRIDE * H + 1];
     uint16_t *odd = (uint16_t *)(void *)((unsigned char *)words + 1);
     fxl_target_t t = make_target(FXL_PIXFMT_RGB565);
+    const fxl_rect_t r = {0, 0, 2, 2};
     size_t k;
     for (k = 0; k < sizeof words / sizeof words[0]; k++) words[k] = CANARY;
     t.pixels = odd;
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_set_origin(&t, 3, 4));
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_set_clip(&t, &r));
+    ASSERT_STATUS(FXL_ERR_ARG, fxl_target_set_depth(&t, NULL));
     ASSERT_STATUS(FXL_ERR_ARG, fxl_target_clear(&t, 0x1234u));
     for (k = 0; k < sizeof words / sizeof words[0]; k++) {
         snprintf(msg, sizeof msg, "word %lu written through an odd pixel pointer", (unsigned long)k);

@@ -4,7 +4,8 @@
  * resolution 2^-16. Products and quotients use 64-bit intermediates.
  *
  * Rounding: every function that drops bits rounds to nearest, ties away from
- * zero (so results are symmetric: f(-a, b) == -f(a, b)).
+ * zero (so results are symmetric, f(-a, b) == -f(a, b), wherever neither
+ * saturates: FXL_Q16_MIN is one unit further from zero than FXL_Q16_MAX).
  * Overflow: functions named _sat saturate to FXL_Q16_MAX / FXL_Q16_MIN; the
  * _chk variants return FXL_ERR_RANGE and leave *out untouched (a NULL out is
  * FXL_ERR_ARG). No function here ever performs a signed overflow, for any

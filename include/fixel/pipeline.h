@@ -5,7 +5,8 @@
  *
  * Number formats (see docs/pipeline.md for the derivations):
  * - Positions, matrix entries, normals: q16 (fxl_q16_t), |value| < 32768,
- *   resolution 2^-16. Internally the pipeline keeps view and clip space in
+ *   resolution 2^-16; a result outside that saturates symmetrically, to
+ *   +-INT32_MAX (not to FXL_Q16_MIN), with FXL_ERR_RANGE. Internally the pipeline keeps view and clip space in
  *   int64 q32 (value * 2^32) so small near planes and deep scenes keep their
  *   precision; only the inputs and the final screen vertices are q16.
  * - Matrices are row-major, m[row][col], and act on column vectors:

@@ -189,7 +189,8 @@ fxl_status_t fxl_draw_check(const fxl_target_t *target, const fxl_draw_t *draw);
 
 /* Draw an indexed list: `count` triangles from idx[3*i .. 3*i+2] into verts.
  * Stops at the first error (which is returned); out-of-range indices are
- * FXL_ERR_RANGE. */
+ * FXL_ERR_RANGE. The target and settings are checked first, as
+ * fxl_draw_check does, also for an empty list (count 0, idx may be NULL). */
 fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw,
                               const fxl_vertex_t *verts, uint32_t vert_count,
                               const uint16_t *idx, uint32_t count, fxl_stats_t *stats);
