@@ -821,6 +821,172 @@ void test_exact_mode_error_within_its_plane_precision_bound(void)
     TEST_ASSERT_TRUE_MESSAGE(worst_share >= 0.1, msg);
 }
 
+/* raster.h's term for the planes' rounded gradients, which drift with the
+ * distance D from the vertex set-up starts them at (the one with the
+ * smallest inv_w): 2^(S - 51) D (max_i |u_i| q_max + 2 max_i |u_i| q_i) / q
+ * texels an axis, with D the largest over the target's corners (the pixels
+ * lie between them) and q at its smallest. */
+static double exact_drift_bound(const tri_t *tr, int tw, int w, int h)
+{
+    double b[2], qmin = 1e300, qmax = 0, D = 0;
+    int axis, i, ref = 0, c;
+    for (i = 0; i < 3; i++) {
+        const double q = tr->v[i].inv_w;
+        if (q < qmin) {
+            qmin = q;
+            ref = i;
+        }
+        if (q > qmax)
+            qmax = q;
+    }
+    for (c = 0; c < 4; c++) {
+        const double dx = fabs((c & 1 ? w : 0) - tr->v[ref].x / 65536.0), dy = fabs((c & 2 ? h : 0) - tr->v[ref].y / 65536.0);
+        if (dx + dy > D)
+            D = dx + dy;
+    }
+    for (axis = 0; axis < 2; axis++) {
+        double mn = 1e300, umax = 0, m = 0;
+        for (i = 0; i < 3; i++) {
+            const double c2 = (axis ? tr->v[i].v : tr->v[i].u) / 65536.0;
+            if (c2 < mn)
+                mn = c2;
+        }
+        for (i = 0; i < 3; i++) {
+            const double a = fabs((axis ? tr->v[i].v : tr->v[i].u) / 65536.0 - floor(mn)) * tw;
+            if (a > umax)
+                umax = a;
+            if (a * tr->v[i].inv_w > m)
+                m = a * tr->v[i].inv_w;
+        }
+        b[axis] = ldexp(D * (umax * qmax + 2 * m) / qmin, FXL_SUBPIXEL_BITS - 51);
+    }
+    return hypot(b[0], b[1]);
+}
+
+/* Exact mode on triangles with vertices far off the target (a floor's near
+ * corners after clipping, 30,000 px away; a far edge 60,000 px long), a
+ * depth ratio of 10^4 and 10^4 periods: within raster.h's bound in every
+ * vertex order, and the same pixels in every order, as set-up starts its
+ * planes from the farthest vertex whatever the order. Started from vertex
+ * 0, the near-corner triangle's horizon erred by 0.45 texel, 71 times the
+ * bound without its distance term. */
+void test_exact_mode_far_off_target_vertices_within_bound_in_any_order(void)
+{
+    static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+    static uint16_t first[320 * 240], texels[64 * 64];
+    const double qn = 0.49, qf = 0.49e-4, P = 10000;
+    tri_t base[2];
+    char msg[200];
+    int b, k, i;
+    for (i = 0; i < 64 * 64; i++)
+        texels[i] = (uint16_t)(i * 2654435761u >> 16);
+    base[0].v[0] = vtx(-30000, 30000, qn, 0, 0);   /* near corners below the target */
+    base[0].v[1] = vtx(30000, 30000, qn, 0, 0);
+    base[0].v[2] = vtx(160, 100, qf, 0, P);         /* the far vertex on it */
+    base[1].v[0] = vtx(-30000, 100, qf, 0, P);      /* a far edge across it */
+    base[1].v[1] = vtx(30000, 100, qf, P, P);
+    base[1].v[2] = vtx(160, 30000, qn, 0, 0);
+    for (b = 0; b < 2; b++)
+        for (k = 0; k < 6; k++) {
+            tri_t t;
+            fxl_draw_t d;
+            fxl_texture_t tex;
+            fxl_target_t tg;
+            static uint16_t buf[320 * 240];
+            double e, bound;
+            for (i = 0; i < 3; i++)
+                t.v[i] = base[b].v[perm[k][i]];
+            e = scene_max_error(&t, 1, FXL_PERSP_EXACT, 64);
+            bound = exact_plane_bound(&t, 64) + exact_drift_bound(&t, 64, 320, 240);
+            snprintf(msg, sizeof msg, "triangle %d, order %d%d%d: error %.3g texel > bound %.3g", b, perm[k][0],
+                     perm[k][1], perm[k][2], e, bound);
+            TEST_ASSERT_TRUE_MESSAGE(e <= bound, msg);
+            if (k == 0) {
+                snprintf(msg, sizeof msg, "triangle %d: error %.3g texel, bound %.3g", b, e, bound);
+                TEST_MESSAGE(msg);
+            }
+            one_level_draw(&d, &tex, texels, 64, FXL_PERSP_EXACT);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, drawable_rgb565()));
+            memset(buf, 0, sizeof buf);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, t.v, NULL));
+            if (k == 0)
+                memcpy(first, buf, sizeof buf);
+            snprintf(msg, sizeof msg, "triangle %d: order %d%d%d draws other pixels than 012", b, perm[k][0],
+                     perm[k][1], perm[k][2]);
+            TEST_ASSERT_TRUE_MESSAGE(memcmp(first, buf, sizeof buf) == 0, msg);
+        }
+}
+
+/* Every kind of draw gives the same pixels and depth values whichever of
+ * its six orders a triangle's vertices come in: set-up starts from a
+ * canonical vertex (raster.c, first_vertex), and the rest of the draw does
+ * not depend on the order. Random triangles, some with equal inv_w. */
+void test_vertex_order_does_not_change_the_pixels(void)
+{
+    static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+    static const int16_t modes[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, 8, 16, FXL_PERSP_AUTO};
+    static uint16_t texels[64 * 64 * 2], first[W * H], zfirst[W * H], buf[W * H], zb[W * H];
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    fxl_target_t t;
+    char msg[160];
+    int n, k, i, drawn = 0;
+    for (i = 0; i < 64 * 64 * 2; i++)
+        texels[i] = (uint16_t)(i * 2654435761u >> 16);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, FXL_HAVE_MIPMAP ? 7 : 1));
+    lcg_state = 0x0D0E5u;
+    for (n = 0; n < 600; n++) {
+        fxl_vertex_t v[3], pv[3];
+        if (n % 2) {
+            random_tri(v, 90);
+        } else {
+            /* far off the target (up to 20,000 px), depth ratios to 10^4,
+             * up to 1,000 periods: where the planes' drift shows */
+            for (i = 0; i < 3; i++)
+                v[i] = vtx(W / 2 + ((int)(rnd() % 40001) - 20000) * (i ? 1.0 : 0.001),
+                           H / 2 + ((int)(rnd() % 40001) - 20000) * (i ? 1.0 : 0.001),
+                           0.49 * pow(10.0, -4.0 * (rnd() % 1001) / 1000.0),
+                           ((int)(rnd() % 2001) - 1000), ((int)(rnd() % 2001) - 1000));
+        }
+        if (n % 4 == 0)
+            v[1].inv_w = v[0].inv_w;   /* a tie for the first vertex */
+        for (i = 0; i < 3; i++)
+            v[i].color = (uint16_t)rnd();
+        fxl_draw_defaults(&d);
+        d.texture = &tex;
+        d.persp = modes[n % 5];
+        d.filter = (n / 5) % 2 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.mip = (uint8_t)((n / 10) % 3 == 2 ? FXL_MIP_LINEAR : (n / 10) % 3 == 1 ? FXL_MIP_NEAREST : FXL_MIP_NONE);
+        d.lod = (n / 30) % 2 ? FXL_LOD_TRIANGLE : FXL_LOD_SEGMENT;
+        d.shade = (n / 60) % 2 ? FXL_SHADE_GOURAUD : FXL_SHADE_FLAT;
+        d.texenv = d.shade == FXL_SHADE_GOURAUD ? FXL_TEXENV_MODULATE : d.texenv;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, buf, W, H, W, drawable_rgb565()));
+        if (FXL_HAVE_DEPTH)
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+        else
+            d.depth = 0;
+        if (fxl_draw_check(&t, &d) != FXL_OK)
+            continue;   /* a kind of draw this build left out */
+        drawn++;
+        for (k = 0; k < 6; k++) {
+            for (i = 0; i < 3; i++)
+                pv[i] = v[perm[k][i]];
+            memset(buf, 0, sizeof buf);
+            memset(zb, 0, sizeof zb);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, pv, NULL));
+            if (k == 0) {
+                memcpy(first, buf, sizeof buf);
+                memcpy(zfirst, zb, sizeof zb);
+                continue;
+            }
+            snprintf(msg, sizeof msg, "triangle %d (persp %d, filter %d, mip %d, lod %d, shade %d): order %d%d%d differs",
+                     n, d.persp, d.filter, d.mip, d.lod, d.shade, perm[k][0], perm[k][1], perm[k][2]);
+            TEST_ASSERT_TRUE_MESSAGE(memcmp(first, buf, sizeof buf) == 0 && memcmp(zfirst, zb, sizeof zb) == 0, msg);
+        }
+    }
+    TEST_ASSERT_TRUE(drawn >= 100);
+}
+
 /* Subdivision error bound. Along a span u(x) = s(x) / q(x) with s, q linear,
  * u'' = -2 u' q' / q, so linear interpolation over L pixels errs by at most
  * L^2/8 max|u''| = L^2 max|u' q'| / (4 q). u' = (s' q - s q') / q^2 where
@@ -3657,6 +3823,8 @@ int main(void)
     RUN_TEST(test_exact_mode_within_one_64th_texel_on_floor_and_cube);
     RUN_TEST(test_exact_mode_precision_holds_across_depth_ratios);
     RUN_TEST(test_exact_mode_error_within_its_plane_precision_bound);
+    RUN_TEST(test_exact_mode_far_off_target_vertices_within_bound_in_any_order);
+    RUN_TEST(test_vertex_order_does_not_change_the_pixels);
     RUN_TEST(test_subdivided_modes_within_derived_bound_and_affine_is_worse);
     RUN_TEST(test_auto_mode_within_budget_and_affine_where_depth_is_constant);
     RUN_TEST(test_auto_vertex_test_keeps_small_triangles_within_budget);

@@ -30,7 +30,16 @@
  *   periods, in texels), plus 2^-27 |u| and 2^-17: about 3.2 * 2^-30 U R for
  *   U texels of range across a triangle and a depth ratio R (measured 0.15
  *   to 0.55 of it). 1/64 texel needs U R below ~10^7: split triangles that
- *   span many periods far into the distance. When a vertex has inv_w of
+ *   span many periods far into the distance. The planes start from the
+ *   vertex with the smallest inv_w (ties: smallest y, then x), so a
+ *   triangle draws the same pixels in any vertex order; their gradients
+ *   (2^-20 of a unit a sub-pixel) drift with the distance D = |x - x_f| +
+ *   |y - y_f| in pixels from that vertex, which adds up to
+ *   2^(FXL_SUBPIXEL_BITS - 51) D (max_i |u_i| q_max + 2 max_i(|u_i| q_i)) / q:
+ *   nothing at the far vertex, where q is smallest (a far edge 60,000 px
+ *   long across the target with R = 10^4 and U = 6.4 10^5 texels: 0.00075
+ *   texel measured in all, where this term allows up to 1.97). When a
+ *   vertex has inv_w of
  *   2^31 or more every vertex's inv_w is halved (truncated) to fit 31 bits,
  *   which adds up to 2 U / q texels at a point of interpolated inv_w q (U:
  *   the triangle's range of u in texels): within 1/64 texel where q is
