@@ -338,8 +338,23 @@ uint64_t fxl__umul32_halves(uint32_t a, uint32_t b)
     return fxl__umul32_by_halves(a, b);
 }
 
+/* Restoring long division: d << s <= n < d << (s + 1) (d's leading one
+ * aligned with n's), so the quotient has s + 1 bits, one per iteration.
+ * The one loop of both widths below; returns q from the caller. */
+#define FXL__SHIFT_SUBTRACT(q, n, d, s) \
+    for (;;) {                          \
+        if ((n) >= (d)) {               \
+            (n) -= (d);                 \
+            (q) |= 1u;                  \
+        }                               \
+        if ((s)-- == 0)                 \
+            return (q);                 \
+        (q) <<= 1;                      \
+        (d) >>= 1;                      \
+    }
+
 #if !FXL__DIV32_HW
-/* fxl__udiv64_loop's loop in one word, for 0 < d <= n < 2^32: half the
+/* fxl__udiv64_loop in one word, for 0 < d <= n < 2^32: half the
  * instructions an iteration on a 32-bit core. Most of the generic walk's
  * step divisions are such; on cores without a divide instruction
  * (FXL__DIV32_HW, div64.h) they all take the loop: the Cortex-M0+ -Os
@@ -351,16 +366,7 @@ static uint32_t udiv32_loop(uint32_t n, uint32_t d)
     int s = fxl_clz32(d) - fxl_clz32(n);
 
     d <<= s;
-    for (;;) {
-        if (n >= d) {
-            n -= d;
-            q |= 1u;
-        }
-        if (s-- == 0)
-            return q;
-        q <<= 1;
-        d >>= 1;
-    }
+    FXL__SHIFT_SUBTRACT(q, n, d, s)
 }
 #endif
 
@@ -375,20 +381,9 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
     if ((n >> 32) == 0u)
         return udiv32_loop((uint32_t)n, (uint32_t)d);
 #endif
-    /* align d's leading one with n's: d << s <= n < d << (s + 1), so the
-     * quotient has s + 1 bits, one per iteration */
     s = fxl_clz64(d) - fxl_clz64(n);
     d <<= s;
-    for (;;) {
-        if (n >= d) {
-            n -= d;
-            q |= 1u;
-        }
-        if (s-- == 0)
-            return q;
-        q <<= 1;
-        d >>= 1;
-    }
+    FXL__SHIFT_SUBTRACT(q, n, d, s)
 }
 
 /* One base-2^16 digit of Knuth's algorithm D: the quotient digit of
