@@ -114,23 +114,37 @@ function(_fxl_unity_download out_var)
   message(STATUS "fixel: ${why}")
 endfunction()
 
-# Probe an installed Unity: header found, library links, double asserts there.
+# Probe an installed Unity: header found, library links, double and 64-bit
+# asserts there. Run where we can: a library built without UNITY_SUPPORT_64
+# on a 32-bit host links but takes 32-bit arguments, and its 64-bit assert
+# fails (or its double one, without UNITY_INCLUDE_DOUBLE).
 function(_fxl_unity_installed_usable out_var)
   include(CheckCSourceCompiles)
+  include(CheckCSourceRuns)
   include(CMakePushCheckState)
   cmake_push_check_state(RESET)
   set(CMAKE_REQUIRED_LIBRARIES unity::framework)
   set(CMAKE_REQUIRED_DEFINITIONS -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64)
   set(CMAKE_REQUIRED_QUIET ON)
-  check_c_source_compiles([[
+  set(_probe [[
 #include "unity.h"
 void setUp(void) {}
 void tearDown(void) {}
-static void t(void) { TEST_ASSERT_DOUBLE_WITHIN(0.5, 1.0, 1.25); TEST_ASSERT_EQUAL_INT64(1, 1); }
+static void t(void)
+{
+    TEST_ASSERT_DOUBLE_WITHIN(0.5, 1.0, 1.25);
+    TEST_ASSERT_EQUAL_INT64(0x100000001LL, 0x100000001LL);
+    TEST_ASSERT_TRUE(1);
+}
 int main(void) { UNITY_BEGIN(); RUN_TEST(t); return UNITY_END(); }
-]] FXL_INSTALLED_UNITY_HAS_DOUBLE)
+]])
+  if(CMAKE_CROSSCOMPILING)
+    check_c_source_compiles("${_probe}" FXL_INSTALLED_UNITY_USABLE)
+  else()
+    check_c_source_runs("${_probe}" FXL_INSTALLED_UNITY_USABLE)
+  endif()
   cmake_pop_check_state()
-  set(${out_var} ${FXL_INSTALLED_UNITY_HAS_DOUBLE} PARENT_SCOPE)
+  set(${out_var} ${FXL_INSTALLED_UNITY_USABLE} PARENT_SCOPE)
 endfunction()
 
 function(_fxl_unity_compat_target)

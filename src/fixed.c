@@ -340,7 +340,8 @@ uint64_t fxl__umul32_halves(uint32_t a, uint32_t b)
 
 /* Restoring long division: d << s <= n < d << (s + 1) (d's leading one
  * aligned with n's), so the quotient has s + 1 bits, one per iteration.
- * The one loop of both widths below; returns q from the caller. */
+ * The one loop of both widths below: the last statement of its function
+ * (it returns q), on plain locals (it evaluates them more than once). */
 #define FXL__SHIFT_SUBTRACT(q, n, d, s) \
     for (;;) {                          \
         if ((n) >= (d)) {               \
@@ -385,6 +386,7 @@ uint64_t fxl__udiv64_loop(uint64_t n, uint64_t d)
     d <<= s;
     FXL__SHIFT_SUBTRACT(q, n, d, s)
 }
+#undef FXL__SHIFT_SUBTRACT
 
 /* One base-2^16 digit of Knuth's algorithm D: the quotient digit of
  * (un << 16 | next) / d for un < d, d normalised (top bit set) with top

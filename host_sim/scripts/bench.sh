@@ -15,9 +15,10 @@
 #   BENCH_RUNS=5     timing runs per configuration (median)
 #   BENCH_TRACE=1    also count floor subdiv16 point/bilinear exactly from a
 #                    QEMU exec trace (a few seconds); 0 skips it
-#   BENCH_OUT=DIR    write the CSVs, charts and footprint there instead of
-#                    docs/bench/ (which a run without every counting tool
-#                    refuses to overwrite, unless BENCH_PARTIAL=1)
+#   BENCH_OUT=DIR    write the CSVs, charts and footprint there (relative to
+#                    the repository root) instead of docs/bench/, which a run
+#                    without every counting tool refuses to overwrite, unless
+#                    BENCH_PARTIAL=1
 set -euo pipefail
 # A parent make (make bench) must not hand its jobserver to the make calls below.
 unset MAKEFLAGS MFLAGS MAKELEVEL
@@ -44,8 +45,9 @@ have() { command -v "$1" >/dev/null 2>&1; }
 # would replace every instruction count in results.csv and frontend.csv by
 # an empty cell or nan. Refuse unless asked (BENCH_PARTIAL=1), or write to
 # BENCH_OUT instead.
+# (BENCH_OUT is relative to the repository root, where this script runs.)
 out=${BENCH_OUT:-$out}
-if [ "$out" = docs/bench ] && [ "${BENCH_PARTIAL:-0}" != 1 ]; then
+if [ "$(realpath -m "$out")" = "$(realpath -m docs/bench)" ] && [ "${BENCH_PARTIAL:-0}" != 1 ]; then
     lacking=()
     for tool in valgrind arm-none-eabi-gcc qemu-system-arm riscv64-unknown-elf-gcc qemu-system-riscv32; do
         have "$tool" || lacking+=("$tool")

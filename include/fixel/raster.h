@@ -209,8 +209,10 @@ fxl_status_t fxl_draw_indexed(fxl_target_t *target, const fxl_draw_t *draw,
  * [-128 * 256, 255 * 256]; 0 without FXL_HAVE_MIPMAP. Within 2/256 level
  * of the exact log4 (its two q8 logarithms) while the vertices' u and v
  * differ by less than 2^31 q16 units (32768 periods); beyond, the
- * differences are halved, and a triangle that is a sliver in texture space
- * loses the precision of its area. Exposed for tests and tools. */
+ * differences are halved (from v[0]), and a triangle that is a sliver in
+ * texture space loses the precision of its area; there another vertex
+ * order can differ by 1/256 level: a draw passes the order set-up uses
+ * (the smallest inv_w first, see above). Exposed for tests and tools. */
 int32_t fxl_lod_triangle_q8(const fxl_texture_t *t, const fxl_vertex_t v[3]);
 
 #ifdef __cplusplus
