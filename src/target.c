@@ -60,12 +60,18 @@ static fxl_status_t check_layout_at(const fxl_target_t *t, int32_t origin_x, int
     return origin_ok(origin_x) && origin_ok(origin_y) ? FXL_OK : FXL_ERR_RANGE;
 }
 
-static fxl_status_t check_target(const fxl_target_t *t)
+/* t's fields (edited by hand or not) with the origin (ox, oy) */
+static fxl_status_t check_target_at(const fxl_target_t *t, int32_t ox, int32_t oy)
 {
     if (t == NULL || !fxl__aligned(t->pixels, 2u)) {
         return FXL_ERR_ARG;
     }
-    return check_layout_at(t, t->origin_x, t->origin_y);
+    return check_layout_at(t, ox, oy);
+}
+
+static fxl_status_t check_target(const fxl_target_t *t)
+{
+    return t == NULL ? FXL_ERR_ARG : check_target_at(t, t->origin_x, t->origin_y);
 }
 
 static int32_t clamp_i32(int32_t v, int32_t lo, int32_t hi)
@@ -124,12 +130,8 @@ fxl_status_t fxl_target_init(fxl_target_t *t, uint16_t *pixels, int32_t width,
 
 fxl_status_t fxl_target_set_origin(fxl_target_t *t, int32_t origin_x, int32_t origin_y)
 {
-    fxl_status_t st;
-    if (t == NULL || !fxl__aligned(t->pixels, 2u)) {
-        return FXL_ERR_ARG;
-    }
     /* The old origin is not checked: it is being replaced. */
-    st = check_layout_at(t, origin_x, origin_y);
+    const fxl_status_t st = check_target_at(t, origin_x, origin_y);
     if (st != FXL_OK) {
         return st;
     }

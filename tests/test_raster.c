@@ -742,6 +742,32 @@ void test_exact_mode_precision_holds_across_depth_ratios(void)
  * quads whose depth changes along the diagonal, U from 64 texels to 2^18,
  * R from 1 to 10^4; and the bound must be reached within a factor 10
  * somewhere, or it would say little. */
+/* Axis `axis` (0: u, 1: v) of tr rebased by whole periods (repeat), in
+ * texels of a tw-texel side: the largest |u_i| into *umax, the largest
+ * |u_i| inv_w_i into *m; returns the axis's range max - min. */
+static double rebased_axis(const tri_t *tr, int axis, int tw, double *umax, double *m)
+{
+    double mn = 1e300, mx = -1e300, base;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const double c = (axis ? tr->v[i].v : tr->v[i].u) / 65536.0;
+        if (c < mn)
+            mn = c;
+        if (c > mx)
+            mx = c;
+    }
+    base = floor(mn);   /* repeat: whole periods */
+    *umax = *m = 0;
+    for (i = 0; i < 3; i++) {
+        const double a = fabs((axis ? tr->v[i].v : tr->v[i].u) / 65536.0 - base) * tw;
+        if (a * tr->v[i].inv_w > *m)
+            *m = a * tr->v[i].inv_w;
+        if (a > *umax)
+            *umax = a;
+    }
+    return (mx - mn) * tw;
+}
+
 static double exact_plane_bound(const tri_t *tr, int tw)
 {
     double b[2], qmin = 1e300, qtrunc = 0;
@@ -755,23 +781,9 @@ static double exact_plane_bound(const tri_t *tr, int tw)
     if (qtrunc)
         qtrunc = 1.0 / floor(qmin / 2);   /* the smallest q_i = inv_w >> 1 */
     for (axis = 0; axis < 2; axis++) {
-        double mn = 1e300, mx = -1e300, m = 0, umax = 0, base;
-        for (i = 0; i < 3; i++) {
-            const double c = (axis ? tr->v[i].v : tr->v[i].u) / 65536.0;
-            if (c < mn)
-                mn = c;
-            if (c > mx)
-                mx = c;
-        }
-        base = floor(mn);   /* repeat: whole periods */
-        for (i = 0; i < 3; i++) {
-            const double a = fabs((axis ? tr->v[i].v : tr->v[i].u) / 65536.0 - base) * tw;
-            if (a * tr->v[i].inv_w > m)
-                m = a * tr->v[i].inv_w;
-            if (a > umax)
-                umax = a;
-        }
-        b[axis] = 3.2 * ldexp(m / qmin, -30) + ldexp(umax, -27) + ldexp(1, -17) + (mx - mn) * tw * qtrunc;
+        double umax, m;
+        const double range = rebased_axis(tr, axis, tw, &umax, &m);
+        b[axis] = 3.2 * ldexp(m / qmin, -30) + ldexp(umax, -27) + ldexp(1, -17) + range * qtrunc;
     }
     return hypot(b[0], b[1]);
 }
@@ -845,23 +857,15 @@ static double exact_drift_bound(const tri_t *tr, int tw, int w, int h)
             D = dx + dy;
     }
     for (axis = 0; axis < 2; axis++) {
-        double mn = 1e300, umax = 0, m = 0;
-        for (i = 0; i < 3; i++) {
-            const double c2 = (axis ? tr->v[i].v : tr->v[i].u) / 65536.0;
-            if (c2 < mn)
-                mn = c2;
-        }
-        for (i = 0; i < 3; i++) {
-            const double a = fabs((axis ? tr->v[i].v : tr->v[i].u) / 65536.0 - floor(mn)) * tw;
-            if (a > umax)
-                umax = a;
-            if (a * tr->v[i].inv_w > m)
-                m = a * tr->v[i].inv_w;
-        }
+        double umax, m;
+        (void)rebased_axis(tr, axis, tw, &umax, &m);
         b[axis] = ldexp(D * (umax * qmax + 2 * m) / qmin, FXL_SUBPIXEL_BITS - 51);
     }
     return hypot(b[0], b[1]);
 }
+
+/* The six orders of a triangle's vertices: even (rotations), then odd. */
+static const int vertex_order[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
 
 /* Exact mode on triangles with vertices far off the target (a floor's near
  * corners after clipping, 30,000 px away; a far edge 60,000 px long), a
@@ -872,7 +876,6 @@ static double exact_drift_bound(const tri_t *tr, int tw, int w, int h)
  * bound without its distance term. */
 void test_exact_mode_far_off_target_vertices_within_bound_in_any_order(void)
 {
-    static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
     static uint16_t first[320 * 240], texels[64 * 64];
     const double qn = 0.49, qf = 0.49e-4, P = 10000;
     tri_t base[2];
@@ -895,11 +898,11 @@ void test_exact_mode_far_off_target_vertices_within_bound_in_any_order(void)
             static uint16_t buf[320 * 240];
             double e, bound;
             for (i = 0; i < 3; i++)
-                t.v[i] = base[b].v[perm[k][i]];
+                t.v[i] = base[b].v[vertex_order[k][i]];
             e = scene_max_error(&t, 1, FXL_PERSP_EXACT, 64);
             bound = exact_plane_bound(&t, 64) + exact_drift_bound(&t, 64, 320, 240);
-            snprintf(msg, sizeof msg, "triangle %d, order %d%d%d: error %.3g texel > bound %.3g", b, perm[k][0],
-                     perm[k][1], perm[k][2], e, bound);
+            snprintf(msg, sizeof msg, "triangle %d, order %d%d%d: error %.3g texel > bound %.3g", b, vertex_order[k][0],
+                     vertex_order[k][1], vertex_order[k][2], e, bound);
             TEST_ASSERT_TRUE_MESSAGE(e <= bound, msg);
             if (k == 0) {
                 snprintf(msg, sizeof msg, "triangle %d: error %.3g texel, bound %.3g", b, e, bound);
@@ -911,8 +914,8 @@ void test_exact_mode_far_off_target_vertices_within_bound_in_any_order(void)
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&tg, &d, t.v, NULL));
             if (k == 0)
                 memcpy(first, buf, sizeof buf);
-            snprintf(msg, sizeof msg, "triangle %d: order %d%d%d draws other pixels than 012", b, perm[k][0],
-                     perm[k][1], perm[k][2]);
+            snprintf(msg, sizeof msg, "triangle %d: order %d%d%d draws other pixels than 012", b, vertex_order[k][0],
+                     vertex_order[k][1], vertex_order[k][2]);
             TEST_ASSERT_TRUE_MESSAGE(memcmp(first, buf, sizeof buf) == 0, msg);
         }
 }
@@ -923,7 +926,6 @@ void test_exact_mode_far_off_target_vertices_within_bound_in_any_order(void)
  * not depend on the order. Random triangles, some with equal inv_w. */
 void test_vertex_order_does_not_change_the_pixels(void)
 {
-    static const int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
     static const int16_t modes[] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, 8, 16, FXL_PERSP_AUTO};
     static uint16_t texels[64 * 64 * 2], first[W * H], zfirst[W * H], buf[W * H], zb[W * H];
     fxl_texture_t tex;
@@ -970,7 +972,7 @@ void test_vertex_order_does_not_change_the_pixels(void)
         drawn++;
         for (k = 0; k < 6; k++) {
             for (i = 0; i < 3; i++)
-                pv[i] = v[perm[k][i]];
+                pv[i] = v[vertex_order[k][i]];
             memset(buf, 0, sizeof buf);
             memset(zb, 0, sizeof zb);
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, pv, NULL));
@@ -980,7 +982,7 @@ void test_vertex_order_does_not_change_the_pixels(void)
                 continue;
             }
             snprintf(msg, sizeof msg, "triangle %d (persp %d, filter %d, mip %d, lod %d, shade %d): order %d%d%d differs",
-                     n, d.persp, d.filter, d.mip, d.lod, d.shade, perm[k][0], perm[k][1], perm[k][2]);
+                     n, d.persp, d.filter, d.mip, d.lod, d.shade, vertex_order[k][0], vertex_order[k][1], vertex_order[k][2]);
             TEST_ASSERT_TRUE_MESSAGE(memcmp(first, buf, sizeof buf) == 0 && memcmp(zfirst, zb, sizeof zb) == 0, msg);
         }
     }
