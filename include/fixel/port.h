@@ -250,8 +250,10 @@ fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel);
 /* Wait until transfer number `seq` has completed: the value of
  * panel->started right after the fxl_panel_write that started it (for your
  * own double buffering). A number not in flight returns at once: one that
- * completed, however long ago, one not started yet, 0 before the first
- * write, or one from before fxl_panel_init. */
+ * completed, however long ago, one not started yet, or 0 before the first
+ * write. fxl_panel_init numbers transfers from 1 again, so a number kept
+ * from before it names whichever transfer has that number since, and is
+ * waited for while that one is in flight. */
 fxl_status_t fxl_panel_wait_done(fxl_panel_t *panel, uint32_t seq);
 /* DISPON / DISPOFF. */
 fxl_status_t fxl_panel_display(fxl_panel_t *panel, int on);
@@ -308,7 +310,9 @@ typedef struct fxl_band {
     uint32_t first_unbinned; /* triangles from here on use the fallback scan */
     const fxl_draw_t *checked; /* the draw fxl_band_add last found valid this frame */
     uint32_t seq[2];         /* transfer number that last sent buf[i]; one not in flight
-                              * (0, completed, from before a panel re-init) is not waited for */
+                              * (0, completed) is not waited for. Bind again
+                              * (fxl_band_init) after re-initialising the panel:
+                              * its numbers restart at 1. */
 } fxl_band_t;
 
 /* Bind the band renderer to an initialised panel (frame = its current

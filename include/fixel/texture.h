@@ -10,7 +10,8 @@
  * I8 (8-bit index into `palette`, 256 native RGB565 entries).
  * Colour key: with FXL_TEXF_KEY set, a texel whose *stored* value equals `key`
  * (the RGB565 word, the L8 byte or the I8 index) is transparent: the pixel is
- * not drawn and its depth is not written. Filtering never blends a key texel
+ * not drawn and its depth is not written (except with FXL_TEXENV_DECAL, which
+ * draws the draw's colour there: raster.h). Filtering never blends a key texel
  * into its neighbours: with bilinear filtering the pixel is drawn only if the
  * nearest texel is opaque, and any key texel of the 2x2 footprint takes that
  * nearest texel's colour (weights unchanged, no division).
