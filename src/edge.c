@@ -45,13 +45,9 @@ void fxl__edge_init(fxl__edge_t *e, int32_t Xa, int32_t Ya, int32_t Xb, int32_t 
     e->rem = (int32_t)((dx - step * dy) * FXL__ONE);
 }
 
+#if defined(__OPTIMIZE_SIZE__)
 void fxl__edge_step(fxl__edge_t *e)
 {
-    /* num grows by ONE * dx = step * den + rem per row. */
-    e->x += e->step;
-    e->err -= e->rem;
-    if (e->err < 0) {
-        e->x += 1;
-        e->err += e->den;
-    }
+    fxl__edge_next(e);
 }
+#endif
