@@ -258,7 +258,7 @@ EOF
         echo "# worst-case stack of one fxl_draw_triangle call (gcc -fcallgraph-info=su, frames summed"
         echo "# along the deepest call chain; libgcc helpers not included). An upper bound: the tool"
         echo "# lets the generic walk's pointer call reach the specialised walks too (draw_span_generic's"
-        echo "# frame, 424-720 B, above them), which only fxl__draw_valid calls."
+        echo "# frame in the -O2 rows, above them), which only fxl__draw_valid calls."
         # stack_rows ROOT [CALLER=CALLEE...]: the bound for every core and level
         stack_rows() {
             local cpu opt d
