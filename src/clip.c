@@ -8,8 +8,9 @@
  * Ranges: |x|, |y|, |w| < 2^52 (FXL_CLIP_LIMIT_Q32) and G <= 256 (q16
  * <= 2^24), so G w < 2^60, |d| < 2^61 and d_in - d_out < 2^62: no overflow.
  * Interpolation is linear in clip space, which is the perspective-correct
- * choice for every attribute. The parameter t = d_in / (d_in - d_out)
- * comes from the two distances each reduced to 32 significant bits: q31
+ * choice for every attribute. A cut is interpolated from the end of the
+ * edge nearer the plane, with t = |d_a| / (d_in - d_out) <= 1/2 (d_a that
+ * end's distance) from the two distances each reduced to 32 significant bits: q31
  * where t >= 2^-8 (absolute error ~2^-31, relative below 2^-23), below
  * that a 32-bit mantissa with its own exponent (relative error below
  * 2^-30 however small t is); the new vertex is then put exactly on the
@@ -119,23 +120,35 @@ static int near_exact(const fxl_xform_t *xf, const fxl_clipvert_t *in, const fxl
 }
 
 /* The point where the edge from `in` (d_in >= 0) to `out` (d_out < 0)
- * crosses the plane. */
+ * crosses the plane. It is interpolated from the end nearer the plane (the
+ * smaller |d|; `in` on a tie), so t <= 1/2 and its rounding scales the
+ * shorter part of the edge. From `in` always, an edge from a far vertex
+ * to one just across a guard plane had t = 1 - 10^-9, whose q31 rounding
+ * is 2^-32 of the whole edge: the cut point's w a few percent off, its
+ * corner tens to hundreds of pixels along the guard line (near 2^-16,
+ * depths to 1,000; ~2 px at near 0.01, depths to 32,000). The end depends
+ * on the two distances only, so a shared edge is cut at one point. */
 static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in, int64_t d_in,
                       const fxl_clipvert_t *out, int64_t d_out, fxl_clipvert_t *res)
 {
     /* 0 <= d_in < d_in - d_out < 2^62. Both to 32 significant bits and
      * t = (num / den) 2^(tn - td): the mantissa (num / den) 2^31 < 2^32
-     * keeps its precision when d_in is tiny beside d_out. One shared shift,
-     * as before, left a vertex just inside the near plane 1-2 bits of t:
-     * corners ~150 px off on scaled geometry with a small near. */
+     * keeps its precision when the near end's |d| is tiny beside the
+     * other's. One shared shift, as before, left a vertex just inside the
+     * near plane 1-2 bits of t: corners ~150 px off on scaled geometry
+     * with a small near. */
+    const uint64_t d_out_mag = (uint64_t)0 - (uint64_t)d_out;
+    const int from_out = (uint64_t)d_in > d_out_mag;
+    const fxl_clipvert_t *a = from_out ? out : in, *b = from_out ? in : out;
+    const uint64_t d_a = from_out ? d_out_mag : (uint64_t)d_in;
     lerp_t t = {0u, 31u};
-    if (d_in > 0) {
+    if (d_a > 0) {
         int tn, td;
-        const uint64_t num = to_32_bits((uint64_t)d_in, &tn);
-        const uint64_t den = to_32_bits((uint64_t)d_in + (uint64_t)(-d_out), &td);
+        const uint64_t num = to_32_bits(d_a, &tn);
+        const uint64_t den = to_32_bits((uint64_t)d_in + d_out_mag, &td);
         /* < 2^32: num < 2^32, den >= 2^31, so num 2^31 / den + 1/2 < 2^32 */
         const uint64_t m = fxl__fe_udiv64((num << 31) + den / 2u, den);
-        const int e = td - tn;   /* >= 0: d_in < den */
+        const int e = td - tn;   /* >= 1: d_a <= den / 2 */
         if (e < 8) {
             /* t >= 2^-8: q31 keeps 24 significant bits of it and takes
              * the constant shift (the -O2 floor's submit was 10% dearer
@@ -146,14 +159,14 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
             t.sh = 31u + (unsigned)e;
         }
     }
-    res->x = lerp64(in->x, out->x, &t);
-    res->y = lerp64(in->y, out->y, &t);
-    res->w = lerp64(in->w, out->w, &t);
-    res->u = lerp32(in->u, out->u, &t);
-    res->v = lerp32(in->v, out->v, &t);
-    res->r = lerp32(in->r, out->r, &t);
-    res->g = lerp32(in->g, out->g, &t);
-    res->b = lerp32(in->b, out->b, &t);
+    res->x = lerp64(a->x, b->x, &t);
+    res->y = lerp64(a->y, b->y, &t);
+    res->w = lerp64(a->w, b->w, &t);
+    res->u = lerp32(a->u, b->u, &t);
+    res->v = lerp32(a->v, b->v, &t);
+    res->r = lerp32(a->r, b->r, &t);
+    res->g = lerp32(a->g, b->g, &t);
+    res->b = lerp32(a->b, b->b, &t);
     /* the intersection exactly on the plane */
     if (plane == PL_NEAR) {
         /* rare: the lerps above are then redone exactly (testing first,
