@@ -107,7 +107,13 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
 void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 /* Right-handed view matrix (gluLookAt). FXL_ERR_RANGE when eye == center,
- * up is parallel to the view direction, or the translation overflows. */
+ * up is parallel to the view direction, or the translation overflows. The
+ * side vector is the cross product of the view direction and up after
+ * each is rounded to q30, so with up within ~2^-10 rad of the view
+ * direction (still accepted down to ~2^-16) the rotation entries err by
+ * a few times 2^-30 / sin(angle) (a review measured 8.5 q16 units near
+ * the limit) where elsewhere they keep 2^-17 + 2^-26: keep up well away
+ * from the view direction. */
 fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
                               const fxl_vec3_t *up);
 /* OpenGL-style perspective (gluPerspective): vertical field of view
@@ -117,7 +123,7 @@ fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_ve
  * Within those ranges FXL_ERR_RANGE still when an entry does not fit q16:
  * cot(fovy / 2) / aspect, (far + near) / (far - near) or
  * 2 far near / (far - near) of 32768 or more (a tiny aspect, far next to
- * near). */
+ * near), or with far == 0 the -2 near of a near of 16384 or more. */
 fxl_status_t fxl_mat4_perspective(fxl_mat4_t *m, fxl_angle_t fovy, fxl_q16_t aspect,
                                   fxl_q16_t near_q16, fxl_q16_t far_q16);
 
@@ -338,7 +344,10 @@ fxl_status_t fxl_xform_clip(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_cl
 fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec3_t *out);
 /* Perspective divide and viewport mapping of a vertex with w >= near.
  * FXL_ERR_RANGE for w < near (including w <= 0) or |x|, |y| beyond the
- * guard band by more than the clipper's rounding, for w at
+ * guard band by more than 2^-10 G (the clipper's rounding leaves far
+ * less); a vertex beyond it by less is clamped to the guard band, which
+ * moves it by up to 2^-10 FXL_GUARD_PX = 8 px (the accuracy bound in the
+ * header's comment holds within the guard band); for w at
  * FXL_CLIP_LIMIT_Q32 or beyond, and for an xf (filled by hand) outside the
  * ranges fxl_pipeline_prepare gives: near in [2^-16, 2^15 - 2^-16] (q32:
  * [2^16, 2^47 - 2^16]), far 0 or beyond near and at most 2^15 - 2^-16, half

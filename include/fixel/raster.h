@@ -156,12 +156,20 @@ typedef struct fxl_stats {
     uint32_t drawn;               /* reached the span loops (a sliver between
                                    * pixel centres may write none) */
     uint32_t culled_degenerate;   /* zero area after snapping */
-    uint32_t culled_outside;      /* its bounding box holds no pixel centre
-                                   * of the clip rectangle */
+    uint32_t culled_outside;      /* its bounding box, taken half-open ([min,
+                                   * max) on each axis, the pixels the top-left
+                                   * rule can reach), holds no pixel centre of
+                                   * the clip rectangle */
     uint32_t culled_backface;     /* by the front end */
     uint32_t pixels;              /* pixels written */
     uint32_t spans;               /* non-empty clipped spans */
-    uint32_t divisions;           /* exact perspective divisions */
+    uint32_t divisions;           /* correction points: the span starts and
+                                   * segment ends where u, v are computed exactly
+                                   * (an affine draw counts its span ends too; a
+                                   * correction that reuses the row's 1/q counts).
+                                   * The generic walk, every draw of an -Os
+                                   * build, counts one more per span in exact
+                                   * mode: it corrects at the last pixel again */
     uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
                                    * with no specialised code (other texel formats and
                                    * wraps, key, modulate, Gouraud; those config.h's
