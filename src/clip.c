@@ -126,7 +126,7 @@ static int near_exact(const fxl_xform_t *xf, const fxl_clipvert_t *in, const fxl
  * to one just across a guard plane had t = 1 - 10^-9, whose q31 rounding
  * is 2^-32 of the whole edge: the cut point's w a few percent off, its
  * corner tens to hundreds of pixels along the guard line (near 2^-16,
- * depths to 1,000; ~2 px at near 0.01, depths to 32,000). The end depends
+ * depths to 1,000; ~3 px at near 0.001, depths 2,000-32,000). The end depends
  * on the two distances only, so a shared edge is cut at one point. */
 static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in, int64_t d_in,
                       const fxl_clipvert_t *out, int64_t d_out, fxl_clipvert_t *res)
