@@ -148,12 +148,13 @@ static void intersect(const fxl_xform_t *xf, int plane, const fxl_clipvert_t *in
         const uint64_t den = to_32_bits((uint64_t)d_in + d_out_mag, &td);
         /* < 2^32: num < 2^32, den >= 2^31, so num 2^31 / den + 1/2 < 2^32 */
         const uint64_t m = fxl__fe_udiv64((num << 31) + den / 2u, den);
-        const int e = td - tn;   /* >= 1: d_a <= den / 2 */
+        /* >= 1: 2 d_a <= d_in - d_out, so d_a's top bit is below the sum's */
+        const int e = td - tn;
         if (e < 8) {
             /* t >= 2^-8: q31 keeps 24 significant bits of it and takes
              * the constant shift (the -O2 floor's submit was 10% dearer
              * with every cut through the variable one) */
-            t.m = (uint32_t)(e ? (m + ((uint64_t)1 << (e - 1))) >> e : m);
+            t.m = (uint32_t)((m + ((uint64_t)1 << (e - 1))) >> e);
         } else {
             t.m = (uint32_t)m;
             t.sh = 31u + (unsigned)e;

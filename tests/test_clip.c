@@ -31,12 +31,20 @@ static fxl_xform_t make_xform(double near_, double far_)
     return xf;
 }
 
-static double dist(const fxl_xform_t *xf, int pl, const dvert_t *v)
+/* Reference: Sutherland-Hodgman in the clipper's plane order, each cut
+ * from the inside vertex, in long double: 64-bit mantissas, the exact
+ * polygon to the precision these tests need (the guard-plane cuts of long
+ * edges need more than double's). */
+typedef struct lvert {
+    long double x, y, w, u, v, r;
+} lvert_t;
+
+static long double ldist(const fxl_xform_t *xf, int pl, const lvert_t *v)
 {
-    double g = xf->guard_q16 / 65536.0;
+    const long double g = xf->guard_q16 / 65536.0L;
     switch (pl) {
-    case 0: return v->w - xf->near_q32 / Q32;
-    case 1: return xf->far_q32 / Q32 - v->w;
+    case 0: return v->w - xf->near_q32 / (long double)Q32;
+    case 1: return xf->far_q32 / (long double)Q32 - v->w;
     case 2: return g * v->w - v->x;
     case 3: return g * v->w + v->x;
     case 4: return g * v->w - v->y;
@@ -44,23 +52,23 @@ static double dist(const fxl_xform_t *xf, int pl, const dvert_t *v)
     }
 }
 
-/* Reference: same plane order, intersection from the inside vertex. */
-static int ref_clip(const fxl_xform_t *xf, const dvert_t in[3], dvert_t out[16])
+/* Clips the n-gon a in place (room for 16); returns its vertex count, 0
+ * when fewer than 3 are left. Coordinates in clip units (q32 / 2^32). */
+static int ref_clip_l(const fxl_xform_t *xf, lvert_t a[16], int n)
 {
-    dvert_t a[16], b[16];
-    int n = 3, pl, i;
-    memcpy(a, in, 3 * sizeof *in);
+    lvert_t b[16];
+    int pl, i;
     for (pl = 0; pl < 6; pl++) {
         int m = 0;
         if (pl == 1 && xf->far_q32 == 0) continue;
         for (i = 0; i < n; i++) {
-            const dvert_t *p = &a[i], *q = &a[(i + 1) % n];
-            double dp = dist(xf, pl, p), dq = dist(xf, pl, q);
+            const lvert_t *p = &a[i], *q = &a[(i + 1) % n];
+            const long double dp = ldist(xf, pl, p), dq = ldist(xf, pl, q);
             if (dp >= 0) b[m++] = *p;
             if ((dp >= 0) != (dq >= 0)) {
-                const dvert_t *in_ = dp >= 0 ? p : q, *out_ = dp >= 0 ? q : p;
-                double di = dp >= 0 ? dp : dq, dout = dp >= 0 ? dq : dp, t = di / (di - dout);
-                dvert_t r;
+                const lvert_t *in_ = dp >= 0 ? p : q, *out_ = dp >= 0 ? q : p;
+                const long double t = (dp >= 0 ? dp : dq) / fabsl(dp - dq);
+                lvert_t r;
                 r.x = in_->x + (out_->x - in_->x) * t;
                 r.y = in_->y + (out_->y - in_->y) * t;
                 r.w = in_->w + (out_->w - in_->w) * t;
@@ -74,7 +82,34 @@ static int ref_clip(const fxl_xform_t *xf, const dvert_t in[3], dvert_t out[16])
         n = m;
         if (n < 3) return 0;
     }
-    memcpy(out, a, (size_t)n * sizeof *a);
+    return n;
+}
+
+static lvert_t lvert_of(const dvert_t *d)
+{
+    lvert_t l;
+    l.x = d->x; l.y = d->y; l.w = d->w; l.u = d->u; l.v = d->v; l.r = d->r;
+    return l;
+}
+
+static double dist(const fxl_xform_t *xf, int pl, const dvert_t *v)
+{
+    const lvert_t l = lvert_of(v);
+    return (double)ldist(xf, pl, &l);
+}
+
+/* The reference on double vertices (results rounded to double). */
+static int ref_clip(const fxl_xform_t *xf, const dvert_t in[3], dvert_t out[16])
+{
+    lvert_t a[16];
+    int n, i;
+    for (i = 0; i < 3; i++)
+        a[i] = lvert_of(&in[i]);
+    n = ref_clip_l(xf, a, 3);
+    for (i = 0; i < n; i++) {
+        out[i].x = (double)a[i].x; out[i].y = (double)a[i].y; out[i].w = (double)a[i].w;
+        out[i].u = (double)a[i].u; out[i].v = (double)a[i].v; out[i].r = (double)a[i].r;
+    }
     return n;
 }
 
@@ -399,55 +434,6 @@ static void test_clip_near_cut_of_long_edges_is_exact(void)
     TEST_ASSERT_GREATER_THAN(2000, corners);
 }
 
-/* Long-double Sutherland-Hodgman of integer clip coordinates (near and
- * guard planes, far = 0), each cut from the inside vertex: the exact
- * polygon to the precision these tests need (64-bit mantissas). */
-typedef struct lvert {
-    long double x, y, w;
-} lvert_t;
-
-static long double ldist(const fxl_xform_t *xf, int pl, const lvert_t *v)
-{
-    const long double g = xf->guard_q16 / 65536.0L;
-    switch (pl) {
-    case 0: return v->w - (long double)xf->near_q32;
-    case 1: return g * v->w - v->x;
-    case 2: return g * v->w + v->x;
-    case 3: return g * v->w - v->y;
-    default: return g * v->w + v->y;
-    }
-}
-
-static int ref_clip_ld(const fxl_xform_t *xf, const fxl_clipvert_t in[3], lvert_t out[16])
-{
-    lvert_t b[16];
-    int n = 3, pl, i;
-    for (i = 0; i < 3; i++) {
-        out[i].x = (long double)in[i].x;
-        out[i].y = (long double)in[i].y;
-        out[i].w = (long double)in[i].w;
-    }
-    for (pl = 0; pl < 5 && n >= 3; pl++) {
-        int m = 0;
-        for (i = 0; i < n; i++) {
-            const lvert_t *p = &out[i], *q = &out[(i + 1) % n];
-            const long double dp = ldist(xf, pl, p), dq = ldist(xf, pl, q);
-            if (dp >= 0) b[m++] = *p;
-            if ((dp >= 0) != (dq >= 0)) {
-                const lvert_t *a = dp >= 0 ? p : q, *o = dp >= 0 ? q : p;
-                const long double t = (dp >= 0 ? dp : dq) / fabsl(dp - dq);
-                b[m].x = a->x + (o->x - a->x) * t;
-                b[m].y = a->y + (o->y - a->y) * t;
-                b[m].w = a->w + (o->w - a->w) * t;
-                m++;
-            }
-        }
-        memcpy(out, b, (size_t)m * sizeof *b);
-        n = m;
-    }
-    return n >= 3 ? n : 0;
-}
-
 /* Distance (px) of point (x, y) from segment a-b. */
 static long double seg_dist(long double ax, long double ay, long double bx, long double by, long double x, long double y)
 {
@@ -530,7 +516,13 @@ static void test_clip_guard_cut_of_long_edges_from_the_near_end(void)
             in[k].y = (int64_t)(rng_range(-1.5, 1.5) * (double)in[k].w);
         }
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
-        rn = ref_clip_ld(&xf, in, ref);
+        for (k = 0; k < 3; k++) {
+            ref[k].x = in[k].x / (long double)Q32;
+            ref[k].y = in[k].y / (long double)Q32;
+            ref[k].w = in[k].w / (long double)Q32;
+            ref[k].u = ref[k].v = ref[k].r = 0;
+        }
+        rn = ref_clip_l(&xf, ref, 3);
         {
             long double fs[2 * FXL_CLIP_MAX_VERTS], rs[32], e;
             for (m = 0; m < n; m++) {
