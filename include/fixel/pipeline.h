@@ -357,8 +357,9 @@ fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec
 fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out);
 /* Sutherland-Hodgman against near, far (if set) and the guard band, in that
  * order; attributes interpolated linearly in clip space. Each intersection
- * is computed from the inside vertex, so an edge shared by two triangles is
- * cut at the same point in both (watertight). *n = 0 when nothing is left.
+ * is interpolated from the edge's end nearer the plane (the inside one on
+ * a tie), a choice made from the two plane distances alone, so an edge
+ * shared by two triangles is cut at the same point in both (watertight). *n = 0 when nothing is left.
  * in may overlap out (in[0..2] = out[0..2] is fine): it is read first. out
  * is also the clipper's work space: whatever the result, out[*n..] (all of
  * out when *n = 0, after an error too) holds no defined values.
