@@ -233,31 +233,52 @@ static fxl_status_t normalize_q30(const int64_t in[3], int64_t out[3])
     return FXL_OK;
 }
 
+/* out = a x b, each product floor-shifted by pre before the difference
+ * and the difference rounded by post (fxl__shr_round). The caller keeps
+ * every product below 2^63 and the shifted differences inside int64. */
+static void cross_shr(const int64_t a[3], const int64_t b[3], unsigned pre, unsigned post, int64_t out[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        const int j = i == 2 ? 0 : i + 1, k = i == 0 ? 2 : i - 1;
+        out[i] = fxl__shr_round(fxl__asr(a[j] * b[k], pre) - fxl__asr(a[k] * b[j], pre), post);
+    }
+}
+
 fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
                               const fxl_vec3_t *up)
 {
-    int64_t f[3], u0[3], s[3], u[3], e[3], tmp[3];
+    int64_t f[3], u0[3], s[3], u[3], e[3], d[3], w[3], tmp[3];
     int64_t t[3];
+    uint64_t dmag = 0, wmag = 0;
     int i, ovf = 0;
     fxl_status_t st;
     if (!m || !eye || !center || !up) return FXL_ERR_ARG;
     e[0] = eye->x; e[1] = eye->y; e[2] = eye->z;
-    tmp[0] = (int64_t)center->x - eye->x;
-    tmp[1] = (int64_t)center->y - eye->y;
-    tmp[2] = (int64_t)center->z - eye->z;
-    if ((st = normalize_q30(tmp, f)) != FXL_OK) return st;
-    tmp[0] = up->x; tmp[1] = up->y; tmp[2] = up->z;
-    if ((st = normalize_q30(tmp, u0)) != FXL_OK) return st;
-    /* s = f x up (q60 products -> q30); nearly parallel vectors give a
-     * short s: refuse below sin(angle) = 2^-16. */
-    tmp[0] = fxl__shr_round(f[1] * u0[2] - f[2] * u0[1], 30);
-    tmp[1] = fxl__shr_round(f[2] * u0[0] - f[0] * u0[2], 30);
-    tmp[2] = fxl__shr_round(f[0] * u0[1] - f[1] * u0[0], 30);
+    d[0] = (int64_t)center->x - eye->x;
+    d[1] = (int64_t)center->y - eye->y;
+    d[2] = (int64_t)center->z - eye->z;
+    w[0] = up->x; w[1] = up->y; w[2] = up->z;
+    if ((st = normalize_q30(d, f)) != FXL_OK) return st;
+    if ((st = normalize_q30(w, u0)) != FXL_OK) return st;
+    /* Nearly parallel vectors give a short f x up (q60 products -> q30):
+     * refuse below sin(angle) = 2^-16. */
+    cross_shr(f, u0, 0, 30, tmp);
     if (fxl__mag64(tmp[0]) + fxl__mag64(tmp[1]) + fxl__mag64(tmp[2]) < ((uint64_t)1 << 14)) return FXL_ERR_RANGE;
+    /* s from the inputs themselves, (center - eye) x up in integers: f and
+     * up rounded to q30 and then crossed erred by a few 2^-30 / sin(angle)
+     * (8.5 q16 units of the rotation near the limit, and that times |eye|
+     * in the translation). |d| < 2^32 and |up| <= 2^31: each product is
+     * below 2^63, and a difference of two below 2^63 unless some |d| >= 2^31
+     * and some |up| >= 2^30; then the products are halved first (a unit of
+     * 2 off where |s| >= 2^31 2^30 sin(angle) >= 2^45: 2^-44). */
+    for (i = 0; i < 3; i++) {
+        dmag |= fxl__mag64(d[i]);
+        wmag |= fxl__mag64(w[i]);
+    }
+    cross_shr(d, w, (dmag >> 31) && (wmag >> 30), 0, tmp);
     if ((st = normalize_q30(tmp, s)) != FXL_OK) return st;
-    u[0] = fxl__shr_round(s[1] * f[2] - s[2] * f[1], 30);
-    u[1] = fxl__shr_round(s[2] * f[0] - s[0] * f[2], 30);
-    u[2] = fxl__shr_round(s[0] * f[1] - s[1] * f[0], 30);
+    cross_shr(s, f, 0, 30, u);
     /* eye q16 * unit q30: |product| < 2^61, the three-term sum < 2^63. */
     t[0] = -fxl__shr_round(s[0] * e[0] + s[1] * e[1] + s[2] * e[2], 30);
     t[1] = -fxl__shr_round(u[0] * e[0] + u[1] * e[1] + u[2] * e[2], 30);

@@ -434,43 +434,58 @@ static void test_perspective_every_fovy_within_derived_bound(void)
     TEST_ASSERT_EQUAL_UINT32(32767u, ok);
 }
 
+/* gluLookAt in double from the q16 inputs as given: the rows s, u, -f and
+ * the translation. Returns sin(angle between up and the view direction). */
+static double look_at_ref(const fxl_vec3_t *fe, const fxl_vec3_t *fc, const fxl_vec3_t *fu, double want[3][4])
+{
+    double e[3], f[3], up[3], s[3], u[3], len, upl;
+    int k;
+    e[0] = q16d(fe->x); e[1] = q16d(fe->y); e[2] = q16d(fe->z);
+    f[0] = q16d(fc->x) - e[0]; f[1] = q16d(fc->y) - e[1]; f[2] = q16d(fc->z) - e[2];
+    up[0] = q16d(fu->x); up[1] = q16d(fu->y); up[2] = q16d(fu->z);
+    len = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (k = 0; k < 3; k++) f[k] /= len;
+    upl = sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+    s[0] = f[1] * up[2] - f[2] * up[1]; s[1] = f[2] * up[0] - f[0] * up[2];
+    s[2] = f[0] * up[1] - f[1] * up[0];
+    len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    for (k = 0; k < 3; k++) s[k] /= len;
+    u[0] = s[1] * f[2] - s[2] * f[1]; u[1] = s[2] * f[0] - s[0] * f[2];
+    u[2] = s[0] * f[1] - s[1] * f[0];
+    for (k = 0; k < 3; k++) { want[0][k] = s[k]; want[1][k] = u[k]; want[2][k] = -f[k]; }
+    want[0][3] = -(s[0] * e[0] + s[1] * e[1] + s[2] * e[2]);
+    want[1][3] = -(u[0] * e[0] + u[1] * e[1] + u[2] * e[2]);
+    want[2][3] = f[0] * e[0] + f[1] * e[1] + f[2] * e[2];
+    return len / upl;
+}
+
+/* Largest |m - want| over the rotation entries (rot) and translations (t). */
+static void look_at_err(const fxl_mat4_t *m, double want[3][4], double *rot, double *t)
+{
+    int r, k;
+    for (r = 0; r < 3; r++) {
+        for (k = 0; k < 3; k++) {
+            double er = fabs(q16d(m->m[r][k]) - want[r][k]);
+            if (er > *rot) *rot = er;
+        }
+        if (fabs(q16d(m->m[r][3]) - want[r][3]) > *t) *t = fabs(q16d(m->m[r][3]) - want[r][3]);
+    }
+}
+
 static void test_look_at_matches_double(void)
 {
     int i;
     double max_rot = 0, max_t = 0;
     rng_seed(5);
     for (i = 0; i < 2000; i++) {
-        double e[3], c[3], up[3] = {0, 1, 0}, f[3], s[3], u[3], len, want[3][4];
+        double want[3][4];
         fxl_vec3_t fe, fc, fu = {0, FXL_Q16_ONE, 0};
         fxl_mat4_t m;
-        int k, r;
-        for (k = 0; k < 3; k++) { e[k] = rng_range(-500, 500); c[k] = rng_range(-500, 500); }
-        fe.x = dq16(e[0]); fe.y = dq16(e[1]); fe.z = dq16(e[2]);
-        fc.x = dq16(c[0]); fc.y = dq16(c[1]); fc.z = dq16(c[2]);
-        e[0] = q16d(fe.x); e[1] = q16d(fe.y); e[2] = q16d(fe.z);
-        c[0] = q16d(fc.x); c[1] = q16d(fc.y); c[2] = q16d(fc.z);
-        for (k = 0; k < 3; k++) f[k] = c[k] - e[k];
-        len = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-        for (k = 0; k < 3; k++) f[k] /= len;
-        s[0] = f[1] * up[2] - f[2] * up[1]; s[1] = f[2] * up[0] - f[0] * up[2];
-        s[2] = f[0] * up[1] - f[1] * up[0];
-        len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-        if (len < 0.05) continue;
-        for (k = 0; k < 3; k++) s[k] /= len;
-        u[0] = s[1] * f[2] - s[2] * f[1]; u[1] = s[2] * f[0] - s[0] * f[2];
-        u[2] = s[0] * f[1] - s[1] * f[0];
-        for (k = 0; k < 3; k++) { want[0][k] = s[k]; want[1][k] = u[k]; want[2][k] = -f[k]; }
-        want[0][3] = -(s[0] * e[0] + s[1] * e[1] + s[2] * e[2]);
-        want[1][3] = -(u[0] * e[0] + u[1] * e[1] + u[2] * e[2]);
-        want[2][3] = f[0] * e[0] + f[1] * e[1] + f[2] * e[2];
+        fe.x = dq16(rng_range(-500, 500)); fe.y = dq16(rng_range(-500, 500)); fe.z = dq16(rng_range(-500, 500));
+        fc.x = dq16(rng_range(-500, 500)); fc.y = dq16(rng_range(-500, 500)); fc.z = dq16(rng_range(-500, 500));
+        if (look_at_ref(&fe, &fc, &fu, want) < 0.05) continue;
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_look_at(&m, &fe, &fc, &fu));
-        for (r = 0; r < 3; r++) {
-            for (k = 0; k < 3; k++) {
-                double er = fabs(q16d(m.m[r][k]) - want[r][k]);
-                if (er > max_rot) max_rot = er;
-            }
-            if (fabs(q16d(m.m[r][3]) - want[r][3]) > max_t) max_t = fabs(q16d(m.m[r][3]) - want[r][3]);
-        }
+        look_at_err(&m, want, &max_rot, &max_t);
     }
     printf("look_at max error: rotation %.3g, translation %.3g\n", max_rot, max_t);
     /* Rotation: q30 unit vectors (a few 2^-30) rounded to q16: <= 2^-17 +
@@ -478,12 +493,108 @@ static void test_look_at_matches_double(void)
      * three terms, plus 2^-17 rounding: < 2^-17 + 3 * 870 * 2^-28 < 2^-16. */
     TEST_ASSERT_TRUE(max_rot <= ldexp(1, -17) + ldexp(1, -26));
     TEST_ASSERT_TRUE(max_t < ldexp(1, -16));
+    /* The q16 range's extremes: center at a corner, eye halfway to the
+     * opposite one, up as long as q16 allows, any direction (the cross
+     * product's terms near 2^63 and their differences beyond). */
+    max_rot = max_t = 0;
+    for (i = 0; i < 2000; i++) {
+        double want[3][4];
+        fxl_vec3_t fe, fc, fu;
+        fxl_mat4_t m;
+        /* |eye| < 2^15 (the translations fit q16), center - eye up to
+         * 49,150 units a component */
+        fe.x = (rng_next() & 1) ? 16383 * 65536 : -16383 * 65536;
+        fe.y = (rng_next() & 1) ? 16383 * 65536 : -16383 * 65536;
+        fe.z = dq16(rng_range(-16383, 16383));
+        fc.x = fe.x > 0 ? -32767 * 65536 : 32767 * 65536;
+        fc.y = fe.y > 0 ? -32767 * 65536 : 32767 * 65536;
+        fc.z = dq16(rng_range(-32767, 32767));
+        fu.x = dq16(rng_range(-32767, 32767)); fu.y = dq16(rng_range(-32767, 32767)); fu.z = dq16(rng_range(-32767, 32767));
+        if (look_at_ref(&fe, &fc, &fu, want) < 0.05) continue;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_look_at(&m, &fe, &fc, &fu));
+        look_at_err(&m, want, &max_rot, &max_t);
+    }
+    printf("look_at at the q16 range's corners: rotation %.3g, translation %.3g\n", max_rot, max_t);
+    TEST_ASSERT_TRUE(max_rot <= ldexp(1, -17) + ldexp(1, -26));
+    TEST_ASSERT_TRUE(max_t < ldexp(1, -17) + 3.0 * 32768.0 * sqrt(3.0) * ldexp(1, -28));
     {
         fxl_mat4_t m;
         fxl_vec3_t a = {0, 0, 0}, up = {0, FXL_Q16_ONE, 0}, above = {0, FXL_Q16_INT(3), 0};
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &a, &a, &up));
         TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &a, &above, &up));
     }
+}
+
+/* up nearly along the view direction, at angles from 2^-15 to 2^-3 rad
+ * (refused only below ~2^-16), with view vectors and up of any length the
+ * q16 inputs allow: the rotation keeps the bound of the well-conditioned
+ * case above. Crossing f and up after rounding each to q30 erred by a few
+ * 2^-30 / sin(angle): up to 8.5 q16 units near 2^-16. The translation's
+ * bound grows with |eye| (components up to 2^15 here) as in the test
+ * above: 2^-17 + 3 |eye| 2^-28. */
+static void test_look_at_up_near_the_view_direction(void)
+{
+    int i, n = 0;
+    double max_rot = 0, max_t = 0, min_sin = 1;
+    rng_seed(77);
+    for (i = 0; i < 4000; i++) {
+        double want[3][4], d[3], p[3], len, pl, th, dl, ul, sn;
+        fxl_vec3_t fe, fc, fu;
+        fxl_mat4_t m;
+        fxl_status_t st;
+        int k;
+        /* view vector of length 2^-4 .. 2^14 units, eye within 2^14; every
+         * fourth case center at the q16 range's edge and eye halfway to the
+         * opposite one (center - eye up to 1.5 2^31 q16 units, up 2^31) */
+        for (k = 0; k < 3; k++) d[k] = rng_range(-1, 1);
+        len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (len < 0.1) continue;
+        if (i % 4 == 3) {
+            const double c = 32767.0 / (fabs(d[0]) > fabs(d[1]) ? (fabs(d[0]) > fabs(d[2]) ? fabs(d[0]) : fabs(d[2]))
+                                                                 : (fabs(d[1]) > fabs(d[2]) ? fabs(d[1]) : fabs(d[2])));
+            fe.x = dq16(-d[0] * c / 2); fe.y = dq16(-d[1] * c / 2); fe.z = dq16(-d[2] * c / 2);
+            fc.x = dq16(d[0] * c); fc.y = dq16(d[1] * c); fc.z = dq16(d[2] * c);
+        } else {
+            dl = ldexp(1, -4 + (int)(rng_next() % 18)) * rng_range(1, 2);
+            fe.x = dq16(rng_range(-16384, 16384)); fe.y = dq16(rng_range(-16384, 16384)); fe.z = dq16(rng_range(-16384, 16384));
+            fc.x = fe.x + dq16(d[0] / len * dl); fc.y = fe.y + dq16(d[1] / len * dl); fc.z = fe.z + dq16(d[2] / len * dl);
+        }
+        /* up = unit(d) cos(th) + unit(p) sin(th), p perpendicular to d, of
+         * length 2^-2 .. 2^14 (q16 rounding tilts it by < 2^-17 rad) */
+        for (k = 0; k < 3; k++) p[k] = rng_range(-1, 1);
+        pl = (p[0] * d[0] + p[1] * d[1] + p[2] * d[2]) / (len * len);
+        for (k = 0; k < 3; k++) p[k] -= pl * d[k];
+        pl = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        if (pl < 0.1) continue;
+        th = ldexp(1, -15 + (int)(rng_next() % 12)) * rng_range(1, 2);
+        ul = i % 4 == 3 ? 32767.0 : ldexp(1, -2 + (int)(rng_next() % 16)) * rng_range(1, 2);
+        fu.x = dq16(ul * (cos(th) * d[0] / len + sin(th) * p[0] / pl));
+        fu.y = dq16(ul * (cos(th) * d[1] / len + sin(th) * p[1] / pl));
+        fu.z = dq16(ul * (cos(th) * d[2] / len + sin(th) * p[2] / pl));
+        if (rng_next() & 1) { fu.x = -fu.x; fu.y = -fu.y; fu.z = -fu.z; }
+        sn = look_at_ref(&fe, &fc, &fu, want);
+        {
+            st = fxl_mat4_look_at(&m, &fe, &fc, &fu);
+            snprintf(msg, sizeof msg, "case %d: sin %.3g status %d", i, sn, (int)st);
+            if (sn < ldexp(1, -15)) continue;   /* near the refusal limit: either status */
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, st, msg);
+            if (sn < min_sin) min_sin = sn;
+        }
+        {
+            double rot = 0, t = 0;
+            look_at_err(&m, want, &rot, &t);
+            snprintf(msg, sizeof msg, "case %d: sin %.3g: rotation error %.3g (q16 units %.2f), translation %.3g", i,
+                     sn, rot, rot * 65536.0, t);
+            TEST_ASSERT_TRUE_MESSAGE(rot <= ldexp(1, -17) + ldexp(1, -26), msg);
+            TEST_ASSERT_TRUE_MESSAGE(t < ldexp(1, -17) + 3.0 * 32768.0 * sqrt(3.0) * ldexp(1, -28), msg);
+            if (rot > max_rot) max_rot = rot;
+            if (t > max_t) max_t = t;
+        }
+        n++;
+    }
+    printf("look_at, up near the view direction: %d cases, sin down to %.3g: max error rotation %.3g, "
+           "translation %.3g\n", n, min_sin, max_rot, max_t);
+    TEST_ASSERT_TRUE(n > 3000);
 }
 
 /* ---- projection accuracy target ------------------------------------------- */
@@ -1302,6 +1413,7 @@ int main(void)
     RUN_TEST(test_perspective_matches_glu_formula);
     RUN_TEST(test_perspective_every_fovy_within_derived_bound);
     RUN_TEST(test_look_at_matches_double);
+    RUN_TEST(test_look_at_up_near_the_view_direction);
     RUN_TEST(test_projection_accuracy_target_random_meshes);
     RUN_TEST(test_project_rejects_w_at_or_behind_near);
     RUN_TEST(test_project_packs_channels_rounded_and_clamped);

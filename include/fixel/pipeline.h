@@ -107,13 +107,10 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
 void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 /* Right-handed view matrix (gluLookAt). FXL_ERR_RANGE when eye == center,
- * up is parallel to the view direction, or the translation overflows. The
- * side vector is the cross product of the view direction and up after
- * each is rounded to q30, so with up within ~2^-10 rad of the view
- * direction (still accepted down to ~2^-16) the rotation entries err by
- * a few times 2^-30 / sin(angle) (a review measured 8.5 q16 units near
- * the limit) where elsewhere they keep 2^-17 + 2^-26: keep up well away
- * from the view direction. */
+ * up is within ~2^-16 rad of the view direction (or opposite it), or the
+ * translation overflows. The side vector is (center - eye) x up computed
+ * exactly from the q16 inputs, so the rotation entries keep 2^-17 + 2^-26
+ * and the translations 2^-17 + 3 |eye| 2^-28 at any accepted angle. */
 fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
                               const fxl_vec3_t *up);
 /* OpenGL-style perspective (gluPerspective): vertical field of view
