@@ -173,15 +173,15 @@ static inline int32_t fxl__asr64_to_i32(int64_t x, int k)
 }
 
 /* floor((2^32 - 1) / d) for d in (2^15, 2^16]: fxl__recip's first
- * estimate. Cores without a divide instruction (ARMv6-M: with
- * FXL__MUL_HALVES, -O2) call __aeabi_uidiv for it, ~130 instructions a
- * correction point; instead a table (d's top bits) gives an estimate q0
- * at most ~510 below the quotient, one product with q0 as 1/d refines it
- * from below to within 2 (underestimates all the way, so the remainder
- * stays non-negative), and at most two steps correct it: the exact
- * quotient (test_fixed checks every d). */
+ * estimate. Cores without a divide instruction (ARMv6-M) call
+ * __aeabi_uidiv for it, ~130 instructions a correction point. With
+ * FXL_DIV_TABLE (config.h; on in their -O2 builds) a table (d's top bits)
+ * gives an estimate q0 at most ~510 below the quotient, one product with
+ * q0 as 1/d refines it from below to within 2 (underestimates all the
+ * way, so the remainder stays non-negative), and at most two steps
+ * correct it: the exact quotient (test_fixed checks every d). */
 #ifndef FXL__DIV_TABLE
-#define FXL__DIV_TABLE FXL__MUL_HALVES
+#define FXL__DIV_TABLE FXL_DIV_TABLE
 #endif
 extern const uint16_t fxl__div_ffffffff_q0[256];   /* persp.c, where used */
 static inline uint32_t fxl__div_ffffffff(uint32_t d)

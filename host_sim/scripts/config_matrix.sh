@@ -42,6 +42,7 @@ configs=(
     "no-fast-mip:-DFXL_FAST_MIP=0"
     "no-fast-at-all:-DFXL_FAST_NATIVE=0 -DFXL_FAST_SWAPPED=0"
     "small-div-hw:-DFXL_SMALL_DIV64_HW=1"
+    "div-table:-DFXL_DIV_TABLE=1"
     "tint:-DFXL_FAST_TINT=1"
     "tint-panel:-DFXL_FAST_TINT=1 -DFXL_FAST_NATIVE=0 -DFXL_FAST_NO_DEPTH=0 -DFXL_FAST_MIP=0"
     "tint-native:-DFXL_FAST_TINT=1 -DFXL_FAST_SWAPPED=0 -DFXL_FAST_BILINEAR=0"

@@ -156,6 +156,21 @@
 #define FXL_SMALL_DIV64_HW 0
 #endif
 
+/* The perspective reciprocal's first estimate (src/persp.h, every
+ * correction point) from a 512-byte table and one multiply instead of a
+ * 32-bit division, for cores without a divide instruction (Cortex-M0/M0+:
+ * the division is a libgcc call, ~130 instructions). Identical results.
+ * Default: on in ARMv6-M speed builds, off elsewhere. Cortex-M0+ -Os with
+ * it: +560 B, the cube (subdiv16, point) -6.8% instructions. Pointless on
+ * cores that divide in hardware. */
+#ifndef FXL_DIV_TABLE
+#if defined(__ARM_ARCH_6M__) && !defined(__OPTIMIZE_SIZE__)
+#define FXL_DIV_TABLE 1
+#else
+#define FXL_DIV_TABLE 0
+#endif
+#endif
+
 /* Largest texture side is 1 << FXL_TEX_MAX_LOG2 texels. */
 #ifndef FXL_TEX_MAX_LOG2
 #define FXL_TEX_MAX_LOG2 12
