@@ -195,6 +195,11 @@ EOF
  * core's divide instruction (config.h). */
 #define FXL_SMALL_DIV64_HW 1
 EOF
+    cat >"$sizew/table_config.h" <<'EOF'
+/* Every feature; the reciprocal's first estimate from a table instead of a
+ * 32-bit division (config.h), as ARMv6-M -O2 builds take it. */
+#define FXL_DIV_TABLE 1
+EOF
     {
         echo "# Core footprint in bytes, $(date -u +%Y-%m-%d). archive: arm-none-eabi-size (rv32imac:"
         echo "# riscv64-unknown-elf-size) of libfixel.a"
@@ -206,6 +211,8 @@ EOF
         echo "# (FXL_FAST_NATIVE 0, FXL_FAST_NO_DEPTH 0): what one SPI-panel product keeps."
         echo "# hwdiv (-Os only) = every feature with FXL_SMALL_DIV64_HW 1: set-up's 32-bit divisors by the"
         echo "# core's divide instruction (the M0+ has none: the same code as full there)."
+        echo "# table (-Os only) = every feature with FXL_DIV_TABLE 1: the reciprocal's estimate from a"
+        echo "# 512-byte table, for cores without a divide instruction (ARMv6-M -O2 builds have it)."
         echo "# linked -1: that configuration did not link (see build-bench-size/*/link.log)."
         printf '%-14s %-4s %-5s %9s %6s %6s %9s %8s\n' cpu opt cfg archive data bss linked runtime
         cpus=(cortex-m0plus cortex-m4)
@@ -221,7 +228,7 @@ EOF
             fi
             for opt in -Os -O2; do
                 cfgs=(full min panel)
-                [ "$opt" = -Os ] && cfgs+=(hwdiv)
+                [ "$opt" = -Os ] && cfgs+=(hwdiv table)
                 for cfg in "${cfgs[@]}"; do
                     d="$root/$sizew/${cpu#cortex-}$opt-$cfg"
                     # From scratch: bench/Makefile's objects do not depend on
