@@ -267,11 +267,12 @@ fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_ve
     if (fxl__mag64(tmp[0]) + fxl__mag64(tmp[1]) + fxl__mag64(tmp[2]) < ((uint64_t)1 << 14)) return FXL_ERR_RANGE;
     /* s from the inputs themselves, (center - eye) x up in integers: f and
      * up rounded to q30 and then crossed erred by a few 2^-30 / sin(angle)
-     * (8.5 q16 units of the rotation near the limit, and that times |eye|
-     * in the translation). |d| < 2^32 and |up| <= 2^31: each product is
-     * below 2^63, and a difference of two below 2^63 unless some |d| >= 2^31
-     * and some |up| >= 2^30; then the products are halved first (a unit of
-     * 2 off where |s| >= 2^31 2^30 sin(angle) >= 2^45: 2^-44). */
+     * (up to 10 q16 units of the rotation near the limit, and that times
+     * |eye| in the translation). |d| < 2^32 and |up| <= 2^31: each product
+     * is below 2^63, and a difference of two below 2^63 unless some |d| >=
+     * 2^31 and some |up| >= 2^30; then the products are halved first (floor
+     * shifts of integers: at most one unit of the products off, where |s| >=
+     * 2^31 2^30 sin(angle) > 2^44 for the angles accepted: < 2^-44). */
     for (i = 0; i < 3; i++) {
         dmag |= fxl__mag64(d[i]);
         wmag |= fxl__mag64(w[i]);

@@ -161,8 +161,8 @@
  * 32-bit division, for cores without a divide instruction (Cortex-M0/M0+:
  * the division is a libgcc call, ~130 instructions). Identical results.
  * Default: on in ARMv6-M speed builds, off elsewhere. Cortex-M0+ -Os with
- * it: +560 B, the cube (subdiv16, point) -6.8% instructions. Pointless on
- * cores that divide in hardware. */
+ * it: +558 B linked, the cube (subdiv16, point) -6.8% instructions.
+ * Pointless on cores that divide in hardware. */
 #ifndef FXL_DIV_TABLE
 #if defined(__ARM_ARCH_6M__) && !defined(__OPTIMIZE_SIZE__)
 #define FXL_DIV_TABLE 1

@@ -107,8 +107,8 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
 void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 /* Right-handed view matrix (gluLookAt). FXL_ERR_RANGE when eye == center,
- * up is within ~2^-16 rad of the view direction (or opposite it), or the
- * translation overflows. The side vector is (center - eye) x up computed
+ * up is zero or within ~2^-16 rad of the view direction (or opposite it),
+ * or the translation overflows. The side vector is (center - eye) x up computed
  * exactly from the q16 inputs, so the rotation entries keep 2^-17 + 2^-26
  * and the translations 2^-17 + 3 |eye| 2^-28 at any accepted angle. */
 fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
