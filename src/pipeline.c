@@ -549,9 +549,14 @@ int fxl__xform_ok(const fxl_xform_t *xf)
     if (xf->cx_q16 < -centre_max || xf->cx_q16 > centre_max || xf->cy_q16 < -centre_max ||
         xf->cy_q16 > centre_max)
         return 0;
-    /* G * half <= FXL_GUARD_PX pixels (q16 * q16: < 2^24 * 2^28) */
+    /* G * half <= FXL_GUARD_PX pixels (q16 * q16: < 2^24 * 2^28). G >= 1
+     * (prepare gives 4 or more): the clipper's cut points are off their
+     * earlier planes by a few units of the q32 clip coordinates, which is
+     * below 2^-10 G w (to_screen's tolerance) only while G w >= 2^16 units
+     * (w >= near >= 2^16); a hand-made G of 2^-16 .. 2^-7 left clipped
+     * vertices that fxl_xform_project refused. */
     half = xf->hw_q16 > xf->hh_q16 ? xf->hw_q16 : xf->hh_q16;
-    return xf->guard_q16 > 0 && xf->guard_q16 <= ((int32_t)FXL_GUARD_MAX << 16) &&
+    return xf->guard_q16 >= 65536 && xf->guard_q16 <= ((int32_t)FXL_GUARD_MAX << 16) &&
            (int64_t)xf->guard_q16 * half <= ((int64_t)FXL_GUARD_PX << 32);
 }
 

@@ -137,9 +137,9 @@ int64_t fxl__add_sat(int64_t a, int64_t b, int *ovf);
 /* Clamp to int32 and set *ovf when clamped. */
 int32_t fxl__to_i32(int64_t x, int *ovf);
 /* Is xf within the ranges fxl_pipeline_prepare gives its fields (near in
- * [2^-16, 2^31) units, far 0 or beyond near, 0 < G, G times the larger half
- * size at most FXL_GUARD_PX, viewport centre and half sizes within the
- * target limits)? fxl_xform_project and fxl_clip_triangle refuse a
+ * [2^-16, 2^15) units, far 0 or beyond near, 1 <= G <= FXL_GUARD_MAX, G
+ * times the larger half size at most FXL_GUARD_PX, viewport centre and
+ * half sizes within the target limits)? fxl_xform_project and fxl_clip_triangle refuse a
  * hand-filled xf outside them: their shifts and sums rely on them. */
 int fxl__xform_ok(const fxl_xform_t *xf);
 /* fxl_clip_triangle for an xf known good (the mesh path's, from

@@ -725,6 +725,62 @@ static void test_clip_output_within_guard_band_and_projectable(void)
     }
 }
 
+/* The smallest guard band an xf may have, G = 1 (prepare gives 4 or
+ * more): the cut points' rounding, a few units of the q32 coordinates off
+ * the planes cut before, stays below fxl_xform_project's 2^-10 G w
+ * tolerance because G w >= near >= 2^16 units. Triangles at all scales
+ * from the smallest near plane, with vertices behind the eye and long
+ * edges: every clipped vertex projects. Below G = 1 that failed (a hand-
+ * made G of 2^-16 .. 2^-7, a review's search), and such an xf is refused. */
+static void test_clip_smallest_guard_band_output_projects(void)
+{
+    fxl_xform_t xf = make_xform(1.0 / 65536, 0);
+    int i, polys = 0;
+    xf.guard_q16 = 65536;
+    rng_seed(4242);
+    for (i = 0; i < 20000; i++) {
+        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+        uint32_t n, k;
+        const double scale = ldexp(1, -16 + (int)(rng_next() % 28));
+        for (k = 0; k < 3; k++) {
+            dvert_t d = {0, 0, 0, 0, 0, 0};
+            d.w = scale * rng_range(-0.5, 2.0);
+            d.x = scale * rng_range(-4, 4);
+            d.y = scale * rng_range(-4, 4);
+            in[k] = to_fixed(&d);
+        }
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+        for (k = 0; k < n; k++) {
+            fxl_vertex_t v;
+            snprintf(msg, sizeof msg, "case %d vertex %u: x %lld y %lld w %lld", i, (unsigned)k, (long long)out[k].x,
+                     (long long)out[k].y, (long long)out[k].w);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, fxl_xform_project(&xf, &out[k], &v), msg);
+        }
+        polys += n > 0;
+    }
+    printf("smallest guard band: %d of 20000 triangles left a polygon, every vertex projected\n", polys);
+    TEST_ASSERT_TRUE(polys > 5000);
+    {
+        /* the review's case at G = 2^-16: now refused as an xf */
+        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+        uint32_t n = 9;
+        memset(&xf, 0, sizeof xf);
+        memset(in, 0, sizeof in);
+        xf.near_q32 = 65537;
+        xf.far_q32 = 38879914703606LL;
+        xf.hw_q16 = 36779070;
+        xf.hh_q16 = 134217728;
+        xf.cx_q16 = 1207959552;
+        xf.cy_q16 = 1207959550;
+        xf.guard_q16 = 1;
+        in[0].x = 3; in[0].y = -3; in[0].w = 38879914703605LL;
+        in[1].x = 3; in[1].y = -3; in[1].w = -3;
+        in[2].x = 817901; in[2].y = 1065841; in[2].w = 65537;
+        TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_clip_triangle(&xf, in, out, &n));
+        TEST_ASSERT_EQUAL_UINT32(0, n);
+    }
+}
+
 static void test_clip_arguments(void)
 {
     fxl_xform_t xf = make_xform(1, 0);
@@ -752,6 +808,7 @@ int main(void)
     RUN_TEST(test_clip_rounding_surplus_vertices_are_dropped_not_refused);
     RUN_TEST(test_clip_shared_edge_cut_identically);
     RUN_TEST(test_clip_output_within_guard_band_and_projectable);
+    RUN_TEST(test_clip_smallest_guard_band_output_projects);
     RUN_TEST(test_clip_arguments);
     return UNITY_END();
 }

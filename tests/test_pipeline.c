@@ -824,7 +824,7 @@ static void test_project_and_clip_refuse_a_hand_filled_xform_out_of_range(void)
         tri[k] = c;
     tri[1].x = c.w / 2;
     tri[2].y = c.w / 2;
-    for (k = 0; k < 12; k++) {
+    for (k = 0; k < 13; k++) {
         xf = ok;
         switch (k) {
         case 0: xf.near_q32 = 1; break;
@@ -838,6 +838,7 @@ static void test_project_and_clip_refuse_a_hand_filled_xform_out_of_range(void)
         case 8: xf.hw_q16 = 0; break;
         case 9: xf.hh_q16 = (int64_t)FXL_TARGET_MAX_DIM * 32768 + 1; break;
         case 10: xf.cx_q16 = INT64_MIN; break;
+        case 11: xf.guard_q16 = 65535; break; /* G below 1 */
         default: xf.cy_q16 = ((int64_t)2 * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM) * 32768 + 1; break;
         }
         c.w = xf.near_q32 > 0 && xf.near_q32 < ((int64_t)1 << 50) ? xf.near_q32 : (int64_t)1 << 33;

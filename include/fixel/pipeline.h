@@ -349,8 +349,8 @@ fxl_status_t fxl_xform_eye(const fxl_xform_t *xf, const fxl_vec3_t *pos, fxl_vec
  * ranges fxl_pipeline_prepare gives: near in [2^-16, 2^15 - 2^-16] (q32:
  * [2^16, 2^47 - 2^16]), far 0 or beyond near and at most 2^15 - 2^-16, half
  * sizes in [0.5, FXL_TARGET_MAX_DIM / 2] px, centres within
- * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM / 2 px, 0 < G <= FXL_GUARD_MAX
- * with G times the larger half size <= FXL_GUARD_PX. */
+ * FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM / 2 px, 1 <= G <= FXL_GUARD_MAX
+ * with G times the larger half size <= FXL_GUARD_PX (prepare gives G >= 4). */
 fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, fxl_vertex_t *out);
 /* Sutherland-Hodgman against near, far (if set) and the guard band, in that
  * order; attributes interpolated linearly in clip space. Each intersection
