@@ -8,8 +8,9 @@
  * 2 x 10^7 under ASan+UBSan, 10^5 libFuzzer runs) have found nothing in the
  * core, so the table holds the seed inputs below (edge byte patterns and
  * random cases covering the error paths) plus hand-made extreme cases. Check
- * 7 (texel values against each mode's error bound) found two core defects,
- * one on level 0 and one in the per-triangle LOD: the last two entries. Add
+ * 7 (texel values against each mode's error bound) found core defects (the
+ * entries that say "Fixed") and places where its reference was narrower
+ * than the documented contract (the last two entries). Add
  * every future finding here with the bytes printed by fixel-fuzz ("FINDING
  * ... bytes <hex>"). A change to the decoder must keep every input here decoding as before (the level-row
  * vertex layout, for one, skips the layout bytes these inputs use).
@@ -179,7 +180,25 @@ static const replay_t replays[] = {
          "2ece7cd78a8aa5340c918abc9d4bf00d303d5e13b4f3ffac818b8205076e13d7"
          "487f6312e5975e17a595fa856bfd830f3e0f317aa0716c2a4cd41ffe8d9787e3"
          "b2d67c5e5e0d7760d5724c2e5820fa38b75235655bb521b8df6545e595c7d05b",
-     FXL_OK, 467}
+     FXL_OK, 467},
+    /* Check 7 (seed 1 case 123457080563, a review's run): u of 0, -3 and
+     * 2^31 - 1 (a clamped v from -2^31), every inv_w equal, per-triangle
+     * LOD. The draw passes the topmost vertex first, from which two u differ
+     * by 2^31 + 2: halved, as raster.h documents for differences of 2^31
+     * and more, the sliver's area gives LOD 3.29 (level 3) where v[0]'s
+     * order gives 3.59 (level 4). The check took the differences from v[0]
+     * only; it now reads every level once any pair is that far apart. */
+    {"2bff05b6f0ee617f2bdbfe3778894d763fbf387ff1558c8f5d85f60cdefb4012"
+         "d728013477ffdc9d3cd0559c1dd43e1048117bc0e3071356eff48172d6a1883e"
+         "61ed20f044fc657965cb026b9ad213dd7c93bfa43cc5c9f0e7d2194c9a0b9e48"
+         "8d79fc0758de5940f6a08e391814481f94bfbc0dff81b1907bd517036737a201"
+         "1ac6124f9c7467f3abaf7b36be5a4d55f39ae76c15268b510592a7b1cab05fb2"
+         "85097696e5bf391d9ea7420d341058f709b0e45cfa5830ae8f7ce4d6fbd59af8"
+         "7afc7daa669246cba54e9d2b22cbc0f0c685dc626f7094d80c86da76e117da58"
+         "7441c8d223b99f96c8e21edb7024f768cb0626dbb7f39c5fefbf598ead5b1450"
+         "19d6f22648957e3f82effaf26317eb4c26c961e74165cea4a5264d29defc8c1e"
+         "22fa2595b6a7f5f900a28d9ae2dd7ceaf9a24ce19c2e85e88423eb839f2daa6c",
+     FXL_OK, 3}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

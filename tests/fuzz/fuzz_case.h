@@ -1548,7 +1548,12 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     double lod_noise = -1e300;   /* per segment: the LOD of rounding-noise derivatives, bias added */
     /* Levels not known (every level may be read): a per-triangle LOD from
      * coordinate differences of 2^31 units or more, which raster.h halves
-     * (a texture-space sliver's area then loses its precision) */
+     * (a texture-space sliver's area then loses its precision). The
+     * differences are taken from the vertex the draw passes first (the
+     * smallest inv_w, ties by y then x), so any pair that far apart counts:
+     * from c->v[0] only, u = 0, -3 and 2^31 - 1 with v2 first (every inv_w
+     * equal, v2 the topmost) read level 3 where v[0]'s order gives 3.59,
+     * level 4 (fixel-fuzz seed 1 case 123457080563, a review's run). */
     int all_levels = 0;
 
     if (!d->texture)
@@ -1565,9 +1570,9 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
         int i;
-        for (i = 1; i < 3; i++)
-            if (fabs((double)c->v[i].u - c->v[0].u) >= 2147483648.0 ||
-                fabs((double)c->v[i].v - c->v[0].v) >= 2147483648.0)
+        for (i = 0; i < 3; i++)
+            if (fabs((double)c->v[i].u - c->v[(i + 1) % 3].u) >= 2147483648.0 ||
+                fabs((double)c->v[i].v - c->v[(i + 1) % 3].v) >= 2147483648.0)
                 all_levels = 1;
         lod = lod < 0 ? 0 : (lod > top ? top : lod);   /* also -HUGE_VAL (no texel area) */
         lo = lod - tol < 0 ? 0 : lod - tol;
