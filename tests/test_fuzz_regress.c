@@ -10,7 +10,7 @@
  * random cases covering the error paths) plus hand-made extreme cases. Check
  * 7 (texel values against each mode's error bound) found core defects (the
  * entries that say "Fixed") and places where its reference was narrower
- * than the documented contract (the last two entries). Add
+ * than the documented contract (the last three entries). Add
  * every future finding here with the bytes printed by fixel-fuzz ("FINDING
  * ... bytes <hex>"). A change to the decoder must keep every input here decoding as before (the level-row
  * vertex layout, for one, skips the layout bytes these inputs use).
@@ -186,8 +186,8 @@ static const replay_t replays[] = {
      * LOD. The draw passes the topmost vertex first, from which two u differ
      * by 2^31 + 2: halved, as raster.h documents for differences of 2^31
      * and more, the sliver's area gives LOD 3.29 (level 3) where v[0]'s
-     * order gives 3.59 (level 4). The check took the differences from v[0]
-     * only; it now reads every level once any pair is that far apart. */
+     * order gives 3.59 (level 4). The check took the differences from v[0];
+     * it now takes them from the vertex the draw passes first. */
     {"2bff05b6f0ee617f2bdbfe3778894d763fbf387ff1558c8f5d85f60cdefb4012"
          "d728013477ffdc9d3cd0559c1dd43e1048117bc0e3071356eff48172d6a1883e"
          "61ed20f044fc657965cb026b9ad213dd7c93bfa43cc5c9f0e7d2194c9a0b9e48"
@@ -198,7 +198,20 @@ static const replay_t replays[] = {
          "7441c8d223b99f96c8e21edb7024f768cb0626dbb7f39c5fefbf598ead5b1450"
          "19d6f22648957e3f82effaf26317eb4c26c961e74165cea4a5264d29defc8c1e"
          "22fa2595b6a7f5f900a28d9ae2dd7ceaf9a24ce19c2e85e88423eb839f2daa6c",
-     FXL_OK, 3}
+     FXL_OK, 3},
+    /* Check 7 (seed 58 case 77738644): exact mode, a 49,000-pixel
+     * triangle with inv_w 1, 1 and 142 and v across 32,768 mirror periods.
+     * Its planes are anchored at v1 (smallest inv_w, then topmost), 49,000
+     * px from the pixel 2 px from v0 that read v 0.047 texel low; the
+     * check's bound measured the planes' rounding from v[0] (0.044). It now
+     * measures it from the vertex the draw passes first. */
+    {"c07fd14f75560e7bba3a3acbad8dac8328a5d722f6a62033ecfb58cffd61dee2"
+         "369b769e348a27c28f222d48e577da338dd46c4bb16e3ef53ab3f66d44c07ca0"
+         "fc26b474b322073afcd3913f8a8e5ba0c82bb7343db1a3e7434e8d8920260fd9"
+         "5be80b7fb37e617e3f522be57925a5115d6b4b0da58077734945d7f041e16de1"
+         "d3eec6e530db036a046ecdcca7e5fedceac3fd9f83a1551a7bfd78ea51fa3640"
+         "a7969115fbfe7c5fc2cb0bba9e8a9986922613eec70894d5a717f1bc9d8e7bd7",
+     FXL_OK, 10}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

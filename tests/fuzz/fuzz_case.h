@@ -1227,6 +1227,21 @@ static double fz_rebase_periods(const fz_case *c, int axis)
  * moves s by D 2^-21 units and q by D 2^-21 of q's units (q_max scaled to
  * >= 2^30), i.e. D 2^-51 q_max / q_min relative. u is rebased as setup does
  * (whole periods for repeat, pairs for mirror). */
+/* The vertex a draw passes set-up first (raster.c, first_vertex): the
+ * smallest inv_w, ties to the smallest y, then x. Its planes are anchored
+ * there, and fxl_lod_triangle_q8 takes its differences from it. */
+static const fxl_vertex_t *fz_first_vertex(const fz_case *c)
+{
+    const fxl_vertex_t *best = &c->v[0];
+    int i;
+    for (i = 1; i < 3; i++) {
+        const fxl_vertex_t *p = &c->v[i];
+        if (p->inv_w < best->inv_w || (p->inv_w == best->inv_w && (p->y < best->y || (p->y == best->y && p->x < best->x))))
+            best = p;
+    }
+    return best;
+}
+
 static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack, int affine, double b[2])
 {
     double qmin = 4294967296.0, qmax = 0, qtrunc = 0, D;
@@ -1242,7 +1257,12 @@ static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack
     }
     if (qtrunc)
         qtrunc = 1.0 / floor(qmin / 2);
-    D = fabs((double)(X - ref_snap(c->v[0].x))) + fabs((double)(Y - ref_snap(c->v[0].y))) + (double)slack;
+    /* the distance from the planes' anchor, the vertex set-up takes first
+     * (from c->v[0], a pixel 2 px from v[0] and 49,000 px from the anchor
+     * had a bound of 0.044 texel against 0.047 drawn: seed 58 case
+     * 77738644) */
+    D = fabs((double)(X - ref_snap(fz_first_vertex(c)->x))) + fabs((double)(Y - ref_snap(fz_first_vertex(c)->y))) +
+        (double)slack;
     for (axis = 0; axis < 2; axis++) {
         const double side = ldexp(1.0, axis ? c->tex.log2_h : c->tex.log2_w);
         const double base = fz_rebase_periods(c, axis);
@@ -1549,11 +1569,11 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     /* Levels not known (every level may be read): a per-triangle LOD from
      * coordinate differences of 2^31 units or more, which raster.h halves
      * (a texture-space sliver's area then loses its precision). The
-     * differences are taken from the vertex the draw passes first (the
-     * smallest inv_w, ties by y then x), so any pair that far apart counts:
-     * from c->v[0] only, u = 0, -3 and 2^31 - 1 with v2 first (every inv_w
-     * equal, v2 the topmost) read level 3 where v[0]'s order gives 3.59,
-     * level 4 (fixel-fuzz seed 1 case 123457080563, a review's run). */
+     * differences are taken from the vertex the draw passes first
+     * (fz_first_vertex): from c->v[0], u = 0, -3 and 2^31 - 1 with v2 first
+     * (every inv_w equal, v2 the topmost) read level 3 where v[0]'s order
+     * gives 3.59, level 4 (fixel-fuzz seed 1 case 123457080563, a review's
+     * run). */
     int all_levels = 0;
 
     if (!d->texture)
@@ -1569,10 +1589,10 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     if (mips && (!per_seg || huge)) {
         const double top = (double)c->tex.levels - 1, tol = 4.0 / 256;
         double lod = ref_lod_triangle(&c->tex, c->v) + d->lod_bias_q8 / 256.0, lo, hi;
+        const fxl_vertex_t *f = fz_first_vertex(c);
         int i;
         for (i = 0; i < 3; i++)
-            if (fabs((double)c->v[i].u - c->v[(i + 1) % 3].u) >= 2147483648.0 ||
-                fabs((double)c->v[i].v - c->v[(i + 1) % 3].v) >= 2147483648.0)
+            if (fabs((double)c->v[i].u - f->u) >= 2147483648.0 || fabs((double)c->v[i].v - f->v) >= 2147483648.0)
                 all_levels = 1;
         lod = lod < 0 ? 0 : (lod > top ? top : lod);   /* also -HUGE_VAL (no texel area) */
         lo = lod - tol < 0 ? 0 : lod - tol;
