@@ -139,8 +139,9 @@ int32_t fxl__to_i32(int64_t x, int *ovf);
 /* Is xf within the ranges fxl_pipeline_prepare gives its fields (near in
  * [2^-16, 2^15) units, far 0 or beyond near, 1 <= G <= FXL_GUARD_MAX, G
  * times the larger half size at most FXL_GUARD_PX, viewport centre and
- * half sizes within the target limits)? fxl_xform_project and fxl_clip_triangle refuse a
- * hand-filled xf outside them: their shifts and sums rely on them. */
+ * half sizes within the target limits)? fxl_xform_project and
+ * fxl_clip_triangle refuse a hand-filled xf outside them: their shifts and
+ * sums rely on them. */
 int fxl__xform_ok(const fxl_xform_t *xf);
 /* fxl_clip_triangle for an xf known good (the mesh path's, from
  * fxl_pipeline_prepare): no argument or xf checks, ~2% of a vertex's

@@ -108,9 +108,10 @@ void fxl_mat4_translate(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 void fxl_mat4_scale(fxl_mat4_t *m, fxl_q16_t x, fxl_q16_t y, fxl_q16_t z);
 /* Right-handed view matrix (gluLookAt). FXL_ERR_RANGE when eye == center,
  * up is zero or within ~2^-16 rad of the view direction (or opposite it),
- * or the translation overflows. The side vector is (center - eye) x up computed
- * exactly from the q16 inputs, so the rotation entries keep 2^-17 + 2^-26
- * and the translations 2^-17 + 3 |eye| 2^-28 at any accepted angle. */
+ * or the translation overflows. The side vector is (center - eye) x up,
+ * computed exactly from the q16 inputs, so the rotation entries keep
+ * 2^-17 + 2^-26 and the translations 2^-17 + 3 |eye| 2^-28 (eye in units)
+ * at any accepted angle. */
 fxl_status_t fxl_mat4_look_at(fxl_mat4_t *m, const fxl_vec3_t *eye, const fxl_vec3_t *center,
                               const fxl_vec3_t *up);
 /* OpenGL-style perspective (gluPerspective): vertical field of view
@@ -356,8 +357,8 @@ fxl_status_t fxl_xform_project(const fxl_xform_t *xf, const fxl_clipvert_t *c, f
  * order; attributes interpolated linearly in clip space. Each intersection
  * is interpolated from the edge's end nearer the plane (the inside one on
  * a tie), a choice made from the two plane distances alone, so an edge
- * shared by two triangles is cut at the same point in both (watertight). *n = 0 when nothing is left.
- * in may overlap out (in[0..2] = out[0..2] is fine): it is read first. out
+ * shared by two triangles is cut at the same point in both (watertight).
+ * *n = 0 when nothing is left. in may overlap out (in[0..2] = out[0..2] is fine): it is read first. out
  * is also the clipper's work space: whatever the result, out[*n..] (all of
  * out when *n = 0, after an error too) holds no defined values.
  * A polygon that the cut points' rounding made non-convex and longer than

@@ -1215,18 +1215,6 @@ static double fz_rebase_periods(const fz_case *c, int axis)
     return wrap == FXL_WRAP_REPEAT ? floor(mn) : (wrap == FXL_WRAP_MIRROR ? 2 * floor(mn / 2) : 0);
 }
 
-/* Exact mode's error bound, per axis in level-0 texels, at the pixel centre
- * (X, Y) (sub-pixel units, slack more from vertex 0: a segment's ends)
- * of the case's triangle: test_raster's
- * exact_plane_bound - the planes of s = u q kept below 2^30 (< 1.51 units of
- * 2^-29 max |s_i| at a vertex: 3.2 2^-30 max |u_i| q_i / q_min texels), the
- * reciprocal's 2^-28 of |u|, the q16 rounding, setup's q = inv_w >> 1 when
- * some inv_w >= 2^31 - plus what that test's targets do not reach: the
- * 2^-21-unit rounding of each plane's gradients (FXL__PF = 20), times the
- * distance D (sub-pixels) from vertex 0 where the planes are anchored. It
- * moves s by D 2^-21 units and q by D 2^-21 of q's units (q_max scaled to
- * >= 2^30), i.e. D 2^-51 q_max / q_min relative. u is rebased as setup does
- * (whole periods for repeat, pairs for mirror). */
 /* The vertex a draw passes set-up first (raster.c, first_vertex): the
  * smallest inv_w, ties to the smallest y, then x. Its planes are anchored
  * there, and fxl_lod_triangle_q8 takes its differences from it. */
@@ -1236,14 +1224,29 @@ static const fxl_vertex_t *fz_first_vertex(const fz_case *c)
     int i;
     for (i = 1; i < 3; i++) {
         const fxl_vertex_t *p = &c->v[i];
-        if (p->inv_w < best->inv_w || (p->inv_w == best->inv_w && (p->y < best->y || (p->y == best->y && p->x < best->x))))
+        if (p->inv_w < best->inv_w ||
+            (p->inv_w == best->inv_w && (p->y < best->y || (p->y == best->y && p->x < best->x))))
             best = p;
     }
     return best;
 }
 
+/* Exact mode's error bound, per axis in level-0 texels, at the pixel centre
+ * (X, Y) (sub-pixel units, slack more from the anchor: a segment's ends)
+ * of the case's triangle: test_raster's
+ * exact_plane_bound - the planes of s = u q kept below 2^30 (< 1.51 units of
+ * 2^-29 max |s_i| at a vertex: 3.2 2^-30 max |u_i| q_i / q_min texels), the
+ * reciprocal's 2^-28 of |u|, the q16 rounding, setup's q = inv_w >> 1 when
+ * some inv_w >= 2^31 - plus what that test's targets do not reach: the
+ * 2^-21-unit rounding of each plane's gradients (FXL__PF = 20), times the
+ * distance D (sub-pixels) from the vertex where the planes are anchored
+ * (fz_first_vertex). It
+ * moves s by D 2^-21 units and q by D 2^-21 of q's units (q_max scaled to
+ * >= 2^30), i.e. D 2^-51 q_max / q_min relative. u is rebased as setup does
+ * (whole periods for repeat, pairs for mirror). */
 static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack, int affine, double b[2])
 {
+    const fxl_vertex_t *f = fz_first_vertex(c);
     double qmin = 4294967296.0, qmax = 0, qtrunc = 0, D;
     int axis, i;
     for (i = 0; i < 3; i++) {
@@ -1261,8 +1264,7 @@ static void fz_exact_bound(const fz_case *c, int64_t X, int64_t Y, int64_t slack
      * (from c->v[0], a pixel 2 px from v[0] and 49,000 px from the anchor
      * had a bound of 0.044 texel against 0.047 drawn: seed 58 case
      * 77738644) */
-    D = fabs((double)(X - ref_snap(fz_first_vertex(c)->x))) + fabs((double)(Y - ref_snap(fz_first_vertex(c)->y))) +
-        (double)slack;
+    D = fabs((double)(X - ref_snap(f->x))) + fabs((double)(Y - ref_snap(f->y))) + (double)slack;
     for (axis = 0; axis < 2; axis++) {
         const double side = ldexp(1.0, axis ? c->tex.log2_h : c->tex.log2_w);
         const double base = fz_rebase_periods(c, axis);
