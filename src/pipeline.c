@@ -556,7 +556,7 @@ int fxl__xform_ok(const fxl_xform_t *xf)
      * (w >= near >= 2^16); a hand-made G of 2^-16 .. 2^-7 left clipped
      * vertices that fxl_xform_project refused. */
     half = xf->hw_q16 > xf->hh_q16 ? xf->hw_q16 : xf->hh_q16;
-    return xf->guard_q16 >= 65536 && xf->guard_q16 <= ((int32_t)FXL_GUARD_MAX << 16) &&
+    return xf->guard_q16 >= FXL_Q16_ONE && xf->guard_q16 <= ((int32_t)FXL_GUARD_MAX << 16) &&
            (int64_t)xf->guard_q16 * half <= ((int64_t)FXL_GUARD_PX << 32);
 }
 

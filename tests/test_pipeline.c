@@ -481,6 +481,21 @@ static void look_at_err(const fxl_mat4_t *m, double want[3][4], double *rot, dou
     }
 }
 
+/* One look-at against its reference: the rotation entries within 2^-17 +
+ * 2^-26, the translations within look_at_t_bound of eye fe. *rot, *t: the
+ * largest errors; what names the case in a failure message. */
+static void look_at_check(const fxl_mat4_t *m, double want[3][4], const fxl_vec3_t *fe, const char *what, double *rot,
+                          double *t)
+{
+    const double tb = look_at_t_bound(fe);
+    *rot = *t = 0;
+    look_at_err(m, want, rot, t);
+    snprintf(msg, sizeof msg, "%s: rotation error %.3g (q16 units %.2f), translation %.3g (bound %.3g)", what, *rot,
+             *rot * 65536.0, *t, tb);
+    TEST_ASSERT_TRUE_MESSAGE(*rot <= ldexp(1, -17) + ldexp(1, -26), msg);
+    TEST_ASSERT_TRUE_MESSAGE(*t < tb, msg);
+}
+
 static void test_look_at_matches_double(void)
 {
     int i;
@@ -507,7 +522,8 @@ static void test_look_at_matches_double(void)
      * product's terms near 2^63 and their differences beyond). */
     max_rot = max_t = 0;
     for (i = 0; i < 2000; i++) {
-        double want[3][4], rot = 0, t = 0;
+        double want[3][4], rot, t;
+        char what[32];
         fxl_vec3_t fe, fc, fu;
         fxl_mat4_t m;
         /* |eye| < 2^15 (the translations fit q16), center - eye up to
@@ -521,11 +537,8 @@ static void test_look_at_matches_double(void)
         fu.x = dq16(rng_range(-32767, 32767)); fu.y = dq16(rng_range(-32767, 32767)); fu.z = dq16(rng_range(-32767, 32767));
         if (look_at_ref(&fe, &fc, &fu, want) < 0.05) continue;
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_look_at(&m, &fe, &fc, &fu));
-        look_at_err(&m, want, &rot, &t);
-        snprintf(msg, sizeof msg, "corner case %d: rotation error %.3g, translation %.3g (bound %.3g)", i, rot, t,
-                 look_at_t_bound(&fe));
-        TEST_ASSERT_TRUE_MESSAGE(rot <= ldexp(1, -17) + ldexp(1, -26), msg);
-        TEST_ASSERT_TRUE_MESSAGE(t < look_at_t_bound(&fe), msg);
+        snprintf(what, sizeof what, "corner case %d", i);
+        look_at_check(&m, want, &fe, what, &rot, &t);
         if (rot > max_rot) max_rot = rot;
         if (t > max_t) max_t = t;
     }
@@ -596,12 +609,10 @@ static void test_look_at_up_near_the_view_direction(void)
             continue;
         }
         {
-            double rot = 0, t = 0;
-            look_at_err(&m, want, &rot, &t);
-            snprintf(msg, sizeof msg, "case %d: sin %.3g: rotation error %.3g (q16 units %.2f), translation %.3g (bound %.3g)",
-                     i, sn, rot, rot * 65536.0, t, look_at_t_bound(&fe));
-            TEST_ASSERT_TRUE_MESSAGE(rot <= ldexp(1, -17) + ldexp(1, -26), msg);
-            TEST_ASSERT_TRUE_MESSAGE(t < look_at_t_bound(&fe), msg);
+            double rot, t;
+            char what[48];
+            snprintf(what, sizeof what, "case %d: sin %.3g", i, sn);
+            look_at_check(&m, want, &fe, what, &rot, &t);
             if (rot > max_rot) max_rot = rot;
             if (t / look_at_t_bound(&fe) > max_t) max_t = t / look_at_t_bound(&fe);
         }
