@@ -216,6 +216,12 @@ fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel)
     return wait_for(panel, panel->started);
 }
 
+int fxl_panel_busy(const fxl_panel_t *panel)
+{
+    if (panel == NULL || panel->preset == NULL) return 0;
+    return in_flight(panel, panel->started);
+}
+
 fxl_status_t fxl_panel_wait_done(fxl_panel_t *panel, uint32_t seq)
 {
     if (panel == NULL || panel->preset == NULL) return FXL_ERR_ARG;

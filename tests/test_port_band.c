@@ -7,9 +7,11 @@
  * and the transfer counters survive a panel re-init, wrapping, a refused
  * transfer and a wait hook that gives up. */
 #define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
 
 #include "unity.h"
 #include "test_features.h"
@@ -65,6 +67,7 @@ typedef struct run_cfg {
     int bins;          /* 0: room for everything, 1: a few entries (fallback), 2: no bin memory */
     int no_wait_hook;
     int spi16;         /* 1: the HAL sends pixels in 16-bit SPI frames (FXL_PORT_PIXELS_16BIT) */
+    int late;          /* 1: transfers complete from SIGALRM ~0.2 ms after pixels() (late_hal) */
 } run_cfg_t;
 
 typedef struct run_out {
@@ -224,6 +227,54 @@ static void need_band_draws(void)
     need_band_draws_in(band_format(panel_spi16()));
 }
 
+/* Late completions (cfg->late), as a DMA interrupt gives them: the
+ * emulator's clock never completes a transfer (dma_delay huge); a one-shot
+ * timer armed as pixels() returns does it from SIGALRM while the thread
+ * side draws or waits. SIGALRM is blocked inside cmd() and pixels(), so it
+ * never lands in the emulator's own bookkeeping: a driver that called them
+ * with a transfer in flight shows as a protocol error, not a hang. */
+static panel_emu_t *late_emu;
+static fxl_port_hal_t late_inner;
+static volatile sig_atomic_t late_fired;
+static int late_timer_errors;
+
+static void late_complete(int sig)
+{
+    (void)sig;
+    late_fired++;
+    panel_emu_flush(late_emu);
+}
+
+static void late_block(int how)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGALRM);
+    if (sigprocmask(how, &set, NULL) != 0) late_timer_errors++;
+}
+
+static fxl_status_t late_cmd(void *user, uint8_t cmd, const uint8_t *params, size_t n)
+{
+    fxl_status_t st;
+    late_block(SIG_BLOCK);
+    st = late_inner.cmd(user, cmd, params, n);
+    late_block(SIG_UNBLOCK);
+    return st;
+}
+
+static fxl_status_t late_pixels(void *user, const void *data, size_t bytes)
+{
+    struct itimerval it;
+    fxl_status_t st;
+    late_block(SIG_BLOCK);
+    st = late_inner.pixels(user, data, bytes);
+    memset(&it, 0, sizeof(it));
+    it.it_value.tv_usec = 200;
+    if (st == FXL_OK && setitimer(ITIMER_REAL, &it, NULL) != 0) late_timer_errors++;
+    late_block(SIG_UNBLOCK);
+    return st;
+}
+
 /* Render through init -> band renderer -> emulated panel. Only asserts on
  * setup; the caller checks status and the image. */
 static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
@@ -245,6 +296,15 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     emu.spi16 = cfg->spi16 || panel_spi16();
     panel_emu_hal(&emu, &hal);
     if (cfg->no_wait_hook) hal.wait = NULL;
+    if (cfg->late) {
+        late_emu = &emu;
+        late_inner = hal;
+        late_fired = 0;
+        late_timer_errors = 0;
+        hal.cmd = late_cmd;
+        hal.pixels = late_pixels;
+        emu.dma_delay = 1 << 30;
+    }
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, panel_emu_preset_find(cfg->panel),
                                                  (unsigned)cfg->rotation));
     o->w = panel.width;
@@ -267,6 +327,13 @@ static void render_banded(const scene_t *s, const run_cfg_t *cfg, run_out_t *o)
     for (i = 0; i < s->count; i++)
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&band, s->v[i], s->draw[i]));
     o->status = fxl_band_render(&band, CLEAR_COLOR, &o->stats);
+    if (cfg->late) {
+        /* after a failed render a transfer may still be timed: no signal
+         * may reach the emulator once it is freed below */
+        struct itimerval off;
+        memset(&off, 0, sizeof(off));
+        if (setitimer(ITIMER_REAL, &off, NULL) != 0) late_timer_errors++;
+    }
     o->overflowed = fxl_band_overflowed(&band);
     o->bin_used = band.bin_used;
     TEST_ASSERT_EQUAL_INT(0, panel_emu_view(&emu, cfg->rotation, o->image, NULL, NULL));
@@ -325,7 +392,7 @@ static void check_identical(const run_cfg_t *cfg, run_out_t *o)
 
 void test_banded_frame_equals_full_frame_render(void)
 {
-    run_cfg_t cfg = { "st7789", 1, 24, 2, 0, 0, 0 };
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 0, 0, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     /* 320x240 in 24-row bands: 10 transfers, no fallback. */
@@ -342,7 +409,7 @@ void test_banded_frame_equals_full_frame_for_any_band_height(void)
     static const int rows[] = { 1, 7, 24, 240 };
     size_t i;
     for (i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
-        run_cfg_t cfg = { "st7789", 1, 24, 1, 0, 0, 0 };
+        run_cfg_t cfg = { "st7789", 1, 24, 1, 0, 0, 0, 0 };
         run_out_t o;
         cfg.band_rows = rows[i];
         check_identical(&cfg, &o);
@@ -358,7 +425,7 @@ void test_banded_frame_equals_full_frame_every_preset_and_rotation(void)
     int r;
     for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
         for (r = 0; r < 4; r++) {
-            run_cfg_t cfg = { NULL, 0, 16, 2, 0, 0, 0 };
+            run_cfg_t cfg = { NULL, 0, 16, 2, 0, 0, 0, 0 };
             run_out_t o;
             cfg.panel = names[i];
             cfg.rotation = r;
@@ -375,7 +442,7 @@ void test_banded_frame_equals_full_frame_every_preset_and_rotation(void)
  * byte mode; the wire bytes are compared where both draw. */
 void test_spi16_frames_draw_native_bands_and_send_the_same_bytes(void)
 {
-    static const run_cfg_t cfgs[] = { { "st7789", 1, 24, 2, 0, 0, 0 }, { "ili9341", 2, 7, 0, 1, 1, 0 } };
+    static const run_cfg_t cfgs[] = { { "st7789", 1, 24, 2, 0, 0, 0, 0 }, { "ili9341", 2, 7, 0, 1, 1, 0, 0 } };
     size_t i;
     int checked = 0;
     for (i = 0; i < sizeof(cfgs) / sizeof(cfgs[0]); i++) {
@@ -428,7 +495,7 @@ void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
     static const int delays[] = { 0, 1, 5, 50 };
     size_t i;
     for (i = 0; i < sizeof(delays) / sizeof(delays[0]); i++) {
-        run_cfg_t cfg = { "st7789", 1, 24, 0, 0, 0, 0 };
+        run_cfg_t cfg = { "st7789", 1, 24, 0, 0, 0, 0, 0 };
         run_out_t o;
         cfg.dma_delay = delays[i];
         check_identical(&cfg, &o);
@@ -438,15 +505,34 @@ void test_late_dma_completion_never_lets_a_buffer_be_reused_early(void)
 
 void test_without_wait_hook_the_driver_spins_on_the_completion_counter(void)
 {
-    run_cfg_t cfg = { "ili9341", 0, 32, 0, 0, 1, 0 };
+    /* Every transfer completes ~0.2 ms late, from a signal, and there is no
+     * hook: the driver must spin on panel->done before it touches the bus
+     * or a buffer again. A band path that did not wait would call cmd()
+     * or pixels() under a running transfer (a protocol error) or redraw a
+     * buffer still being sent (a different image). */
+    run_cfg_t cfg = { "ili9341", 0, 32, 0, 0, 1, 0, 1 };
     run_out_t o;
+    struct sigaction sa, old;
+    struct itimerval off;
+    memset(&sa, 0, sizeof(sa));
+    sa.sa_handler = late_complete;
+    sigemptyset(&sa.sa_mask);
+    TEST_ASSERT_EQUAL_INT(0, sigaction(SIGALRM, &sa, &old));
     check_identical(&cfg, &o);
+    /* disarmed before the default action (exit) is back */
+    memset(&off, 0, sizeof(off));
+    TEST_ASSERT_EQUAL_INT(0, setitimer(ITIMER_REAL, &off, NULL));
+    TEST_ASSERT_EQUAL_INT(0, sigaction(SIGALRM, &old, NULL));
+    TEST_ASSERT_EQUAL_INT(0, late_timer_errors);
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)o.waits);
+    /* 320 rows in bands of 32: ten transfers, each completed by the timer */
+    TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)o.transfers);
+    TEST_ASSERT_EQUAL_INT(10, (int)late_fired);
 }
 
 void test_bin_budget_exceeded_falls_back_with_identical_image(void)
 {
-    run_cfg_t cfg = { "st7789", 1, 24, 2, 1, 0, 0 };
+    run_cfg_t cfg = { "st7789", 1, 24, 2, 1, 0, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     TEST_ASSERT_TRUE(o.overflowed);
@@ -454,7 +540,7 @@ void test_bin_budget_exceeded_falls_back_with_identical_image(void)
 
 void test_no_bin_memory_scans_every_triangle_with_identical_image(void)
 {
-    run_cfg_t cfg = { "st7789", 3, 24, 2, 2, 0, 0 };
+    run_cfg_t cfg = { "st7789", 3, 24, 2, 2, 0, 0, 0 };
     run_out_t o;
     check_identical(&cfg, &o);
     TEST_ASSERT_TRUE(o.overflowed);

@@ -366,6 +366,91 @@ void test_transfer_done_is_a_counter_and_ignores_null(void)
     TEST_ASSERT_EQUAL_UINT32(0, panel.done);
 }
 
+/* ---- fxl_panel_busy and hooks that sleep ---------------------------------- */
+
+void test_panel_busy_follows_the_transfer_without_waiting(void)
+{
+    uint16_t buf[2] = { 1, 2 };
+    int i;
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(NULL));
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(&panel)); /* zeroed, not initialised */
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(&panel));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    /* one HAL call more would complete it: asking must call none */
+    emu.dma_delay = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    for (i = 0; i < 5; i++)
+        TEST_ASSERT_EQUAL_INT(1, fxl_panel_busy(&panel));
+    TEST_ASSERT_EQUAL_UINT32(0, panel.done);
+    panel_emu_flush(&emu);
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(&panel));
+    /* a completion reported twice (done ahead of started) is not a transfer */
+    fxl_port_transfer_done(&panel);
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(&panel));
+    assert_no_protocol_errors();
+}
+
+void test_panel_busy_is_zero_after_a_blocking_write(void)
+{
+    uint16_t buf[2] = { 1, 2 };
+    start_emu("st7789");
+    emu.panel = NULL; /* a blocking HAL never reports */
+    hal.flags = FXL_PORT_PIXELS_SYNC;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_INT(0, fxl_panel_busy(&panel));
+}
+
+/* The masked-WFI hook of docs/porting.md ("Sleeping in the wait hook"):
+ * __disable_irq(); if (fxl_panel_busy(panel)) __WFI(); __enable_irq();
+ * with the DMA interrupt landing at the worst moment, after the driver's
+ * last look and before the hook masks interrupts (its wfi_land_at-th call).
+ * Until then the hook must find the transfer running and may sleep (the
+ * interrupt would wake it); from then on it must find it over and not
+ * sleep, where a bare WFI would sleep through the completion. */
+static int wfi_calls, wfi_land_at, wfi_sleeps, wfi_lost;
+
+static fxl_status_t masked_wfi_hook(void *user)
+{
+    const fxl_panel_t *p = ((panel_emu_t *)user)->panel;
+    wfi_calls++;
+    if (wfi_calls == wfi_land_at) panel_emu_flush((panel_emu_t *)user); /* the interrupt */
+    /* __disable_irq() */
+    if (fxl_panel_busy(p)) {
+        wfi_sleeps++; /* __WFI() */
+        if (wfi_calls >= wfi_land_at) wfi_lost++;
+    }
+    /* __enable_irq() */
+    return FXL_OK;
+}
+
+void test_masked_wfi_hook_never_sleeps_through_a_completion(void)
+{
+    uint16_t buf[4] = { 1, 2, 3, 4 };
+    int land;
+    for (land = 1; land <= 4; land++) {
+        start_emu("st7789");
+        hal.wait = masked_wfi_hook;
+        emu.dma_delay = 1 << 30; /* only the modelled interrupt completes */
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 4, 1));
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+        wfi_calls = wfi_sleeps = wfi_lost = 0;
+        wfi_land_at = land;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_wait_idle(&panel));
+        TEST_ASSERT_EQUAL_INT(0, wfi_lost);
+        TEST_ASSERT_EQUAL_INT(land, wfi_calls); /* the driver stops calling once it is over */
+        TEST_ASSERT_EQUAL_INT(land - 1, wfi_sleeps);
+        TEST_ASSERT_EQUAL_UINT32(1, panel.done);
+        assert_no_protocol_errors();
+        tearDown();
+        setUp();
+    }
+}
+
 /* ---- HAL contract and error paths ---------------------------------------- */
 
 static fxl_status_t failing_cmd(void *user, uint8_t c, const uint8_t *p, size_t n)
@@ -740,6 +825,9 @@ int main(void)
     RUN_TEST(test_second_write_waits_for_the_first_transfer);
     RUN_TEST(test_sync_hal_counts_its_own_completion);
     RUN_TEST(test_transfer_done_is_a_counter_and_ignores_null);
+    RUN_TEST(test_panel_busy_follows_the_transfer_without_waiting);
+    RUN_TEST(test_panel_busy_is_zero_after_a_blocking_write);
+    RUN_TEST(test_masked_wfi_hook_never_sleeps_through_a_completion);
     RUN_TEST(test_null_and_missing_required_callbacks_are_arg_errors);
     RUN_TEST(test_optional_wrappers_report_unsupported_when_null);
     RUN_TEST(test_init_without_delay_refuses_before_sending_anything);

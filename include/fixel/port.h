@@ -22,9 +22,16 @@
  *            sequence without its datasheet delays leaves the panel in an
  *            undefined state, so init refuses with FXL_ERR_UNSUPPORTED).
  *   wait     optional idle hook called repeatedly while the driver waits for
- *            a transfer (e.g. __WFI, yield to an RTOS). Return FXL_OK to keep
- *            waiting, anything else to give up (the driver returns FXL_ERR_IO).
- *            NULL: the driver spins on the completion counter. After a give-up
+ *            a transfer. Return FXL_OK to keep waiting, anything else to give
+ *            up (the driver returns FXL_ERR_IO). NULL: the driver spins on
+ *            the completion counter. A hook that sleeps must not sleep
+ *            through a completion that came after the driver's last look:
+ *            on Cortex-M use __WFE() (an exception return sets the event
+ *            register, so WFE then returns at once), not a bare __WFI(),
+ *            which would sleep until some other interrupt; for WFI, mask
+ *            interrupts and test fxl_panel_busy() first (WFI still wakes on
+ *            an interrupt that becomes pending while masked). An RTOS
+ *            semaphore given by the interrupt is latched too. After a give-up
  *            the transfer still counts as in flight, so every call that waits
  *            gives up again. To recover, stop the DMA in the HAL, then either
  *            report the transfer over with fxl_port_transfer_done() or call
@@ -255,6 +262,10 @@ fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel);
  * from before it names whichever transfer has that number since, and is
  * waited for while that one is in flight. */
 fxl_status_t fxl_panel_wait_done(fxl_panel_t *panel, uint32_t seq);
+/* 1 while a transfer started by fxl_panel_write has not completed, else 0
+ * (also for NULL or an uninitialised panel). Never waits: for a wait hook
+ * that sleeps with interrupts masked, and for work between transfers. */
+int fxl_panel_busy(const fxl_panel_t *panel);
 /* DISPON / DISPOFF. */
 fxl_status_t fxl_panel_display(fxl_panel_t *panel, int on);
 
