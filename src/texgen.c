@@ -55,13 +55,20 @@ static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
     b *= (int64_t)1 << k;
     h *= (int64_t)1 << k;
     r = (int64_t)fxl__isqrt64((uint64_t)(a * a) + (uint64_t)(b * b));
-    /* On (or within 2^-10 of the distance from) the axis, theta is
-     * meaningless: a pole. */
-    out[2] = r * 1024 <= mag(h);
     if (tg->mode == FXL_TEXGEN_SPHERICAL) {
+        /* Within 2^-10 rad of the axis, seen from the centre, theta turns
+         * faster than the texture can show: a pole. */
+        out[2] = r * 1024 <= mag(h);
         /* phi in [0, 2^31] q32 turns; v = phi / half turn, q16. */
         out[1] = (int32_t)((fxl__atan2_q32(r, h) + 0x4000u) >> 15);
     } else {
+        /* A cylinder's theta does not depend on h: a pole is a vertex
+         * within 2^-14 (|h| + 1) of the axis, where the q16 rounding of an
+         * eye-space transform (entries to 2^-16) can put a point that lies
+         * on it. Measured against |h| as the sphere's rule is, a tall
+         * cylinder (|h| > 1024 r) lost every u to 0. In the scaled units:
+         * r 2^14 <= |h| + 2^(16 + k), below 2^46. */
+        out[2] = r * 16384 <= mag(h) + ((int64_t)65536 << k);
         out[1] = (int32_t)h0; /* h is a q16 input coordinate */
     }
 }

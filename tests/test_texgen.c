@@ -232,6 +232,87 @@ static void test_pole_takes_mean_theta_of_other_vertices(void)
     TEST_ASSERT_INT32_WITHIN(1, dq16(0.35), t[0].u);
 }
 
+/* A cylinder's theta is atan2(b, a) at any height: a ring far up a tall
+ * cylinder keeps its u (the sphere's pole rule, r <= 2^-10 |h|, set every
+ * vertex of a ring above 1024 radii to u = 0). Up to the cylinder's own
+ * rule, r 2^14 > |h| + 1: each u within the atan2 bound of check_polar,
+ * v = h exactly, on every axis and on both sides of h = 0. */
+static void test_tall_cylinder_keeps_its_theta(void)
+{
+    static const double ring[][2] = {   /* {r, h} */
+        {1, 1030}, {1, 5000}, {1, 16000}, {0.1, 103}, {0.1, 1600}, {0.01, 11}, {0.01, 160},
+    };
+    static const double turns[3] = {0.10, 0.20, 0.15};
+    fxl_texgen_t tg;
+    double max_u = 0;
+    size_t i;
+    int axis, sign, k;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    for (axis = 0; axis < 3; axis++)
+        for (sign = -1; sign <= 1; sign += 2)
+            for (i = 0; i < sizeof ring / sizeof ring[0]; i++) {
+                fxl_vec3_t p[3];
+                fxl_texcoord_t t[3];
+                tg.axis = (uint8_t)axis;
+                for (k = 0; k < 3; k++) {
+                    const double a = ring[i][0] * cos(TWO_PI * turns[k]), b = ring[i][0] * sin(TWO_PI * turns[k]);
+                    const double h = sign * ring[i][1];
+                    if (axis == FXL_AXIS_X) p[k] = vec(h, a, b);
+                    else if (axis == FXL_AXIS_Y) p[k] = vec(b, h, a);
+                    else p[k] = vec(a, b, h);
+                }
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+                for (k = 0; k < 3; k++) {
+                    double q[3] = {q16d(p[k].x), q16d(p[k].y), q16d(p[k].z)}, a, b, h, eu;
+                    frame(axis, q, &a, &b, &h);
+                    eu = fabs(wrap_diff(q16d(t[k].u), atan2(b, a) / TWO_PI)) * 65536;
+                    if (eu > max_u) max_u = eu;
+                    if (eu > 0.5 + ldexp(1, -10) || t[k].v != dq16(h)) {
+                        snprintf(msg, sizeof msg, "axis %d r %g h %g vertex %d: u %.6f (err %.3f LSB), v %.6f",
+                                 axis, ring[i][0], h, k, q16d(t[k].u), eu, q16d(t[k].v));
+                        TEST_FAIL_MESSAGE(msg);
+                    }
+                }
+            }
+    printf("tall cylinder: max u error %.3f LSB\n", max_u);
+}
+
+/* A cylinder's pole: within 2^-14 (|h| + 1) of the axis, where the q16
+ * rounding of an eye-space transform can put a point on it (a cap's
+ * centre). It takes the mean theta of the other two (0.35 turns here);
+ * just outside, a vertex keeps its own. */
+static void test_cylinder_pole_is_within_rounding_of_the_axis(void)
+{
+    static const struct { int32_t a, b; double h; int pole; } c[] = {
+        {0, 0, 1000, 1},     {3, -2, 0, 1},        {4, 0, 0, 1},       {5, 0, 0, 0},
+        {0, -3, 0.5, 1},     {-2, 2, 1000, 1},     {3277, 0, 1000, 1}, /* 0.05: 2^-14 1001 = 0.061 */
+        {4588, 0, 1000, 0},  /* 0.07 */            {0, 4588, -1000, 0},
+    };
+    fxl_texgen_t tg;
+    size_t i;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    tg.axis = FXL_AXIS_Y;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        double want;
+        p[0].x = c[i].b;   /* axis Y: a = z, b = x */
+        p[0].y = dq16(c[i].h);
+        p[0].z = c[i].a;
+        p[1] = around_y(0.30, c[i].h);
+        p[2] = around_y(0.40, c[i].h);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        want = c[i].pole ? 0.35 : atan2((double)c[i].b, (double)c[i].a) / TWO_PI;
+        if (fabs(wrap_diff(q16d(t[0].u), want)) * 65536 > 1.0) {
+            snprintf(msg, sizeof msg, "(a %d, b %d) units at h %g: u %.6f, want %.6f (%s)", (int)c[i].a,
+                     (int)c[i].b, c[i].h, q16d(t[0].u), want, c[i].pole ? "a pole" : "its own theta");
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+}
+
 static void test_cube_faces_and_atlas_layout(void)
 {
     /* face centres: (major axis direction, face index) */
@@ -351,6 +432,8 @@ int main(void)
     RUN_TEST(test_seam_triangle_does_not_span_whole_texture);
     RUN_TEST(test_seam_takes_the_shortest_span);
     RUN_TEST(test_pole_takes_mean_theta_of_other_vertices);
+    RUN_TEST(test_tall_cylinder_keeps_its_theta);
+    RUN_TEST(test_cylinder_pole_is_within_rounding_of_the_axis);
     RUN_TEST(test_cube_faces_and_atlas_layout);
     RUN_TEST(test_cube_major_axis_ties_take_the_first_axis);
     RUN_TEST(test_texgen_rejects_bad_arguments);

@@ -218,9 +218,10 @@ void fxl_texgen_defaults(fxl_texgen_t *tg);
  * the chosen space. Seams: for cylindrical and spherical u, vertices are
  * shifted by whole periods so that together they span as little as they can,
  * the first keeping its own u (others may leave [0, 1]; repeat wrap makes
- * that right). Poles (a vertex on the
- * axis, where theta is undefined) take the mean theta of the other
- * vertices. Cube: one face per triangle. */
+ * that right). Poles (a vertex on the axis, where theta is undefined:
+ * spherical within 2^-10 rad of it seen from the centre, cylindrical within
+ * 2^-14 (|h| + 1) of it) take the mean theta of the other vertices.
+ * Cube: one face per triangle. */
 fxl_status_t fxl_texgen_triangle(const fxl_texgen_t *tg, const fxl_vec3_t pos[3],
                                  fxl_texcoord_t out[3]);
 
