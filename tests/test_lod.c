@@ -506,6 +506,40 @@ void test_lod_bias_and_per_triangle_mode(void)
     }
 }
 
+/* What the per-triangle area cannot see (raster.h, FXL_LOD_TRIANGLE): a
+ * mapping whose u, v are collinear has no texel area, so its LOD is the
+ * clamp and it draws level 0, however far it is minified; the per-segment
+ * LOD takes the longer derivative. Here u is constant and v runs 4 periods
+ * (2,048 texels) down 64 rows: 32 texels a pixel, LOD 5 (a review's 1 x N
+ * strip, the mesh that has this mapping). */
+void test_lod_per_triangle_of_collinear_coordinates_is_level_0_per_segment_is_not(void)
+{
+    TEST_NEEDS(FXL_HAVE_MIPMAP);
+    static uint16_t buf[320 * 240];
+    fxl_texture_t t;
+    fxl_target_t tg;
+    fxl_draw_t d;
+    fxl_vertex_t tri[3];
+    tex512(&t);
+    tri[0] = vtx(10, 10, 0.5, 0.25, 0);
+    tri[1] = vtx(74, 10, 0.5, 0.25, 0);
+    tri[2] = vtx(10, 74, 0.5, 0.25, 4);
+    TEST_ASSERT_EQUAL_INT(-128 * 256, fxl_lod_triangle_q8(&t, tri));
+    fxl_draw_defaults(&d);
+    d.texture = &t;
+    d.depth = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
+    probe_base = buf;
+    d.lod = FXL_LOD_SEGMENT;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
+    TEST_ASSERT_INT_WITHIN(2, 5 * 256, probe_lod[20 * 320 + 20]);
+    TEST_ASSERT_EQUAL_INT(5, probe_level[20 * 320 + 20]);
+    d.lod = FXL_LOD_TRIANGLE;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
+    TEST_ASSERT_EQUAL_INT(0, probe_lod[20 * 320 + 20]);
+    TEST_ASSERT_EQUAL_INT(0, probe_level[20 * 320 + 20]);
+}
+
 /* Trilinear: the blend weight of the second level is the LOD fraction, and
  * the output equals the 5-bit blend of the two levels' samples. A texture
  * whose levels are flat colours (level n all value c_n) makes the expected
@@ -1006,6 +1040,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_lod_per_triangle_matches_lecture_values);
     RUN_TEST(test_lod_per_triangle_keeps_small_differences_and_texture_slivers_exact);
+    RUN_TEST(test_lod_per_triangle_of_collinear_coordinates_is_level_0_per_segment_is_not);
     RUN_TEST(test_lod_per_segment_matches_exact_derivatives_on_floor);
     RUN_TEST(test_lod_per_segment_exact_at_extremes);
     RUN_TEST(test_lod_bound_holds_inside_the_triangle_and_settles_level_0);

@@ -107,7 +107,11 @@ typedef enum fxl_lodmode {
                                * (exact mode's, above) moves them by up to
                                * e |q_g| / q, which at the far end of a depth
                                * ratio near 10^9 can reach any level */
-    FXL_LOD_TRIANGLE = 1      /* once per triangle: log4(texel area / pixel area) */
+    FXL_LOD_TRIANGLE = 1      /* once per triangle: log4(texel area / pixel area), the
+                               * geometric mean of the two scales: too fine a level
+                               * where the mapping is stretched one way, level 0 where
+                               * u, v are collinear (no texel area: a 1 x N texture);
+                               * take FXL_LOD_SEGMENT there */
 } fxl_lodmode_t;
 
 typedef enum fxl_texenv {
