@@ -297,8 +297,8 @@ fxl_q16_t fxl_q16_sqrt(fxl_q16_t a)
 
 /* __builtin_clz only where it becomes one instruction. Elsewhere GCC would
  * call the libgcc helper __clzsi2, so plain C is used instead. Building with
- * -DFXL_USE_BUILTIN_CLZ=0 forces the plain C path on any target: that is how
- * a PC build runs the Cortex-M0+ code through tests/test_fixed.c. */
+ * -DFXL_USE_BUILTIN_CLZ=0 forces the plain C path on any target: CI's 32-bit
+ * arithmetic build (host_sim/scripts/ci_extra.sh) runs the whole suite so. */
 #ifndef FXL_USE_BUILTIN_CLZ
 #if defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__x86_64__) || \
                           defined(__i386__) || defined(__aarch64__) ||           \

@@ -5,7 +5,9 @@
 
 #include <stdint.h>
 
-/* floor(sqrt(x)), digit by digit (no division, no floating point). */
+/* floor(sqrt(x)): a 16-bit root of the top word, one 32-bit division for
+ * the next 16 bits and at most two steps down (fixed.c); no floating point.
+ * On cores without a divide instruction the division is libgcc's. */
 uint64_t fxl__isqrt64(uint64_t x);
 
 #endif

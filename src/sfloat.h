@@ -92,12 +92,6 @@ static FXL__SF_INLINE fxl__sf_t fxl__sf_dot2(fxl__sf_t a, fxl__sf_t b, fxl__sf_t
     return fxl__sf_make(sum, e);
 }
 
-/* a / b (b != 0): |a.m| <= 2^31 so a.m * 2^31 fits; 31 quotient bits. */
-static inline fxl__sf_t fxl__sf_div(fxl__sf_t a, fxl__sf_t b)
-{
-    return fxl__sf_make((int64_t)a.m * ((int64_t)1 << 31) / b.m, a.e - b.e - 31);
-}
-
 static inline int fxl__sf_is_zero(fxl__sf_t a)
 {
     return a.m == 0;

@@ -153,14 +153,15 @@ FXL_BUILD_DIR="$bdir" bash host_sim/scripts/determinism.sh || status=1
 
 # The 32-bit cores' arithmetic (16-bit-half products, the table-started
 # reciprocal, the one-word roundings of FXL__WORD32 that exact runs and row
-# walks take) runs on the host only in determinism.sh's m0arith build,
+# walks take, the plain C CLZ of cores without one) runs on the host only in
+# determinism.sh's m0arith build,
 # without sanitizers: the whole suite here under ASan+UBSan with it (a Debug
 # build, like `make sanitize`'s).
 echo "== 32-bit arithmetic: the tests under ASan+UBSan"
 t0=$SECONDS
 wdir="${adir%/}-word32"
 if cmake -S . -B "$wdir" -DCMAKE_BUILD_TYPE=Debug -DFXL_SANITIZE=ON -DFXL_UNITY_DOWNLOAD=OFF \
-    -DCMAKE_C_FLAGS="-DFXL__WORD32=1 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1" \
+    -DCMAKE_C_FLAGS="-DFXL__WORD32=1 -DFXL__MUL_HALVES=1 -DFXL__DIV_TABLE=1 -DFXL__DIV64_RECIP=1 -DFXL_USE_BUILTIN_CLZ=0" \
     >"$wdir.log" 2>&1 && cmake --build "$wdir" -j "${JOBS:-2}" >>"$wdir.log" 2>&1 &&
     ctest --test-dir "$wdir" -j "${JOBS:-2}" --output-on-failure --no-tests=error >>"$wdir.log" 2>&1; then
     echo "32-bit arithmetic: $(grep -E 'tests passed' "$wdir.log" | tail -n 1)"

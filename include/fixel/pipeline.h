@@ -238,7 +238,8 @@ typedef struct fxl_light {
     uint8_t diffuse[3];
 } fxl_light_t;
 
-/* Shade one vertex; n need not be exactly unit (n . dir is clamped to 1). */
+/* Shade one vertex; n need not be exactly unit (n . dir is clamped to 1).
+ * A NULL l or n_eye returns base_rgb565 unchanged. */
 uint16_t fxl_light_shade(const fxl_light_t *l, const fxl_vec3_t *n_eye, uint16_t base_rgb565);
 
 /* ---- the pipeline (src/pipeline.c, clip.c, mesh.c) ---------------------- */
