@@ -19,7 +19,10 @@
 #
 # FXL_UNITY_COMPAT=ON skips 1 and 2. Whatever is chosen, the tests see
 # UNITY_INCLUDE_DOUBLE (double asserts on) and UNITY_USE_FLUSH_STDOUT (each
-# result line reaches the log even if a sanitizer kills the test later).
+# result line reaches the log even if a sanitizer kills the test later; for
+# an installed Unity only if its library was built with it: the flush is in
+# unity.c). An installed Unity must be 2.6.x, the release the tests are
+# written against (a later unity.c prints "FAIL." where 2.6 prints "FAIL:").
 
 include_guard(GLOBAL)
 
@@ -126,6 +129,9 @@ function(_fxl_unity_installed_usable out_var)
   set(CMAKE_REQUIRED_LIBRARIES unity::framework)
   set(CMAKE_REQUIRED_DEFINITIONS -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64)
   set(CMAKE_REQUIRED_QUIET ON)
+  # Probed at every configure: a cached FALSE from an earlier, unusable
+  # Unity would otherwise outlive the rebuild the warning asks for.
+  unset(FXL_INSTALLED_UNITY_USABLE CACHE)
   set(_probe [[
 #include "unity.h"
 void setUp(void) {}
@@ -186,7 +192,12 @@ function(fxl_resolve_unity)
     # 1b. An installed Unity.
     if(NOT provider)
       find_package(unity CONFIG QUIET)
-      if(TARGET unity::framework)
+      if(TARGET unity::framework AND
+         (NOT unity_VERSION OR unity_VERSION VERSION_LESS 2.6 OR NOT unity_VERSION VERSION_LESS 2.7))
+        message(WARNING "fixel: the installed Unity (${unity_DIR}) is version "
+                        "'${unity_VERSION}'; the tests are written against 2.6.x. Not using it.")
+        string(APPEND why "installed Unity ${unity_VERSION} is not 2.6.x; ")
+      elseif(TARGET unity::framework)
         _fxl_unity_installed_usable(ok)
         if(ok)
           target_link_libraries(fixel_unity INTERFACE unity::framework)

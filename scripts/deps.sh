@@ -4,7 +4,8 @@
 #   scripts/deps.sh [group...]      groups: host (default), firmware, cppcheck,
 #                                   optional
 #
-#   host      cmake (>= 3.20), a C compiler, make, pkg-config, libpng-dev
+#   host      cmake (>= 3.20), a C compiler, make, libpng-dev; and, never
+#             an error, ca-certificates (the pinned Unity download is HTTPS)
 #   firmware  cmake, make, gcc-arm-none-eabi, libnewlib-arm-none-eabi
 #   cppcheck  cppcheck
 #   optional  g++ (C++ check of the public headers), clang (libFuzzer,
@@ -13,7 +14,8 @@
 #             gnuplot-nox, valgrind: installed one by one when possible,
 #             never an error
 #
-# When everything is present this only looks at PATH and pkg-config: no apt.
+# When everything is present this only looks at PATH, pkg-config or a
+# compile probe for libpng, and the CA bundle: no apt.
 # Otherwise it runs `apt-get update` once and `apt-get install -y` as root,
 # or through `sudo -n` when that needs no password; failing both, it prints
 # the exact command to run and exits 1.
@@ -46,8 +48,39 @@ check_cmake() {
     v=$(cmake --version | sed -n 's/^cmake version \([0-9]*\.[0-9]*\).*/\1/p')
     local major=${v%%.*} minor=${v#*.}
     if [ -z "$v" ] || [ "$major" -lt 3 ] || { [ "$major" -eq 3 ] && [ "$minor" -lt 20 ]; }; then
-        notes+=("cmake ${v:-?} is older than 3.20; install a newer one (e.g. from backports or pip install cmake)")
+        # Debian 11 (bullseye) ships 3.18: its backports carry a newer one.
+        local codename=""
+        [ -r /etc/os-release ] && codename=$(sed -n 's/^VERSION_CODENAME=//p' /etc/os-release)
+        if [ -n "$codename" ] && have apt-get; then
+            notes+=("cmake ${v:-?} is older than 3.20; as root, run:
+  echo 'deb http://deb.debian.org/debian $codename-backports main' > /etc/apt/sources.list.d/backports.list
+  apt-get update && apt-get install -y -t $codename-backports cmake")
+        else
+            notes+=("cmake ${v:-?} is older than 3.20; install cmake 3.20 or newer")
+        fi
     fi
+}
+
+# libpng's headers and library, as CMake's FindPNG looks for them (the build
+# does not use pkg-config, so neither does this).
+have_libpng() {
+    if have pkg-config && pkg-config --exists libpng 2>/dev/null; then
+        return 0
+    fi
+    if have dpkg-query && dpkg-query -W -f='${Status}' libpng-dev 2>/dev/null | grep -q 'ok installed'; then
+        return 0
+    fi
+    local c=${CC:-cc} probe
+    have "${c%% *}" || c=gcc
+    have "${c%% *}" || return 1
+    probe=$(mktemp -d) || return 1
+    printf '#include <png.h>\nint main(void) { return png_access_version_number() == 0; }\n' > "$probe/p.c"
+    if $c "$probe/p.c" -lpng -o "$probe/p" >/dev/null 2>&1; then
+        rm -rf "$probe"
+        return 0
+    fi
+    rm -rf "$probe"
+    return 1
 }
 
 check_host() {
@@ -58,10 +91,10 @@ check_host() {
     elif ! have cc && ! have gcc && ! have clang; then
         add gcc libc6-dev
     fi
-    have pkg-config || add pkg-config
-    if ! have pkg-config || ! pkg-config --exists libpng; then
-        add libpng-dev
-    fi
+    have_libpng || add libpng-dev
+    # Without a CA bundle the HTTPS download of the pinned Unity fails its
+    # certificate check and the tests fall back to tests/unity_compat.
+    [ -f /etc/ssl/certs/ca-certificates.crt ] || optional_missing+=(ca-certificates)
 }
 
 check_firmware() {
@@ -103,6 +136,10 @@ done
 
 if [ ${#notes[@]} -gt 0 ]; then
     printf 'deps.sh: %s\n' "${notes[@]}" >&2
+    if [ ${#missing[@]} -gt 0 ]; then
+        echo "deps.sh: also missing: ${missing[*]}; as root, run:" >&2
+        echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+    fi
     exit 1
 fi
 if [ ${#missing[@]} -eq 0 ] && [ ${#optional_missing[@]} -eq 0 ]; then
@@ -121,7 +158,8 @@ if ! have apt-get; then
 fi
 if [ "$(id -u)" -ne 0 ]; then
     if have sudo && sudo -n true 2>/dev/null; then
-        sudo_cmd=(sudo -n)
+        # sudo's env_reset drops DEBIAN_FRONTEND: pass it through env
+        sudo_cmd=(sudo -n env DEBIAN_FRONTEND=noninteractive)
     elif have sudo; then
         echo "deps.sh: not root and sudo needs a password; run:" >&2
         echo "  sudo apt-get update && sudo apt-get install -y ${all_missing[*]}" >&2

@@ -103,6 +103,8 @@ static void put_double(double value)
         fputs("nan", stdout);
     } else if (isinf(value)) {
         fputs(value < 0.0 ? "-inf" : "inf", stdout);
+    } else if (value == 0.0) {
+        fputs("0", stdout); /* Unity prints no sign for -0.0 */
     } else {
         printf("%.9g", value);
     }
