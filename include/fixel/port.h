@@ -263,8 +263,9 @@ fxl_status_t fxl_panel_wait_idle(fxl_panel_t *panel);
  * waited for while that one is in flight. */
 fxl_status_t fxl_panel_wait_done(fxl_panel_t *panel, uint32_t seq);
 /* 1 while a transfer started by fxl_panel_write has not completed, else 0
- * (also for NULL or an uninitialised panel). Never waits: for a wait hook
- * that sleeps with interrupts masked, and for work between transfers. */
+ * (also for NULL, and for a zeroed panel fxl_panel_init has not set up).
+ * Never waits: for a wait hook that sleeps with interrupts masked, and for
+ * work between transfers. */
 int fxl_panel_busy(const fxl_panel_t *panel);
 /* DISPON / DISPOFF. */
 fxl_status_t fxl_panel_display(fxl_panel_t *panel, int on);
