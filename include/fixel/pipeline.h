@@ -379,8 +379,9 @@ typedef fxl_status_t (*fxl_emit_fn)(void *user, const fxl_vertex_t tri[3]);
 
 /* Transform, light, texgen, clip, project, cull a mesh and hand each
  * surviving triangle (a clipped polygon becomes a fan) to fn. stats (may be
- * NULL): triangles and culled_outside count mesh triangles rejected whole by
- * the clip planes, culled_backface the fan triangles culled here. With a
+ * NULL): culled_outside counts mesh triangles rejected whole by the clip
+ * planes, culled_backface the fan triangles culled here, and triangles
+ * both (the triangles handed to fn are counted by whoever draws them). With a
  * vertex cache set, writes p->vcache (the pipeline itself is not changed). */
 fxl_status_t fxl_pipeline_emit(const fxl_pipeline_t *p, const fxl_mesh_t *m, fxl_emit_fn fn,
                                void *user, fxl_stats_t *stats);
