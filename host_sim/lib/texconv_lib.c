@@ -708,7 +708,10 @@ static int is_identifier(const char *s)
         "enum", "extern", "float", "for", "goto", "if", "inline", "int", "long", "register",
         "restrict", "return", "short", "signed", "sizeof", "static", "struct", "switch",
         "typedef", "union", "unsigned", "void", "volatile", "while", "_Bool", "_Complex",
-        "_Imaginary"};
+        "_Imaginary",
+        /* not a keyword, but an array of that name does not compile with
+         * -Werror (-Wmain) and clashes with the program's own */
+        "main"};
     const char *p = s;
     size_t k;
     if (*p == '\0' || (*p >= '0' && *p <= '9'))
@@ -879,7 +882,7 @@ int texconv_main(int argc, char **argv)
         name = name_buf;
     }
     if (!is_identifier(name)) {
-        fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword, or a name "
+        fprintf(stderr, "fixel-texconv: %s '%s' is not a C identifier (or is a C keyword or main, or a name "
                         "<stdint.h> or fixel uses: *_t, fxl_*, FXL_*, FIXEL_*, _X*, __*, *_MAX, *_MIN, *_WIDTH, *_C); "
                         "choose another with --name\n",
                 name == name_buf ? "the name taken from the input file," : "--name", name);

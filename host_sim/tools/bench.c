@@ -864,16 +864,18 @@ static int cmd_frontend_run(void)
     return 0;
 }
 
-/* counts[mesh][level][cache], NAN when absent. */
-static void fe_read(const char *path, int fw, double counts[NFE_MESHES][BENCH_FE_LEVELS][2])
+/* counts[mesh][level][cache], NAN when absent. 0, or -1 when `path` names
+ * a file that cannot be read (NULL: no file). */
+static int fe_read(const char *path, int fw, double counts[NFE_MESHES][BENCH_FE_LEVELS][2])
 {
     FILE *f = path ? fopen(path, "r") : NULL;
     char line[256];
     double per_tick = NAN;
     if (!f) {
-        if (path)
-            fprintf(stderr, "fixel-bench: cannot read %s\n", path);
-        return;
+        if (!path)
+            return 0;
+        fprintf(stderr, "fixel-bench: cannot read %s\n", path);
+        return -1;
     }
     while (fgets(line, sizeof line, f)) {
         char a[64], b[64], st[16];
@@ -899,6 +901,7 @@ static void fe_read(const char *path, int fw, double counts[NFE_MESHES][BENCH_FE
                     counts[mi][lv][c] = v;
     }
     fclose(f);
+    return 0;
 }
 
 static int cmd_frontend(const options_t *o)
@@ -912,9 +915,10 @@ static int cmd_frontend(const options_t *o)
         for (lv = 0; lv < BENCH_FE_LEVELS; lv++)
             for (c = 0; c < 2; c++)
                 host[mi][lv][c] = m4[mi][lv][c] = m0[mi][lv][c] = NAN;
-    fe_read(o->host_ir, 0, host);
-    fe_read(o->m4, 1, m4);
-    fe_read(o->m0, 1, m0);
+    /* a file named and unreadable is an error (it printed the message and
+     * went on with empty columns, exit 0) */
+    if (fe_read(o->host_ir, 0, host) != 0 || fe_read(o->m4, 1, m4) != 0 || fe_read(o->m0, 1, m0) != 0)
+        return 1;
     if (o->csv) {
         csv = fopen(o->csv, "w");
         if (!csv) {
@@ -1058,7 +1062,11 @@ static int cmd_count_trace(const char *nm)
     uint64_t unclosed = 0;
     long n = bench_read_nm(nm, ranges, 4096, "bench_begin", &begin, "bench_end", &end);
     size_t seg, i;
-    if (n <= 0) {
+    if (n < 0) {
+        fprintf(stderr, "fixel-bench: cannot read %s\n", nm);
+        return 1;
+    }
+    if (n == 0) {
         fprintf(stderr, "fixel-bench: no function ranges in %s\n", nm);
         return 1;
     }
@@ -1173,11 +1181,18 @@ int main(int argc, char **argv)
         }
         return cmd_count_trace(argv[2]);
     }
+    /* gen-fw's output file comes first: an option there was taken for it
+     * (gen-fw --meshes 3 wrote a file named --meshes) */
+    if (strcmp(cmd, "gen-fw") == 0 && (argc < 3 || argv[2][0] == '-' || argv[2][0] == '\0')) {
+        fprintf(stderr, "fixel-bench: gen-fw needs OUT.c before its options\n");
+        return 2;
+    }
     /* options come in pairs: name, value */
     for (i = (strcmp(cmd, "gen-fw") == 0 ? 3 : 2); i < argc; i += 2) {
         const char *a = argv[i];
         const char **dst = NULL;
-        if (i + 1 >= argc) {
+        /* an empty value is never meant: --plot-dir '' wrote into / */
+        if (i + 1 >= argc || argv[i + 1][0] == '\0') {
             fprintf(stderr, "fixel-bench: %s needs a value\n", a);
             return 2;
         }
@@ -1209,8 +1224,10 @@ int main(int argc, char **argv)
             /* atoi took "abc" and "-5" for 0 timing runs without a word */
             char *end;
             long v = strtol(argv[i + 1], &end, 10);
-            if (end == argv[i + 1] || *end != '\0' || v < 0 || v > 1000000) {
-                fprintf(stderr, "fixel-bench: %s wants a whole number 0..1000000, got '%s'\n", a,
+            /* --runs: time_frame keeps at most 15 (it capped more silently) */
+            const long most = a[2] == 'm' ? 1000000 : 15;
+            if (end == argv[i + 1] || *end != '\0' || v < 0 || v > most) {
+                fprintf(stderr, "fixel-bench: %s wants a whole number 0..%ld, got '%s'\n", a, most,
                         argv[i + 1]);
                 return 2;
             }
@@ -1238,13 +1255,9 @@ int main(int argc, char **argv)
         return cmd_frontend_run();
     if (strcmp(cmd, "frontend") == 0)
         return cmd_frontend(&o);
-    if (strcmp(cmd, "gen-fw") == 0) {
-        if (argc < 3) {
-            usage(stderr);
-            return 2;
-        }
+    if (strcmp(cmd, "gen-fw") == 0)
         return cmd_gen_fw(argv[2], &o);
-    }
+    fprintf(stderr, "fixel-bench: unknown command '%s'\n", cmd);
     usage(stderr);
     return 2;
 }

@@ -64,7 +64,7 @@ static int hex_digit(char c)
 static int parse_hex(const char *h, uint8_t *b, size_t cap, size_t *n)
 {
     size_t len = strlen(h), i;
-    if (len % 2 != 0 || len / 2 > cap)
+    if (len == 0 || len % 2 != 0 || len / 2 > cap)   /* '' replayed a 0-byte case */
         return -1;
     for (i = 0; i < len / 2; i++) {
         int hi = hex_digit(h[2 * i]), lo = hex_digit(h[2 * i + 1]);
@@ -107,10 +107,10 @@ static double now_s(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static void usage(void)
+static void usage(FILE *to)
 {
-    fprintf(stderr, "usage: fixel-fuzz [--cases N] [--seed S] [--start I] [--long] [--bytes B]\n"
-                    "                  [--replay HEX] [--stop-after K] [--quiet]\n");
+    fprintf(to, "usage: fixel-fuzz [--cases N] [--seed S] [--start I] [--long] [--bytes B]\n"
+                "                  [--replay HEX] [--stop-after K] [--quiet]\n");
 }
 
 int main(int argc, char **argv)
@@ -137,7 +137,7 @@ int main(int argc, char **argv)
                                                            : NULL;
         if ((num != NULL || !strcmp(argv[a], "--replay")) && a + 1 >= argc) {
             fprintf(stderr, "fixel-fuzz: %s needs a value\n", argv[a]);
-            usage();
+            usage(stderr);
             return 2;
         }
         if (num != NULL) {
@@ -150,9 +150,12 @@ int main(int argc, char **argv)
             cases = 100000000u;
         else if (!strcmp(argv[a], "--quiet"))
             quiet = 1;
-        else {
+        else if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
+            usage(stdout);
+            return 0;
+        } else {
             fprintf(stderr, "fixel-fuzz: unknown option '%s'\n", argv[a]);
-            usage();
+            usage(stderr);
             return 2;
         }
     }

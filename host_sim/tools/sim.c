@@ -202,6 +202,7 @@ static int parse_args(int argc, char **argv, options_t *o)
         "--depth", "--format", "-o",      "--gallery", "--animate",  "--panel",    "--rotation",
         "--band-rows", "--texture", NULL};
     int i, v, mip_given = 0, scene_given = 0, rotation_given = 0, band_rows_given = 0;
+    int format_given = 0, size_given = 0;
     memset(o, 0, sizeof(*o));
     o->scene = "floor";
     o->persp = 16;
@@ -221,7 +222,9 @@ static int parse_args(int argc, char **argv, options_t *o)
         long n;
         for (w = with_value; *w != NULL; w++) {
             if (strcmp(a, *w) == 0) {
-                if (i + 1 >= argc) {
+                /* an empty value is never meant: -o '' rendered the whole
+                 * frame before the write failed */
+                if (i + 1 >= argc || argv[i + 1][0] == '\0') {
                     fprintf(stderr, "fixel-sim: option %s needs a value (see --help)\n", a);
                     return -1;
                 }
@@ -289,7 +292,9 @@ static int parse_args(int argc, char **argv, options_t *o)
                 return -1;
             }
             o->format = (fxl_pixfmt_t)v;
+            format_given = 1;
         } else if (strcmp(a, "--size") == 0) {
+            size_given = 1;
             if (parse_size(val, &o->width, &o->height) != 0) {
                 fprintf(stderr, "fixel-sim: bad --size '%s' (expected WxH, each 1..%d)\n", val,
                         FXL_TARGET_MAX_DIM);
@@ -377,6 +382,13 @@ static int parse_args(int argc, char **argv, options_t *o)
     if ((o->gallery_dir != NULL || o->gallery_crc) && o->out_png != NULL) {
         fprintf(stderr, "fixel-sim: --gallery writes into its DIR and --gallery-crc to stdout; "
                         "drop -o\n");
+        return -1;
+    }
+    /* the panel mode's size and format are the panel's, and it prints its
+     * own wire and frame CRCs: these were dropped without a word */
+    if (o->panel != NULL && (format_given || size_given || o->crc)) {
+        fprintf(stderr, "fixel-sim: --panel draws at the panel's size in its wire format and "
+                        "prints its CRCs; drop --format, --size and --crc\n");
         return -1;
     }
     if (o->panel == NULL && (rotation_given || band_rows_given)) {
@@ -482,8 +494,14 @@ static int write_png(const char *path, const fxl_target_t *t)
 
 static int make_dir(const char *dir)
 {
+    struct stat st;
     if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "fixel-sim: cannot create directory '%s': %s\n", dir, strerror(errno));
+        return -1;
+    }
+    /* EEXIST may be a file: frames went to DIR/cube_000.png and failed */
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "fixel-sim: '%s' exists and is not a directory\n", dir);
         return -1;
     }
     return 0;
@@ -716,10 +734,12 @@ static int run_animate(const options_t *o)
         total_ms += ms;
         job_free(&j);
     }
-    fprintf(stderr, "p_cube: %d frames (%s %s) in %s/cube_000.png .. cube_%03d.png, %.0f "
-                    "pixels/frame, %.3f ms/frame\n",
-            o->animate, name_of(persp_names, d.persp), filter_label(&d), o->out_png,
-            o->animate - 1, (double)pixels / o->animate, total_ms / o->animate);
+    /* the frames drawn (i): a failed write stops the loop early */
+    if (i > 0)
+        fprintf(stderr, "p_cube: %d of %d frames (%s %s) in %s/cube_000.png .. cube_%03d.png, %.0f "
+                        "pixels/frame, %.3f ms/frame\n",
+                i, o->animate, name_of(persp_names, d.persp), filter_label(&d), o->out_png, i - 1,
+                (double)pixels / i, total_ms / i);
     return failed;
 }
 

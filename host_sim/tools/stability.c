@@ -1207,14 +1207,15 @@ int main(int argc, char **argv)
 {
     int a;
     for (a = 1; a < argc; a++) {
-        if (!strcmp(argv[a], "--out") && a + 1 < argc)
+        /* the empty test first: --out '' wrote every file into / */
+        if (!strcmp(argv[a], "--out") && (a + 1 >= argc || argv[a + 1][0] == '\0')) {
+            fprintf(stderr, "fixel-stability: --out needs a directory\n");
+            return 2;
+        } else if (!strcmp(argv[a], "--out"))
             outdir = argv[++a];
         else if (!strcmp(argv[a], "--quick"))
             quick = 1;
-        else if (!strcmp(argv[a], "--out") && (a + 1 >= argc || argv[a + 1][0] == '\0')) {
-            fprintf(stderr, "fixel-stability: --out needs a directory\n");
-            return 2;
-        } else {
+        else {
             const int help = !strcmp(argv[a], "--help") || !strcmp(argv[a], "-h");
             fprintf(help ? stdout : stderr,
                     "usage: fixel-stability [--out DIR] [--quick]\n"
@@ -1227,7 +1228,10 @@ int main(int argc, char **argv)
             return help ? 0 : 2;
         }
     }
-    mkdir(outdir, 0777);
+    if (mkdir(outdir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "fixel-stability: cannot create '%s': %s\n", outdir, strerror(errno));
+        return 2;
+    }
     errbuf = (double *)malloc(sizeof(double) * TW * TH);
     if (!errbuf)
         return 2;
