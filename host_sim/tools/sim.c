@@ -202,7 +202,7 @@ static int parse_args(int argc, char **argv, options_t *o)
         "--depth", "--format", "-o",      "--gallery", "--animate",  "--panel",    "--rotation",
         "--band-rows", "--texture", NULL};
     int i, v, mip_given = 0, scene_given = 0, rotation_given = 0, band_rows_given = 0;
-    int format_given = 0, size_given = 0;
+    int format_given = 0, size_given = 0, trilinear_given = 0;
     memset(o, 0, sizeof(*o));
     o->scene = "floor";
     o->persp = 16;
@@ -249,6 +249,7 @@ static int parse_args(int argc, char **argv, options_t *o)
         } else if (strcmp(a, "--filter") == 0) {
             if (strcmp(val, "trilinear") == 0) {
                 o->filter = FXL_FILTER_BILINEAR;
+                trilinear_given = 1;
                 if (!mip_given) {
                     o->mip = FXL_MIP_LINEAR;
                 }
@@ -382,6 +383,13 @@ static int parse_args(int argc, char **argv, options_t *o)
     if ((o->gallery_dir != NULL || o->gallery_crc) && o->out_png != NULL) {
         fprintf(stderr, "fixel-sim: --gallery writes into its DIR and --gallery-crc to stdout; "
                         "drop -o\n");
+        return -1;
+    }
+    /* trilinear with --mip none or nearest (either order) drew bilinear
+     * without a word */
+    if (trilinear_given && o->mip != FXL_MIP_LINEAR) {
+        fprintf(stderr, "fixel-sim: --filter trilinear is bilinear with --mip linear; drop --mip or "
+                        "take --filter bilinear\n");
         return -1;
     }
     /* the panel mode's size and format are the panel's, and it prints its
@@ -654,7 +662,8 @@ static int run_gallery(const options_t *o)
     }
     printf("fixel gallery: 320x240 native RGB565, depth on, subdiv16 unless stated; ms/frame is\n"
            "the median of %d renders (clear + draw; panel: front end + bands + driver +\n"
-           "emulator); crc32 as in tests/golden/gallery_crc.txt\n",
+           "emulator); crc32 of the frame's pixels, golden where tests/golden/gallery_crc.txt\n"
+           "lists the image (the mip comparison's panels are checked as one composite)\n",
            TIMING_RUNS);
     table_header();
     for (i = 0; i < gallery_count(); i++) {
