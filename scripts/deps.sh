@@ -49,12 +49,16 @@ check_cmake() {
     local major=${v%%.*} minor=${v#*.}
     if [ -z "$v" ] || [ "$major" -lt 3 ] || { [ "$major" -eq 3 ] && [ "$minor" -lt 20 ]; }; then
         # Debian 11 (bullseye) ships 3.18: its backports carry a newer one.
-        local codename=""
-        [ -r /etc/os-release ] && codename=$(sed -n 's/^VERSION_CODENAME=//p' /etc/os-release)
-        if [ -n "$codename" ] && have apt-get; then
+        # (Other releases' backports may not; no guess for them.)
+        local id="" codename=""
+        if [ -r /etc/os-release ]; then
+            id=$(sed -n 's/^ID=//p' /etc/os-release | tr -d '"')
+            codename=$(sed -n 's/^VERSION_CODENAME=//p' /etc/os-release | tr -d '"')
+        fi
+        if [ "$id" = debian ] && [ "$codename" = bullseye ] && have apt-get; then
             notes+=("cmake ${v:-?} is older than 3.20; as root, run:
-  echo 'deb http://deb.debian.org/debian $codename-backports main' > /etc/apt/sources.list.d/backports.list
-  apt-get update && apt-get install -y -t $codename-backports cmake")
+  echo 'deb http://deb.debian.org/debian bullseye-backports main' > /etc/apt/sources.list.d/backports.list
+  apt-get update && apt-get install -y -t bullseye-backports cmake")
         else
             notes+=("cmake ${v:-?} is older than 3.20; install cmake 3.20 or newer")
         fi
@@ -178,6 +182,9 @@ apt=("${sudo_cmd[@]}" apt-get -q -o Dpkg::Use-Pty=0)
 echo "deps.sh: ${apt[*]} update"
 if ! "${apt[@]}" update; then
     echo "deps.sh: '${apt[*]} update' failed (network? sources.list?)" >&2
+    # only optional packages missing (ca-certificates on an offline
+    # machine): never an error
+    [ ${#missing[@]} -eq 0 ] && exit 0
     exit 1
 fi
 

@@ -12,7 +12,7 @@
 # instructions per pixel), arm-none-eabi-gcc + qemu-system-arm (Cortex-M
 # figures), riscv64-unknown-elf-gcc + qemu-system-riscv32 (RV32IMAC
 # figures), gnuplot (charts). Environment knobs:
-#   BENCH_RUNS=5     timing runs per configuration (median)
+#   BENCH_RUNS=5     timing runs per configuration (median; 0..15)
 #   BENCH_TRACE=1    also count floor subdiv16 point/bilinear exactly from a
 #                    QEMU exec trace (a few seconds); 0 skips it
 #   BENCH_OUT=DIR    write the CSVs, charts and footprint there (relative to
@@ -34,6 +34,15 @@ m0w=build-bench-m0
 rvw=build-bench-rv32
 sizew=build-bench-size
 runs=${BENCH_RUNS:-5}
+# fixel-bench keeps at most 15 timings a configuration; checked here, not
+# after the firmware work at the last step
+case "$runs" in
+    '' | *[!0-9]*) echo "bench.sh: BENCH_RUNS wants a whole number 0..15, got '$runs'" >&2; exit 2 ;;
+esac
+if [ "$runs" -gt 15 ]; then
+    echo "bench.sh: BENCH_RUNS wants a whole number 0..15, got '$runs'" >&2
+    exit 2
+fi
 trace=${BENCH_TRACE:-1}
 scripts=host_sim/scripts
 t_start=$SECONDS

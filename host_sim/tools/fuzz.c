@@ -64,7 +64,7 @@ static int hex_digit(char c)
 static int parse_hex(const char *h, uint8_t *b, size_t cap, size_t *n)
 {
     size_t len = strlen(h), i;
-    if (len == 0 || len % 2 != 0 || len / 2 > cap)   /* '' replayed a 0-byte case */
+    if (len % 2 != 0 || len / 2 > cap)   /* '' is the 0-byte case libFuzzer tries first */
         return -1;
     for (i = 0; i < len / 2; i++) {
         int hi = hex_digit(h[2 * i]), lo = hex_digit(h[2 * i + 1]);

@@ -260,6 +260,7 @@ static int parse_args(int argc, char **argv, options_t *o)
                 return -1;
             }
             o->filter = (uint8_t)v;
+            trilinear_given = 0;   /* the last --filter wins */
         } else if (strcmp(a, "--mip") == 0) {
             if (lookup(mip_names, a, val, &v) != 0) {
                 return -1;
@@ -713,7 +714,7 @@ static int run_gallery_crc(void)
 static int run_animate(const options_t *o)
 {
     fxl_draw_t d;
-    int i, failed = 0;
+    int i, failed = 0, written = 0;
     unsigned long pixels = 0;
     double total_ms = 0.0;
     if (make_dir(o->out_png) != 0) {
@@ -739,16 +740,19 @@ static int run_animate(const options_t *o)
         if (o->crc) {
             printf("%s 0x%08lX\n", path, (unsigned long)fxl_host_crc_target(&j.frame.target));
         }
-        pixels += s.pixels;
-        total_ms += ms;
+        if (!failed) {
+            written++;
+            pixels += s.pixels;
+            total_ms += ms;
+        }
         job_free(&j);
     }
-    /* the frames drawn (i): a failed write stops the loop early */
-    if (i > 0)
+    /* the frames written: a failed write stops the loop early */
+    if (written > 0)
         fprintf(stderr, "p_cube: %d of %d frames (%s %s) in %s/cube_000.png .. cube_%03d.png, %.0f "
                         "pixels/frame, %.3f ms/frame\n",
-                i, o->animate, name_of(persp_names, d.persp), filter_label(&d), o->out_png, i - 1,
-                (double)pixels / i, total_ms / i);
+                written, o->animate, name_of(persp_names, d.persp), filter_label(&d), o->out_png,
+                written - 1, (double)pixels / written, total_ms / written);
     return failed;
 }
 
