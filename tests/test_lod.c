@@ -451,28 +451,35 @@ void test_lod_bound_holds_inside_the_triangle_and_settles_level_0(void)
     TEST_ASSERT_GREATER_THAN(1000, settled);
 }
 
+/* The 512 x 512 texture, a default draw of it without depth and a 320 x 240
+ * target whose spans probe_seg records (probe_lod, probe_level). */
+static void probe_draw_setup(fxl_texture_t *t, fxl_target_t *tg, fxl_draw_t *d)
+{
+    static uint16_t buf[320 * 240];
+    tex512(t);
+    fxl_draw_defaults(d);
+    d->texture = t;
+    d->depth = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
+    probe_base = buf;
+}
+
 /* Bias shifts the LOD by exactly the bias (before clamping); per-triangle
  * mode uses the triangle value for every pixel. */
 void test_lod_bias_and_per_triangle_mode(void)
 {
     TEST_NEEDS(FXL_HAVE_MIPMAP);
-    static uint16_t buf[320 * 240];
     fxl_texture_t t;
     fxl_target_t tg;
     fxl_draw_t d;
     fxl_vertex_t tri[3];
     int32_t lod0[1], tri_lod;
     int x;
-    tex512(&t);
+    probe_draw_setup(&t, &tg, &d);
     /* A flat (constant-depth) triangle: every pixel has the same LOD. */
     tri[0] = vtx(10, 10, 0.5, 0, 0);
     tri[1] = vtx(74, 10, 0.5, 1, 0);
     tri[2] = vtx(10, 74, 0.5, 0, 1);
-    fxl_draw_defaults(&d);
-    d.texture = &t;
-    d.depth = 0;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
-    probe_base = buf;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
     lod0[0] = probe_lod[20 * 320 + 20];
     /* 512 texels over 64 px: 8 texels per pixel, LOD 3 */
@@ -515,21 +522,15 @@ void test_lod_bias_and_per_triangle_mode(void)
 void test_lod_per_triangle_of_collinear_coordinates_is_level_0_per_segment_is_not(void)
 {
     TEST_NEEDS(FXL_HAVE_MIPMAP);
-    static uint16_t buf[320 * 240];
     fxl_texture_t t;
     fxl_target_t tg;
     fxl_draw_t d;
     fxl_vertex_t tri[3];
-    tex512(&t);
+    probe_draw_setup(&t, &tg, &d);
     tri[0] = vtx(10, 10, 0.5, 0.25, 0);
     tri[1] = vtx(74, 10, 0.5, 0.25, 0);
     tri[2] = vtx(10, 74, 0.5, 0.25, 4);
     TEST_ASSERT_EQUAL_INT(-128 * 256, fxl_lod_triangle_q8(&t, tri));
-    fxl_draw_defaults(&d);
-    d.texture = &t;
-    d.depth = 0;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&tg, buf, 320, 240, 320, FXL_PIXFMT_RGB565));
-    probe_base = buf;
     d.lod = FXL_LOD_SEGMENT;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&tg, &d, tri, NULL, probe_seg));
     TEST_ASSERT_INT_WITHIN(2, 5 * 256, probe_lod[20 * 320 + 20]);

@@ -36,10 +36,7 @@ sizew=build-bench-size
 runs=${BENCH_RUNS:-5}
 # fixel-bench keeps at most 15 timings a configuration; checked here, not
 # after the firmware work at the last step
-case "$runs" in
-    '' | *[!0-9]*) echo "bench.sh: BENCH_RUNS wants a whole number 0..15, got '$runs'" >&2; exit 2 ;;
-esac
-if [ "$runs" -gt 15 ]; then
+if ! [[ "$runs" =~ ^[0-9]+$ ]] || [ "$runs" -gt 15 ]; then
     echo "bench.sh: BENCH_RUNS wants a whole number 0..15, got '$runs'" >&2
     exit 2
 fi
