@@ -27,8 +27,8 @@
 
 /* Helpers that GCC -Os copies into each of their call sites in
  * fxl__auto_bound: out of line in size builds (a few calls a triangle's
- * set-up) they are 76 bytes less Cortex-M4 code (fifty-fourth session).
- * Speed builds keep them inline. */
+ * set-up) they are 76 bytes less Cortex-M4 code. Speed builds keep them
+ * inline. */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
 #define AUTO_SIZE_NOINLINE __attribute__((noinline))
 #else

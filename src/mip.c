@@ -75,10 +75,10 @@ static uint32_t expand6(uint32_t c) { return (c << 2) | (c >> 4); }
  * strictly increasing table of `count` entries: binary search for the first
  * entry >= sum / n, then compare with the one below; an exact tie goes to
  * the higher code. Compared as n t against sum (<= 4 * 65535), so the mean
- * is never rounded first: rounding it to an integer, as before the
- * fifty-fifth session, picked the farther code when the exact mean lay
- * within half a unit of the midpoint (L8 {140, 28} in gamma 2.2: 104 for
- * a mean nearer 103; 71 of 268,920 texels in a review's sweep). */
+ * is never rounded first: rounding it to an integer picks the farther
+ * code when the exact mean lies within half a unit of the midpoint (L8
+ * {140, 28} in gamma 2.2: 104 for a mean nearer 103; 71 of 268,920 texels
+ * in a review's sweep). */
 static uint32_t encode_lin(const uint16_t *table, uint32_t count, uint32_t sum, uint32_t n)
 {
     uint32_t lo = 0, hi = count - 1u, mid;

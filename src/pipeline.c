@@ -175,8 +175,8 @@ fxl_status_t fxl_mat4_rotate_axis(fxl_mat4_t *m, const fxl_vec3_t *axis, fxl_ang
         return FXL_ERR_RANGE;
     /* The tolerance is for the q16 rounding of a unit axis, not a scale:
      * the axis is made unit length (q30) first, so the result is a rotation
-     * (before the fifty-fifth session an axis 2^-8 long scaled by up to
-     * 2^-6: m[1][1] 1.0157 at 180 degrees about (0, 65792, 0)). */
+     * (left unnormalised, an axis 2^-8 long would scale by up to 2^-6:
+     * m[1][1] 1.0157 at 180 degrees about (0, 65792, 0)). */
     if (normalize_q30(ax, ax) != FXL_OK) return FXL_ERR_RANGE;
     fxl__sincos_q30(a, &s30, &c30);
     omc = ((int64_t)1 << 30) - c30; /* 1 - cos, q30, in [0, 2^31] */

@@ -75,9 +75,9 @@ static void polar(const fxl_texgen_t *tg, const fxl_vec3_t *pos, int32_t out[3])
 
 /* The non-pole u's shifted by whole periods to span as little as they can
  * (the circle cut at the widest gap between them), the first of them kept
- * where it is. Shifting each to within half a period of the first, as
- * before the fifty-fifth session, left 0.5, 0.75, 0 spanning 0.75 where
- * 0.5, 0.75, 1 spans 0.5 (a review). */
+ * where it is. Shifting each to within half a period of the first
+ * instead would leave 0.5, 0.75, 0 spanning 0.75 where 0.5, 0.75, 1 spans
+ * 0.5 (a review). */
 static void fix_seam(int64_t u[3], const int pole[3])
 {
     int64_t w[3], gap = -1, lo = 65536, hi = 0;
