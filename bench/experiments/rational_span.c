@@ -1,6 +1,6 @@
 /* rational_span.c - an experiment, not part of the core: what a pixel of a
  * "rational" AUTO segment would cost on a Cortex-M4 (docs/design.md,
- * "Open: the rolled floor").
+ * "The rolled floor").
  *
  * Between an exact point and the next, perspective interpolation is exact
  * in the form u(m) = u0 + m C_u rho(m), with rho(m) = q0 / q(m) and

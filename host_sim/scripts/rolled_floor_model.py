@@ -15,7 +15,7 @@ change of q = 1/w a pixel) and asks for the longest power-of-two segment,
   rational   L |u'| 1.2 eta^2,  L <= 1 / (2 eta)
              perspective interpolation between exact ends, 1/q stepped by
              one Newton step a pixel from the previous pixel's value
-             (docs/design.md, "Open: the rolled floor")
+             (docs/design.md, "The rolled floor")
   rational+p the same with a linear predictor, L |u'| 4.8 eta^4, with
              q kept within 2x (or 4x: rational+p4) of the segment's start
              and |delta u| <= 4096 texels (fixed-point range)
