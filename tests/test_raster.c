@@ -3034,6 +3034,26 @@ void test_draw_api_errors(void)
     d.texture = base;
     d.texenv = 9;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL));
+    /* One past the last value of each mode is refused too (a limit
+     * compared with > instead of >= would take it). */
+    {
+        int field;
+        for (field = 0; field < 5; field++) {
+            fxl_draw_defaults(&d);
+            d.texture = base;
+            if (field == 0)
+                d.texenv = FXL_TEXENV_DECAL + 1;
+            else if (field == 1)
+                d.filter = FXL_FILTER_BILINEAR + 1;
+            else if (field == 2)
+                d.mip = FXL_MIP_LINEAR + 1;
+            else if (field == 3)
+                d.lod = FXL_LOD_TRIANGLE + 1;
+            else
+                d.shade = FXL_SHADE_GOURAUD + 1;
+            TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, v, NULL), "one past a mode");
+        }
+    }
     fxl_draw_defaults(&d);
     d.texture = base;
     v[1].inv_w = 0;
@@ -3059,7 +3079,7 @@ void test_draw_api_errors(void)
         const fxl_vertex_t big[3] = {vtx(-40, -40, 0.5, 0, 0), vtx(4 * W, -40, 0.5, 1, 0),
                                      vtx(-40, 4 * H, 0.5, 0, 1)};
         int side, k;
-        for (side = 0; side < 5; side++) {
+        for (side = 0; side < 6; side++) {
             for (k = 0; k < W * (H + 1); k++)
                 guarded[k] = 0x5A5Au;
             fxl_target_init(&t, guarded, W, H, W, drawable_rgb565());
@@ -3071,8 +3091,10 @@ void test_draw_api_errors(void)
                 t.clip.x1 = W + 1;
             else if (side == 3)
                 t.clip.y1 = H + 1;
-            else
+            else if (side == 4)
                 t.stride = FXL_TARGET_MAX_DIM * 4 + 1;   /* past the documented limit */
+            else
+                t.stride = W - 1;   /* rows would overlap */
             TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_ARG, fxl_draw_triangle(&t, &d, big, NULL), "edited target");
             for (k = 0; k < W * (H + 1); k++)
                 TEST_ASSERT_EQUAL_HEX16(0x5A5Au, guarded[k]);

@@ -408,22 +408,25 @@ void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
 {
     static uint16_t texels[16];
     const uint16_t white = 0xFFFFu, red = 0xF800u;
-    int axis, filt, mip, lodm, bias, checked = 0;
+    int shape, axis, filt, mip, lodm, bias, checked = 0, narrow;
     char ctx[200];
     int i;
     for (i = 0; i < 16; i++)
         texels[i] = white;
-    for (axis = 0; axis < 2; axis++)
-        for (filt = 0; filt < 2; filt++)
+    /* the border axis u or v, 2 texels wide, then 1 (level 0 already its
+     * last level along that axis: a second level must not step past it) */
+    for (shape = 0; shape < 4; shape++)
+        for (filt = 0, axis = shape & 1, narrow = shape >> 1; filt < 2; filt++)
             for (mip = FXL_MIP_NEAREST; mip <= FXL_MIP_LINEAR; mip++)
                 for (lodm = 0; lodm < 2; lodm++)
-                    for (bias = 0; bias < 2; bias++) {
+                    for (bias = 0; bias < 3; bias++) {
                         static uint16_t px[8 * 8];
                         fxl_texture_t tex;
                         fxl_draw_t d;
                         int32_t cu[3], cv[3];
                         int k;
-                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, axis ? 4 : 2, axis ? 2 : 4,
+                        const int32_t side = narrow ? 1 : 2;
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, axis ? 4 : side, axis ? side : 4,
                                                                         FXL_TEXFMT_RGB565, 3));
                         tex.border = red;
                         if (axis) { /* the border axis is the short one: v on 4x2 */
@@ -435,13 +438,16 @@ void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
                         }
                         exact_draw(&d, &tex, mip, filt);
                         d.lod = (uint8_t)lodm;
-                        d.lod_bias_q8 = (int16_t)(bias ? 10 * 256 : -10 * 256);
+                        /* bias 2: none, with the other axis minified
+                         * (below) so two levels blend */
+                        d.lod_bias_q8 = (int16_t)(bias == 2 ? 0 : bias ? 10 * 256 : -10 * 256);
                         if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
                             continue;
                         for (k = 0; k < 3; k++) {
                             /* the border axis from 1.55 to 1.9, the other from
-                             * 0 to 0.8 */
-                            const int32_t b = k == 0 ? 101581 : 124518, o = k == 0 ? 0 : 52429;
+                             * 0 to 0.8 (bias 2: to 6, ~1.1 texels a pixel) */
+                            const int32_t b = k == 0 ? 101581 : 124518,
+                                          o = k == 0 ? 0 : bias == 2 ? FXL_Q16_INT(6) : 52429;
                             cu[k] = axis ? o : b;
                             cv[k] = axis ? b : o;
                         }
@@ -451,8 +457,10 @@ void test_border_axis_stays_outside_on_levels_past_the_short_side(void)
                                 snprintf(ctx, sizeof ctx,
                                          "%s texture, border on %c, filter %d, mip %d, lod %d, bias %s: pixel %d is "
                                          "%04X, want the border %04X",
-                                         axis ? "4x2" : "2x4", axis ? 'v' : 'u', filt, mip, lodm,
-                                         bias ? "+10 (the 1x1 level)" : "-10 (level 0)", k, px[k], red);
+                                         axis ? (narrow ? "4x1" : "4x2") : (narrow ? "1x4" : "2x4"), axis ? 'v' : 'u',
+                                         filt, mip, lodm,
+                                         bias == 2 ? "0 (levels 0 and 1 blend)" : bias ? "+10 (the 1x1 level)" : "-10 (level 0)",
+                                         k, px[k], red);
                                 TEST_FAIL_MESSAGE(ctx);
                             }
                         checked++;
