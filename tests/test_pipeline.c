@@ -144,6 +144,12 @@ static void test_acos_asin_error_over_all_inputs(void)
     printf("acos max error %.6f LSB, asin %.6f LSB\n", max_c, max_s);
     TEST_ASSERT_EQUAL_INT32(32768, fxl_acos_angle(-2 * 65536)); /* clamped */
     TEST_ASSERT_EQUAL_INT32(-16384, fxl_asin_angle(-65536));
+    /* clamped on both sides, for both functions */
+    TEST_ASSERT_EQUAL_INT32(0, fxl_acos_angle(98304));
+    TEST_ASSERT_EQUAL_INT32(16384, fxl_asin_angle(98304));
+    TEST_ASSERT_EQUAL_INT32(-16384, fxl_asin_angle(-98304));
+    TEST_ASSERT_EQUAL_INT32(0, fxl_acos_angle(INT32_MAX));
+    TEST_ASSERT_EQUAL_INT32(32768, fxl_acos_angle(INT32_MIN));
 }
 
 /* ---- matrices -------------------------------------------------------------- */

@@ -266,6 +266,7 @@ void test_window_outside_visible_area_is_range_error(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 0, 0, 0, 1));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_panel_set_window(&panel, 134, 0, INT32_MAX, 1));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_dcs_window(&hal, 5, 0, 4, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_dcs_window(&hal, 0, 10, 5, 9));   /* rows reversed */
 }
 
 /* ---- pixels -------------------------------------------------------------- */

@@ -382,7 +382,15 @@ static void test_texgen_rejects_bad_arguments(void)
     fxl_texgen_defaults(&tg);
     tg.mode = 9;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
+    tg.mode = FXL_TEXGEN_CUBE + 1;   /* one past each limit too */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
     tg.mode = FXL_TEXGEN_SPHERICAL;
+    tg.space = FXL_TEXGEN_EYE + 1;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
+    tg.space = FXL_TEXGEN_OBJECT;
+    tg.plane = FXL_PLANE_XZ + 1;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
+    tg.plane = FXL_PLANE_XY;
     tg.axis = 3;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(&tg, p, t));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_texgen_triangle(NULL, p, t));

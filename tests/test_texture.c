@@ -422,8 +422,15 @@ void test_fetch_invalid_descriptor_or_level_reads_nothing(void)
     fill_addressed();
     TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(NULL, 0, 0, 0, &tr));
     TEST_ASSERT_EQUAL_INT(0, tr);
-    /* level 4 does not exist in a 4-level chain */
-    TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(&t, 4, 1, 1, &tr));
+    /* level 4 does not exist in a 4-level chain: the texel just past the
+     * chain (where a level 4 would start) is a canary it must not read */
+    {
+        const uint32_t past = fxl_texture_level_offset(&t, 4);
+        const uint16_t saved = g_rgb[past];
+        g_rgb[past] = 0xBEEFu;
+        TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(&t, 4, 1, 1, &tr));
+        g_rgb[past] = saved;
+    }
     t.wrap_u = 9;
     TEST_ASSERT_EQUAL_HEX16(0, fxl_texture_fetch(&t, 0, 1, 1, &tr));
 }
