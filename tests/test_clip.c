@@ -179,6 +179,31 @@ static void test_clip_vertex_on_guard_plane_is_inside(void)
     }
 }
 
+/* A triangle lying in the near plane (w = near at every vertex) or in the
+ * far plane is inside too (distance 0): it passes untouched, not culled
+ * and not cut. */
+static void test_clip_triangle_in_near_or_far_plane_is_inside(void)
+{
+    fxl_xform_t xf = make_xform(1, 10);
+    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+    uint32_t n;
+    int plane, k;
+    for (plane = 0; plane < 2; plane++) {
+        const int64_t w = plane == 0 ? xf.near_q32 : xf.far_q32;
+        memset(in, 0, sizeof in);
+        for (k = 0; k < 3; k++)
+            in[k].w = w;
+        in[1].x = w / 2;
+        in[1].u = 65536;
+        in[2].y = w / 2;
+        in[2].v = 65536;
+        n = 99;
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(3, n, plane == 0 ? "in the near plane" : "in the far plane");
+        TEST_ASSERT_TRUE_MESSAGE(memcmp(in, out, sizeof in) == 0, plane == 0 ? "in the near plane" : "in the far plane");
+    }
+}
+
 static void test_clip_triangle_behind_eye_is_removed(void)
 {
     fxl_xform_t xf = make_xform(0.1, 0);
@@ -798,6 +823,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_clip_inside_triangle_is_unchanged);
     RUN_TEST(test_clip_vertex_on_guard_plane_is_inside);
+    RUN_TEST(test_clip_triangle_in_near_or_far_plane_is_inside);
     RUN_TEST(test_clip_triangle_behind_eye_is_removed);
     RUN_TEST(test_clip_one_vertex_behind_near_gives_quad_on_plane);
     RUN_TEST(test_clip_random_triangles_match_double_reference);
