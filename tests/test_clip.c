@@ -146,6 +146,31 @@ static void test_clip_inside_triangle_is_unchanged(void)
     TEST_ASSERT_EQUAL_MEMORY(in, out, sizeof in);
 }
 
+/* A triangle with every vertex at depth w: vertex 0 at the origin, vertex
+ * 1 at x = leg (u = 1), vertex 2 at y = leg (v = 1). */
+static void flat_triangle(fxl_clipvert_t in[3], int64_t w, int64_t leg)
+{
+    int k;
+    memset(in, 0, 3 * sizeof in[0]);
+    for (k = 0; k < 3; k++)
+        in[k].w = w;
+    in[1].x = leg;
+    in[1].u = 65536;
+    in[2].y = leg;
+    in[2].v = 65536;
+}
+
+/* The clipper must pass `in` through untouched: not culled, not cut. */
+static void assert_passes_untouched(const fxl_xform_t *xf, const fxl_clipvert_t in[3], const char *what)
+{
+    fxl_clipvert_t out[FXL_CLIP_MAX_VERTS];
+    uint32_t n = 99;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(xf, in, out, &n));
+    snprintf(msg, sizeof msg, "%s: %u vertices out", what, (unsigned)n);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(3, n, msg);
+    TEST_ASSERT_TRUE_MESSAGE(memcmp(in, out, 3 * sizeof in[0]) == 0, msg);
+}
+
 /* A vertex exactly on a guard-band plane (|x| = G w or |y| = G w) is
  * inside (distance 0 >= 0, as for the near plane): the triangle passes
  * through untouched. w = 2 makes G w = guard_q16 * 2^17 exactly in q32. A
@@ -155,27 +180,18 @@ static void test_clip_vertex_on_guard_plane_is_inside(void)
 {
     fxl_xform_t xf = make_xform(1, 0);
     const int64_t w = (int64_t)2 << 32, gw = (int64_t)xf.guard_q16 << 17;
-    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
-    uint32_t n;
+    fxl_clipvert_t in[3];
+    char what[40];
     int pl;
     for (pl = 0; pl < 4; pl++) {
-        memset(in, 0, sizeof in);
-        in[0].w = w;
-        in[1].w = w;
-        in[1].x = (int64_t)1 << 32;
-        in[1].u = 65536;
-        in[2].w = w;
-        in[2].y = (int64_t)1 << 32;
-        in[2].v = 65536;
+        flat_triangle(in, w, (int64_t)1 << 32);
         /* vertex 0 on +x, -x, +y, -y in turn */
         if (pl < 2)
             in[0].x = pl == 0 ? gw : -gw;
         else
             in[0].y = pl == 2 ? gw : -gw;
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
-        snprintf(msg, sizeof msg, "vertex on guard plane %d: %u vertices out", pl, (unsigned)n);
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(3, n, msg);
-        TEST_ASSERT_TRUE_MESSAGE(memcmp(in, out, sizeof in) == 0, msg);
+        snprintf(what, sizeof what, "vertex on guard plane %d", pl);
+        assert_passes_untouched(&xf, in, what);
     }
 }
 
@@ -185,23 +201,11 @@ static void test_clip_vertex_on_guard_plane_is_inside(void)
 static void test_clip_triangle_in_near_or_far_plane_is_inside(void)
 {
     fxl_xform_t xf = make_xform(1, 10);
-    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
-    uint32_t n;
-    int plane, k;
-    for (plane = 0; plane < 2; plane++) {
-        const int64_t w = plane == 0 ? xf.near_q32 : xf.far_q32;
-        memset(in, 0, sizeof in);
-        for (k = 0; k < 3; k++)
-            in[k].w = w;
-        in[1].x = w / 2;
-        in[1].u = 65536;
-        in[2].y = w / 2;
-        in[2].v = 65536;
-        n = 99;
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(3, n, plane == 0 ? "in the near plane" : "in the far plane");
-        TEST_ASSERT_TRUE_MESSAGE(memcmp(in, out, sizeof in) == 0, plane == 0 ? "in the near plane" : "in the far plane");
-    }
+    fxl_clipvert_t in[3];
+    flat_triangle(in, xf.near_q32, xf.near_q32 / 2);
+    assert_passes_untouched(&xf, in, "in the near plane");
+    flat_triangle(in, xf.far_q32, xf.far_q32 / 2);
+    assert_passes_untouched(&xf, in, "in the far plane");
 }
 
 static void test_clip_triangle_behind_eye_is_removed(void)
