@@ -239,7 +239,7 @@ typedef struct fxl__seg {
     int32_t du, dv;         /* per pixel, q16 (the first step) */
     int32_t ddu, ddv;       /* change of du, dv per pixel: 0 but in quadratic segments */
     uint32_t z;             /* inv_w at the first pixel, u0.32 */
-    int32_t dz;
+    int32_t dz;             /* per pixel, u0.32 modulo 2^32 (a one-pixel step can exceed an int32) */
     uint32_t c[3];          /* Gouraud r5, g6, b5 in q16 */
     int32_t dc[3];
     const fxl__level_t *lvl; /* nearest (or lower, for LINEAR) level */

@@ -2198,24 +2198,22 @@ static inline uint32_t step_div_u32(uint32_t d, uint32_t div)
 #endif
 
 #if FXL__V_ANY_Z
-/* sat_i32 of the signed step of z1 - z0 (|z1 - z0| < 2^32), as bits. */
-static inline uint32_t sat_step_bits(uint32_t mag, int neg)
-{
-    if (neg)
-        return mag >= 0x80000000u ? 0x80000000u : 0u - mag;
-    return mag > 0x7FFFFFFFu ? 0x7FFFFFFFu : mag;
-}
-
+/* The signed step of z1 - z0 (|z1 - z0| < 2^32) truncated toward zero,
+ * as bits modulo 2^32, as the generic walk's seg.dz. z is stepped in
+ * uint32, so z0 plus i steps is z0 + i (z1 - z0) / n modulo 2^32, which is
+ * the interpolated value itself for every pixel i < n of the segment even
+ * when one step is 2^31 or more (a one-pixel step across a depth ratio
+ * near 2^32); a step saturated to an int32 stopped there, short of z1. */
 static inline uint32_t step_z_pow2(uint32_t z1, uint32_t z0, int k)
 {
-    return z1 >= z0 ? sat_step_bits((z1 - z0) >> k, 0) : sat_step_bits((z0 - z1) >> k, 1);
+    return z1 >= z0 ? (z1 - z0) >> k : 0u - ((z0 - z1) >> k);
 }
 
 static inline uint32_t step_z_div(uint32_t z1, uint32_t z0, uint32_t div)
 {
     if (div == 0u)
         return 0u;
-    return z1 >= z0 ? sat_step_bits((z1 - z0) / div, 0) : sat_step_bits((z0 - z1) / div, 1);
+    return z1 >= z0 ? (z1 - z0) / div : 0u - (z0 - z1) / div;
 }
 #endif
 
@@ -3167,7 +3165,9 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
                 seg.c[i] = p0->a[FXL__AR + i] + (uint32_t)seg.dc[i] * (uint32_t)off;
             }
         }
-        seg.dz = FXL_HAVE_DEPTH ? sat_i32(STEP((int64_t)p1->z - (int64_t)p0->z)) : 0;
+        /* modulo 2^32, like the fast walks' (step_z_pow2): a one-pixel
+         * step can be 2^31 or more */
+        seg.dz = FXL_HAVE_DEPTH ? fxl__i32_of_bits((uint32_t)(uint64_t)STEP((int64_t)p1->z - (int64_t)p0->z)) : 0;
 #undef STEP
         seg.z = p0->z + (uint32_t)seg.dz * (uint32_t)off;
 

@@ -3230,6 +3230,107 @@ void test_depth_ties_keep_the_first_draw_in_every_walk(void)
     TEST_ASSERT_TRUE(drawn > 0);
 }
 
+/* The depth value a pixel stores (raster.h): its interpolated inv_w >> 16,
+ * floored, one step off the exact value's at most. The exact value is the
+ * plane through the snapped vertices' inv_w, in doubles. Random triangles
+ * with inv_w log-uniform over [2^17, 2^32) (a depth ratio up to 2^15), and
+ * a pair whose depth falls by more than 2^31 in one pixel: (0,0) and (0,8)
+ * at 2^32 - 1, (1.75,0) at 1. There a one-pixel segment's step does not
+ * fit an int32; a saturated step stored 0x36DB for the second pixel, whose
+ * value is 0x2492 (z steps wrap modulo 2^32: z0 + step lands on z1). Every
+ * walk: subdivided 16 and 8, exact, adaptive, affine and Gouraud (generic),
+ * point and bilinear; depth tested against a cleared buffer, so a pixel
+ * whose exact inv_w is 2^17 or more must be drawn. */
+static double exact_inv_w_at(const fxl_vertex_t v[3], int32_t px, int32_t py)
+{
+    double X[3], Y[3], det, a, b, cx = px + 0.5, cy = py + 0.5;
+    int i;
+    for (i = 0; i < 3; i++) {
+        X[i] = fxl_snap_subpx(v[i].x) / (double)FXL__ONE;
+        Y[i] = fxl_snap_subpx(v[i].y) / (double)FXL__ONE;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    /* barycentric weights of vertices 1 and 2 */
+    a = ((cx - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (cy - Y[0])) / det;
+    b = ((X[1] - X[0]) * (cy - Y[0]) - (cx - X[0]) * (Y[1] - Y[0])) / det;
+    return (double)v[0].inv_w + a * ((double)v[1].inv_w - v[0].inv_w) + b * ((double)v[2].inv_w - v[0].inv_w);
+}
+
+void test_depth_values_stay_within_one_step_of_the_exact_plane(void)
+{
+    static uint16_t px[W * H], zb[W * H];
+    static const int16_t persp[6] = {16, 8, FXL_PERSP_EXACT, FXL_PERSP_AUTO, FXL_PERSP_AFFINE, 16};
+    fxl_texture_t tex;
+    fxl_target_t t;
+    fxl_draw_t d;
+    char msg[200];
+    int m, f, k, x, y, checked = 0;
+    long values = 0;
+    TEST_NEEDS(FXL_HAVE_DEPTH);
+    make_texture(&tex);
+    lcg_state = 61u;
+    for (m = 0; m < 6; m++)
+        for (f = 0; f < 2; f++) {
+            fxl_draw_defaults(&d);
+            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+            d.filter = (uint8_t)f;
+            d.persp = persp[m];
+            d.texture = &tex;
+            if (m == 5) {   /* untextured Gouraud: the generic walk */
+                d.texture = NULL;
+                d.shade = FXL_SHADE_GOURAUD;
+            }
+            if (left_out_feature(&d, d.texture, drawable_rgb565(), 1) != NULL)
+                continue;
+            for (k = 0; k < 200; k++) {
+                fxl_vertex_t v[3];
+                int i;
+                if (k == 0) {
+                    v[0] = vtx(0, 0, 0.5, 0, 0);
+                    v[1] = vtx(1.75, 0, 0.5, 1, 0);
+                    v[2] = vtx(0, 8, 0.5, 0, 1);
+                    v[0].inv_w = v[2].inv_w = 0xFFFFFFFFu;
+                    v[1].inv_w = 1u;
+                } else {
+                    random_tri(v, k % 2 ? 40.0 : 12.0);
+                    for (i = 0; i < 3; i++)   /* 2^(17 + 15 r), r in [0, 1) */
+                        v[i].inv_w = (uint32_t)(exp2(17.0 + 15.0 * (rnd() % 65536) / 65536.0));
+                }
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, W, H, W, drawable_rgb565()));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                fxl_target_clear_depth(&t);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, NULL));
+                for (y = 0; y < H; y++)
+                    for (x = 0; x < W; x++) {
+                        const double q = exact_inv_w_at(v, x, y);
+                        const double want = floor(q / 65536.0);
+                        const uint16_t got = zb[y * W + x];
+                        if (!ref_covered(v, x, y)) {
+                            if (got != 0) {
+                                snprintf(msg, sizeof msg, "walk %d filter %d triangle %d: (%d,%d) not covered, depth %04X",
+                                         m, f, k, x, y, got);
+                                TEST_FAIL_MESSAGE(msg);
+                            }
+                            continue;
+                        }
+                        if (got == 0 && q < 131072.0)
+                            continue;   /* may fail the test against 0 */
+                        if (fabs(got - want) > 1.0) {
+                            snprintf(msg, sizeof msg,
+                                     "walk %d filter %d triangle %d: (%d,%d) stores %04X, exact inv_w %.1f (>> 16: %04X)",
+                                     m, f, k, x, y, got, q, (unsigned)want);
+                            TEST_FAIL_MESSAGE(msg);
+                        }
+                        values++;
+                    }
+            }
+            checked++;
+        }
+    snprintf(msg, sizeof msg, "%d walks, %ld depth values checked", checked, values);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE(checked > 0 && values > 1000);
+}
+
 /* Byte-swapped targets get the native pixels byte-swapped, in every walk:
  * point and bilinear, subdivided, exact (whose one-pixel segments have
  * their own code, span_fast.h FXL_T_PIX1) and adaptive, with and without
@@ -3873,6 +3974,7 @@ int main(void)
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
+    RUN_TEST(test_depth_values_stay_within_one_step_of_the_exact_plane);
     RUN_TEST(test_swapped_target_is_the_native_image_byte_swapped);
     RUN_TEST(test_fast_loops_match_generic_loop);
     RUN_TEST(test_modulate_loop_matches_generic_loop);
