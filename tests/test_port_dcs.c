@@ -164,6 +164,39 @@ void test_madctl_per_rotation_for_every_preset(void)
     }
 }
 
+/* The colour order comes from the preset's flags alone (port.h: madctl[]
+ * holds "MY/MX/MV per rotation (BGR is added from flags)"): a BGR bit left
+ * in a madctl entry of a preset without FXL_PANEL_BGR is not sent, so the
+ * ST7789 table with 0x08 added still sends 0x00 / 0x60 / 0xC0 / 0xA0, and
+ * the ILI9341 preset with its BGR flag cleared sends its entries without
+ * 0x08 (0x40, 0x20, 0x80, 0xE0). */
+void test_madctl_bgr_bit_comes_from_the_flags_only(void)
+{
+    static const uint8_t st[4] = { 0x00, 0x60, 0xC0, 0xA0 }, ili[4] = { 0x40, 0x20, 0x80, 0xE0 };
+    static fxl_panel_preset_t pr[2];
+    int i;
+    unsigned r;
+    pr[0] = fxl_st7789_240x320;
+    for (r = 0; r < 4; r++)
+        pr[0].madctl[r] = (uint8_t)(pr[0].madctl[r] | FXL_MADCTL_BGR);
+    pr[1] = fxl_ili9341_240x320;
+    pr[1].flags = (uint8_t)(pr[1].flags & ~FXL_PANEL_BGR);
+    for (i = 0; i < 2; i++) {
+        start_emu(i ? "ili9341" : "st7789");
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &pr[i], 0));
+        for (r = 0; r < 4; r++) {
+            uint32_t exp[2];
+            size_t from = emu.log_len;
+            exp[0] = C(0x36);
+            exp[1] = D(i ? ili[r] : st[r]);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&panel, r));
+            assert_wire(from, exp, 2);
+        }
+        assert_no_protocol_errors();
+        tearDown();
+    }
+}
+
 /* ---- windows ------------------------------------------------------------- */
 
 /* RAM offsets per rotation (derivation in port/st7789.c): the glass at
@@ -540,6 +573,41 @@ void test_preset_addresses_beyond_16_bits_are_refused(void)
     TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
 }
 
+/* An offset plus a side of exactly 65535 is inside the contract ("above
+ * 65535" is refused): the last address it puts on the wire is 65534, which
+ * CASET/RASET's 16 bits hold. Each of the four sums on its own, with the
+ * same presets as above one unit lower. */
+void test_preset_addresses_summing_to_65535_are_accepted(void)
+{
+    int clause;
+    start_emu("st7789");
+    for (clause = 0; clause < 4; clause++) {
+        fxl_panel_preset_t pr = fxl_st7789_240x320;
+        pr.width = clause < 2 ? 200 : 50;
+        pr.height = clause < 2 ? 50 : 200;
+        memset(pr.offset, 0, sizeof pr.offset);
+        if (clause & 1)
+            pr.offset[1].y = 65335;   /* + 200 = 65535 */
+        else
+            pr.offset[1].x = 65335;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_OK, fxl_panel_init(&panel, &hal, &pr, 0), "offset clause");
+    }
+}
+
+/* A preset of zero width or zero height is a bad preset (port.h: "a zero
+ * size"): FXL_ERR_ARG with nothing sent, not an init of an empty panel. */
+void test_preset_of_zero_width_or_height_is_refused(void)
+{
+    fxl_panel_preset_t pr = fxl_st7789_240x320;
+    start_emu("st7789");
+    pr.width = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, &pr, 0));
+    pr.width = 240;
+    pr.height = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_panel_init(&panel, &hal, &pr, 0));
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)emu.log_len);
+}
+
 /* A preset step with more parameters than a step holds is refused before
  * anything is sent (not after the reset and the steps before it). */
 void test_preset_step_longer_than_its_parameters_is_refused(void)
@@ -655,6 +723,75 @@ void test_wait_hook_can_abort_a_stuck_transfer(void)
     panel_emu_flush(&emu);
 }
 
+/* fxl_panel_set_rotation "waits for transfers" (port.h) and the driver
+ * never calls cmd() with a pixel transfer in flight: with the transfer
+ * ending on the third HAL call after pixels(), MADCTL goes out after
+ * exactly three wait() calls, behind the pixel bytes, with no protocol
+ * error. */
+void test_set_rotation_waits_for_the_transfer_in_flight(void)
+{
+    static const uint32_t exp[] = { D(0x12), D(0x34), D(0x56), D(0x78), C(0x36), D(0x60) };
+    uint16_t buf[2];
+    size_t from;
+    buf[0] = to_wire(0x1234u);
+    buf[1] = to_wire(0x5678u);
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    emu.dma_delay = 3;
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_rotation(&panel, 1));
+    TEST_ASSERT_EQUAL_UINT32(3, (uint32_t)emu.waits);
+    TEST_ASSERT_EQUAL_UINT32(1, panel.done);
+    assert_wire(from, exp, COUNT(exp));
+    assert_no_protocol_errors();
+}
+
+/* A wait hook that gives up makes set_rotation return FXL_ERR_IO with no
+ * MADCTL sent (port.h: "every call that waits gives up again"), and the
+ * panel keeps its rotation and size. */
+void test_set_rotation_gives_up_with_the_wait_hook_and_sends_nothing(void)
+{
+    uint16_t buf[2] = { 0, 0 };
+    size_t from;
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
+    emu.dma_delay = 1000000; /* never completes within this test */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
+    panel.hal.wait = failing_wait;
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_set_rotation(&panel, 1));
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)from, (uint32_t)emu.log_len);
+    TEST_ASSERT_EQUAL_INT(0, panel.rotation);
+    TEST_ASSERT_EQUAL_INT(240, panel.width);
+    TEST_ASSERT_EQUAL_INT(320, panel.height);
+    assert_no_protocol_errors();
+    panel_emu_flush(&emu);
+}
+
+/* A MADCTL the HAL failed to send leaves the controller in the old
+ * rotation, so the panel keeps the old rotation and size too ("width/height
+ * follow" the MADCTL): FXL_ERR_IO, still 240 x 320, and the full 240 x 320
+ * window is still the one set afterwards. */
+void test_set_rotation_refused_by_the_hal_keeps_the_old_rotation(void)
+{
+    size_t from;
+    start_emu("st7789");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
+    panel.hal.cmd = failing_cmd;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_set_rotation(&panel, 1));
+    TEST_ASSERT_EQUAL_INT(0, panel.rotation);
+    TEST_ASSERT_EQUAL_INT(240, panel.width);
+    TEST_ASSERT_EQUAL_INT(320, panel.height);
+    panel.hal.cmd = hal.cmd;
+    from = emu.log_len;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 240, 320));
+    expect_window(from, 0, 0, 239, 319);
+    assert_no_protocol_errors();
+}
+
 void test_bad_write_sizes_are_arg_errors(void)
 {
     uint16_t buf[2] = { 0, 0 };
@@ -717,6 +854,18 @@ void test_dcs_run_steps_delays_and_refusals(void)
     }
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_dcs_run(&hal, NULL, 0));
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_dcs_run(&hal, NULL, 1));
+    assert_no_protocol_errors();
+}
+
+/* The shortest delay a step can ask for, 1 ms, is a delay too: a step's
+ * delay_ms > 0 is followed by delay_ms(delay_ms) (fxl_dcs_run, port.h). */
+void test_dcs_run_keeps_a_one_millisecond_delay(void)
+{
+    static const fxl_dcs_step_t steps[] = {{0xB1, 1, 1, {0x05}}, {0xB2, 0, 1, {0}}};
+    static const uint32_t exp[] = {C(0xB1), D(0x05), W(1), C(0xB2), W(1)};
+    start_emu("ili9341");
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_dcs_run(&hal, steps, COUNT(steps)));
+    assert_wire(0, exp, COUNT(exp));
     assert_no_protocol_errors();
 }
 
@@ -816,6 +965,7 @@ int main(void)
     RUN_TEST(test_st7789_init_without_reset_pin_uses_swreset);
     RUN_TEST(test_ili9341_init_exact_bytes);
     RUN_TEST(test_madctl_per_rotation_for_every_preset);
+    RUN_TEST(test_madctl_bgr_bit_comes_from_the_flags_only);
     RUN_TEST(test_full_window_bytes_every_preset_and_rotation);
     RUN_TEST(test_partial_window_bytes_every_preset_and_rotation);
     RUN_TEST(test_window_addresses_above_255_are_big_endian);
@@ -834,14 +984,20 @@ int main(void)
     RUN_TEST(test_init_without_delay_refuses_before_sending_anything);
     RUN_TEST(test_init_refuses_a_pixel_format_other_than_rgb565);
     RUN_TEST(test_preset_addresses_beyond_16_bits_are_refused);
+    RUN_TEST(test_preset_addresses_summing_to_65535_are_accepted);
+    RUN_TEST(test_preset_of_zero_width_or_height_is_refused);
     RUN_TEST(test_preset_step_longer_than_its_parameters_is_refused);
     RUN_TEST(test_missing_reset_and_wait_hooks_still_work);
     RUN_TEST(test_hal_failures_become_io_errors);
     RUN_TEST(test_init_retried_after_a_refused_delay_keeps_the_swreset_gap);
     RUN_TEST(test_wait_hook_can_abort_a_stuck_transfer);
+    RUN_TEST(test_set_rotation_waits_for_the_transfer_in_flight);
+    RUN_TEST(test_set_rotation_gives_up_with_the_wait_hook_and_sends_nothing);
+    RUN_TEST(test_set_rotation_refused_by_the_hal_keeps_the_old_rotation);
     RUN_TEST(test_bad_write_sizes_are_arg_errors);
     RUN_TEST(test_display_off_and_on);
     RUN_TEST(test_dcs_run_steps_delays_and_refusals);
+    RUN_TEST(test_dcs_run_keeps_a_one_millisecond_delay);
     RUN_TEST(test_without_wait_hook_the_driver_waits_for_a_late_completion);
     return UNITY_END();
 }
