@@ -701,6 +701,35 @@ void test_binning_edges_row_zero_and_bins_exactly_full(void)
     fixture_free(f);
 }
 
+/* Without bin memory each triangle is "tested against each band by its
+ * stored band range" (port.h), so the core sees it once per band it
+ * touches, exactly as with bins: y 10..50 touches bands 0..2 (rows 0..71)
+ * and y 100..110 band 4 (rows 96..119), 3 + 1 = 4 submitted triangles,
+ * none culled as outside (each band holds rows of the triangle). Drawing
+ * one into a band outside its range would count it again, culled. */
+void test_fallback_draws_a_triangle_only_in_the_bands_it_touches(void)
+{
+    int mode;
+    for (mode = 0; mode < 2; mode++) {
+        fxl_vertex_t v[3];
+        fxl_draw_t d;
+        fxl_stats_t st;
+        /* mode 0: no bin memory (fallback from the start); 1: room for all */
+        band_fixture_t *f = binning_fixture(&d, mode ? 64u : 0u);
+        flat_tri(v, 10, 50);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+        flat_tri(v, 100, 110);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &d));
+        TEST_ASSERT_EQUAL_INT(!mode, fxl_band_overflowed(&f->band));
+        memset(&st, 0, sizeof st);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_render(&f->band, 0, &st));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(4, st.triangles, mode ? "binned" : "fallback");
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(0, st.culled_outside, mode ? "binned" : "fallback");
+        TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+        fixture_free(f);
+    }
+}
+
 /* A triangle ending less than a pixel above the frame covers no row (row
  * 0's centre is at 0.5) and must be dropped like one far above it: its
  * rows floor(ymax + h) = floor(-0.47) = -1 (band.c floor_px). Division
@@ -856,6 +885,35 @@ void test_draw_error_is_returned_after_the_whole_frame_was_sent(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_render(&f->band, 0, NULL));
     TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)f->emu.transfers);
     TEST_ASSERT_EQUAL_UINT32(f->panel.started, f->panel.done);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
+    fixture_free(f);
+}
+
+/* "The first draw error is returned" (port.h): two draws changed after
+ * they were added, the first (persp 3) to one the core refuses with
+ * FXL_ERR_RANGE, the second (an unknown shade) with FXL_ERR_ARG, both in
+ * bands 0..2. Band 0 draws them in submission order, so the frame's first
+ * error is the first draw's FXL_ERR_RANGE, not the ARG that comes after it
+ * in every band; all 10 bands are still sent. */
+void test_first_of_several_draw_errors_is_returned(void)
+{
+    band_fixture_t *f = fixture();
+    fxl_vertex_t v[3];
+    fxl_draw_t d, first, second;
+    fxl_draw_defaults(&d);
+    flat(&d, 3);
+    need_band_draws();
+    first = d;
+    second = d;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_init(&f->band, &f->panel, f->buf0, f->buf1, DEPTH_BUF(f->depth), 24,
+                                                f->store, 4, f->bins, 64));
+    flat_tri(v, 10, 50);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &first));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_band_add(&f->band, v, &second));
+    first.persp = d_bad.persp;
+    second.shade = 99;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_band_render(&f->band, 0, NULL));
+    TEST_ASSERT_EQUAL_UINT32(10, (uint32_t)f->emu.transfers);
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, f->emu.errors, f->emu.first_error);
     fixture_free(f);
 }
@@ -1230,10 +1288,12 @@ int main(void)
     RUN_TEST(test_triangle_is_listed_once_in_each_band_it_touches);
     RUN_TEST(test_triangle_that_does_not_fit_the_bins_starts_the_fallback);
     RUN_TEST(test_binning_edges_row_zero_and_bins_exactly_full);
+    RUN_TEST(test_fallback_draws_a_triangle_only_in_the_bands_it_touches);
     RUN_TEST(test_triangle_ending_just_above_the_frame_is_dropped);
     RUN_TEST(test_band_api_errors);
     RUN_TEST(test_bad_draw_is_refused_when_added_before_anything_is_sent);
     RUN_TEST(test_draw_error_is_returned_after_the_whole_frame_was_sent);
+    RUN_TEST(test_first_of_several_draw_errors_is_returned);
     RUN_TEST(test_band_buffers_at_odd_addresses_are_refused_before_anything_is_sent);
     RUN_TEST(test_render_scene_helper_matches_full_frame);
     RUN_TEST(test_bands_alternate_buffers_and_the_next_is_drawn_while_one_is_sent);
