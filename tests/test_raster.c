@@ -2919,6 +2919,58 @@ void test_row_const_walk_declined_spans_match_generic(void)
         TEST_ASSERT_EQUAL_INT(80, drawn);
 }
 
+/* The one-texel-row walk (FXL_T_LROW) runs whole segments only up to the
+ * span's last pixel, which ends the last segment (span_fast.h: the bound
+ * min(cr, xr - 1)), as the generic walk does. Ending a run on the
+ * correction point one past the last pixel instead gives the same line of
+ * u with other truncations, so it shows only where a step's rounding moves
+ * a pixel across a texel boundary: this triangle (found by a search over
+ * random ones) has such a pixel inside a clip of x 13 to 124. One inv_w
+ * on every vertex (q constant) and v 0.5, subdiv 4, point; every variant
+ * this build has must draw it as the generic walk does. */
+void test_level_row_walk_ends_whole_segments_before_the_last_pixel(void)
+{
+    enum { LW = 128, LH = 64 };
+    static uint16_t fast[LW * LH], gen[LW * LH], zfast[LW * LH], zgen[LW * LH];
+    static const fxl_rect_t clip = {13, 0, 124, LH};
+    fxl_vertex_t v[3];
+    fxl_texture_t tex;
+    fxl_draw_t d;
+    char msg[120];
+    int k, cfg, drawn = 0;
+    static const int32_t xyu[3][3] = {{0x0045a95a, 0x0034493c, 0x0006a333},
+                                      {0x004d4f34, 0x000350a9, 0x00058d61},
+                                      {0x003d7881, -0x0000c34c, -0x00082dfe}};
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    make_texture(&tex);
+    memset(v, 0, sizeof v);
+    for (k = 0; k < 3; k++) {
+        v[k].x = xyu[k][0];
+        v[k].y = xyu[k][1];
+        v[k].u = xyu[k][2];
+        v[k].v = 32768;
+        v[k].inv_w = 0x40019097u;
+        v[k].color = 0xFFFF;
+    }
+    for (cfg = 0; cfg < 4; cfg++) {
+        const int depth = cfg & 1, swap = cfg >> 1;
+        const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+        fxl_draw_defaults(&d);
+        d.texture = &tex;
+        d.persp = 4;
+        d.filter = FXL_FILTER_POINT;
+        if (!depth)
+            d.depth = 0;
+        if (left_out_feature(&d, &tex, fmt, depth) != NULL)
+            continue;
+        snprintf(msg, sizeof msg, "depth %d swap %d", depth, swap);
+        TEST_ASSERT_TRUE_MESSAGE(draw_fast_and_generic(&d, NULL, v, LW, LH, fmt, depth, &clip, fast, zfast, gen, zgen, msg) > 0,
+                                 msg);
+        drawn++;
+    }
+    TEST_ASSERT_TRUE(drawn > 0);
+}
+
 /* ---- which walk drew a triangle (fxl_stats_t.generic) ------------------------- */
 
 /* A triangle drawn with the given target format, depth buffer and texture
@@ -3970,6 +4022,7 @@ int main(void)
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_row_const_walk_matches_generic);
     RUN_TEST(test_row_const_walk_declined_spans_match_generic);
+    RUN_TEST(test_level_row_walk_ends_whole_segments_before_the_last_pixel);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_indexed_draw_matches_single_draws);
