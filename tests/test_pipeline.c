@@ -361,6 +361,48 @@ static void test_transform_point_ignores_an_overflowing_fourth_row(void)
     TEST_ASSERT_EQUAL_INT32(INT32_MAX, o.x);
 }
 
+/* A negative entry whose four q32 products already overflow int64: each
+ * is -(2^31 - 1)^2 ~ -2^62, their sum -2^64 + 2^34 - 4. pipeline.h: it
+ * saturates to -INT32_MAX (not INT32_MIN) with FXL_ERR_RANGE. Wrapped
+ * modulo 2^64 instead, the sum would read 2^34 - 4, i.e. +4.0 in q16,
+ * "in range". */
+static void test_mat4_mul_saturates_a_negative_int64_overflow(void)
+{
+    fxl_mat4_t a, b, o;
+    int k;
+    fxl_mat4_identity(&a);
+    fxl_mat4_identity(&b);
+    for (k = 0; k < 4; k++) {
+        a.m[0][k] = INT32_MAX;
+        b.m[k][0] = -INT32_MAX;
+    }
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_mul(&o, &a, &b));
+    TEST_ASSERT_EQUAL_INT32(-INT32_MAX, o.m[0][0]);
+    /* the row and column's other entries are in range: a[0][k] * b[k][1]
+     * = INT32_MAX * (k == 1) -> 2^31 - 1 q32 = 32768 - 2^-16 */
+    TEST_ASSERT_EQUAL_INT32(INT32_MAX, o.m[0][1]);
+}
+
+/* pipeline.h: FXL_ERR_RANGE when up is within ~2^-16 rad of the view
+ * direction (or opposite it). Looking down -z with up = (2^-16, 0, 2)
+ * units the angle is atan(2^-17): refused, either sign of z; with up =
+ * (4 2^-16, 0, 2) it is atan(2^-15): accepted. */
+static void test_look_at_refuses_up_within_two_to_minus_16_of_the_view(void)
+{
+    fxl_mat4_t m;
+    const fxl_vec3_t eye = {0, 0, 0}, ahead = {0, 0, -FXL_Q16_ONE};
+    const fxl_vec3_t near_up = {1, 0, 2 * FXL_Q16_ONE}, near_down = {1, 0, -2 * FXL_Q16_ONE};
+    const fxl_vec3_t tilted = {4, 0, 2 * FXL_Q16_ONE};
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &eye, &ahead, &near_up));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_mat4_look_at(&m, &eye, &ahead, &near_down));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mat4_look_at(&m, &eye, &ahead, &tilted));
+    /* the side vector s = (center - eye) x up = (0, -2^-14, 0) units,
+     * normalised: the x row is (0, -1, 0) exactly */
+    TEST_ASSERT_EQUAL_INT32(0, m.m[0][0]);
+    TEST_ASSERT_EQUAL_INT32(-FXL_Q16_ONE, m.m[0][1]);
+    TEST_ASSERT_EQUAL_INT32(0, m.m[0][2]);
+}
+
 static void test_perspective_matches_glu_formula(void)
 {
     int deg;
@@ -777,6 +819,60 @@ static void test_project_rejects_w_at_or_behind_near(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
 }
 
+/* pipeline.h: a vertex beyond the guard band by less than 2^-10 G is
+ * clamped to it. On 320 x 240, G = floor(8192 2^17 / 320) 2^-16 =
+ * 3355443 / 65536 and the half width is 160 px, so x / w = +-1.0001 G
+ * lands on 160 +- 3355443 * 160 / 65536 px = (160 * 65536 +- 536870880)
+ * q16 units exactly, 1.0001 G or not (unclamped: 0.8 px further). */
+static void test_project_clamps_a_vertex_just_beyond_the_guard_band(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t c;
+    fxl_vertex_t out;
+    prepared_320x240(&p, &xf, &c);
+    TEST_ASSERT_EQUAL_INT32(3355443, xf.guard_q16);
+    c.w = xf.near_q32 * 2;
+    c.x = (int64_t)((double)c.w * xf.guard_q16 / 65536.0 * 1.0001);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    TEST_ASSERT_EQUAL_INT32(160 * 65536 + 536870880, out.x);
+    c.x = -c.x;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    TEST_ASSERT_EQUAL_INT32(160 * 65536 - 536870880, out.x);
+}
+
+/* pipeline.h: fxl_xform_clip refuses a coordinate that reaches
+ * FXL_CLIP_LIMIT_Q32 and fxl_xform_project a w at it; below it both work,
+ * and inv_w = near / w * 2^32 is clamped to at least 1. Model scale z 32
+ * and z = -32768 units (INT32_MIN q16) give w = -z_view = 2^20 units =
+ * 2^52 q32 exactly (the default perspective's w row is (0, 0, -1, 0)).
+ * With near 2^-16 (the smallest) and w = 2^52 - 1 q32, near / w * 2^32 is
+ * 2^-4: clamped to 1. */
+static void test_clip_limit_and_smallest_inv_w(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    fxl_clipvert_t c;
+    fxl_vertex_t out;
+    fxl_vec3_t pos = {0, 0, INT32_MIN};
+    prepared_320x240(&p, &xf, &c);
+    fxl_mat4_scale(&p.model, FXL_Q16_ONE, FXL_Q16_ONE, FXL_Q16_INT(32));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_clip(&xf, &pos, &c));
+    pos.z = INT32_MIN + 1; /* w = 2^52 - 2^21 */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_clip(&xf, &pos, &c));
+    TEST_ASSERT_EQUAL_INT64(FXL_CLIP_LIMIT_Q32 - ((int64_t)1 << 21), c.w);
+    p.near_q16 = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    memset(&c, 0, sizeof c);
+    c.w = FXL_CLIP_LIMIT_Q32;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out));
+    c.w = FXL_CLIP_LIMIT_Q32 - 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    TEST_ASSERT_EQUAL_UINT32(1, out.inv_w);
+    TEST_ASSERT_EQUAL_INT32(160 * 65536, out.x);
+}
+
 /* The colour of a projected vertex: each channel (0..255 in q8) rounded
  * to 5 or 6 bits, round(c (2^bits - 1) / 65280), for every value in range;
  * every RGB565 colour survives the trip through q8 channels; outside the
@@ -878,6 +974,71 @@ static void test_project_and_clip_refuse_a_hand_filled_xform_out_of_range(void)
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, tri, poly, &n));
     }
+}
+
+/* One q16 unit past each edge of the ranges fxl_xform_project documents
+ * for a hand-filled xf, from an xf at all of them at once: a 4096 x 4096
+ * viewport at origin (16384, 16384) has its centre at FXL_TARGET_MAX_ORIGIN
+ * + FXL_TARGET_MAX_DIM / 2 px, half sizes FXL_TARGET_MAX_DIM / 2 px and G =
+ * 8192 / 2048 = 4, so G times the half size is FXL_GUARD_PX exactly. A
+ * half size one unit over is tried with G = 2, so that it is the half size
+ * alone that is refused. */
+static void test_project_xform_refused_one_unit_past_each_range(void)
+{
+    const int64_t centre_max = ((int64_t)FXL_TARGET_MAX_ORIGIN + FXL_TARGET_MAX_DIM / 2) * 65536;
+    const int64_t half_max = (int64_t)FXL_TARGET_MAX_DIM / 2 * 65536;
+    fxl_pipeline_t p;
+    fxl_xform_t edge, xf;
+    fxl_clipvert_t c;
+    fxl_vertex_t out;
+    int k;
+    prepared_320x240(&p, &edge, &c);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_viewport(&p, FXL_TARGET_MAX_ORIGIN, FXL_TARGET_MAX_ORIGIN,
+                                                             FXL_TARGET_MAX_DIM, FXL_TARGET_MAX_DIM));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &edge));
+    TEST_ASSERT_EQUAL_INT64(centre_max, edge.cx_q16);
+    TEST_ASSERT_EQUAL_INT64(half_max, edge.hw_q16);
+    TEST_ASSERT_EQUAL_INT32(4 * 65536, edge.guard_q16);
+    c.w = edge.near_q32;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&edge, &c, &out));
+    xf = edge;
+    xf.guard_q16 = 2 * 65536;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_xform_project(&xf, &c, &out));
+    for (k = 0; k < 6; k++) {
+        xf = edge;
+        switch (k) {
+        case 0: xf.cx_q16 = centre_max + 1; break;
+        case 1: xf.cx_q16 = -centre_max - 1; break;
+        case 2: xf.cy_q16 = centre_max + 1; break;
+        case 3: xf.guard_q16 = 2 * 65536; xf.hw_q16 = half_max + 1; break;
+        case 4: xf.guard_q16 = 2 * 65536; xf.hh_q16 = half_max + 1; break;
+        default: xf.guard_q16 = 4 * 65536 + 1; break; /* G x 2048 px > FXL_GUARD_PX */
+        }
+        snprintf(msg, sizeof msg, "range %d one unit past its edge", k);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(FXL_ERR_RANGE, fxl_xform_project(&xf, &c, &out), msg);
+    }
+}
+
+/* pipeline.h, fxl_pipeline_set_viewport: |x|, |y| <= FXL_TARGET_MAX_ORIGIN;
+ * fxl_pipeline_prepare: FXL_ERR_RANGE for far not beyond near (far == near
+ * included; far one q16 unit beyond is fine). */
+static void test_viewport_origin_and_far_plane_limits(void)
+{
+    fxl_pipeline_t p;
+    fxl_xform_t xf;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_set_viewport(&p, FXL_TARGET_MAX_ORIGIN, -FXL_TARGET_MAX_ORIGIN, 8, 8));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_set_viewport(&p, FXL_TARGET_MAX_ORIGIN + 1, 0, 8, 8));
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_set_viewport(&p, 0, -FXL_TARGET_MAX_ORIGIN - 1, 8, 8));
+    TEST_ASSERT_EQUAL_INT32(FXL_TARGET_MAX_ORIGIN, p.vp_x); /* a refused call leaves p alone */
+    p.vp_x = FXL_TARGET_MAX_ORIGIN + 1; /* edited by hand: prepare checks too */
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_prepare(&p, &xf));
+    p.vp_x = 0;
+    p.far_q16 = p.near_q16;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_pipeline_prepare(&p, &xf));
+    p.far_q16 = p.near_q16 + 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_prepare(&p, &xf));
+    TEST_ASSERT_EQUAL_INT64(xf.near_q32 + 65536, xf.far_q32);
 }
 
 static void test_prepare_and_clip_report_overflow(void)
@@ -1061,6 +1222,78 @@ static void test_emit_argument_and_index_errors(void)
     m.pos = quad_pos;
     p.cull = 7;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+}
+
+/* pipeline.h: FXL_ERR_ARG for bad enums, texgen's too: a mode one past
+ * FXL_TEXGEN_CUBE, and with texgen on an axis, plane or space one past
+ * its last value. Each is refused before any triangle is emitted. */
+static void test_emit_refuses_texgen_enums_out_of_range(void)
+{
+    static const uint16_t idx[3] = {0, 1, 2};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    collect_t col;
+    int k;
+    memset(&m, 0, sizeof m);
+    m.pos = quad_pos; m.vert_count = 4; m.idx = idx; m.tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    p.cull = FXL_CULL_NONE;
+    for (k = 0; k < 5; k++) {
+        fxl_texgen_defaults(&p.texgen);
+        switch (k) {
+        case 0: p.texgen.mode = FXL_TEXGEN_CUBE; break; /* valid: the control */
+        case 1: p.texgen.mode = FXL_TEXGEN_CUBE + 1; break;
+        case 2: p.texgen.mode = FXL_TEXGEN_CYLINDRICAL; p.texgen.axis = FXL_AXIS_Z + 1; break;
+        case 3: p.texgen.mode = FXL_TEXGEN_PLANAR; p.texgen.plane = FXL_PLANE_XZ + 1; break;
+        default: p.texgen.mode = FXL_TEXGEN_SPHERICAL; p.texgen.space = FXL_TEXGEN_EYE + 1; break;
+        }
+        col.n = 0;
+        snprintf(msg, sizeof msg, "texgen case %d", k);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(k == 0 ? FXL_OK : FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL),
+                                      msg);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(k == 0 ? 1 : 0, col.n, msg);
+    }
+}
+
+/* A normal that view * model maps to zero has no direction: the vertex is
+ * lit by the ambient term alone (pipeline.c, eye_normal), which is the
+ * light's formula (pipeline.h) with n = 0: I = 64 / 255, and white gives
+ * round(31 * 64 / 255) = 8 (7.78), round(63 * 64 / 255) = 16 (15.81), 8:
+ * 0x4208. A unit normal toward the light gives min(1, (64 + 191) / 255) = 1:
+ * white. */
+static void test_emit_zero_normal_is_lit_by_ambient_only(void)
+{
+    static const uint16_t idx[3] = {0, 1, 2};
+    static const fxl_vec3_t zero[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    static const fxl_vec3_t toward[4] = {{0, 0, FXL_Q16_ONE}, {0, 0, FXL_Q16_ONE}, {0, 0, FXL_Q16_ONE},
+                                         {0, 0, FXL_Q16_ONE}};
+    fxl_pipeline_t p;
+    fxl_mesh_t m;
+    collect_t col;
+    int k;
+    memset(&m, 0, sizeof m);
+    m.pos = quad_pos; m.vert_count = 4; m.idx = idx; m.tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
+    p.cull = FXL_CULL_NONE;
+    p.lighting = 1;
+    p.material = 0xFFFFu;
+    p.light.dir.x = 0; p.light.dir.y = 0; p.light.dir.z = FXL_Q16_ONE;
+    for (k = 0; k < 3; k++) {
+        p.light.ambient[k] = 64;
+        p.light.diffuse[k] = 191;
+    }
+    m.normal = zero;
+    col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    TEST_ASSERT_EQUAL_INT(1, col.n);
+    for (k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_HEX16(0x4208, col.tri[0][k].color);
+    m.normal = toward;
+    col.n = 0;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
+    TEST_ASSERT_EQUAL_INT(1, col.n);
+    for (k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_HEX16(0xFFFF, col.tri[0][k].color);
 }
 
 /* Every triangle of the host meshes is counter-clockwise seen from the side
@@ -1446,19 +1679,27 @@ int main(void)
     RUN_TEST(test_mat4_mul_and_transform_match_double);
     RUN_TEST(test_mat4_mul_overflow_saturates_with_status);
     RUN_TEST(test_transform_point_ignores_an_overflowing_fourth_row);
+    RUN_TEST(test_mat4_mul_saturates_a_negative_int64_overflow);
     RUN_TEST(test_perspective_matches_glu_formula);
     RUN_TEST(test_perspective_every_fovy_within_derived_bound);
     RUN_TEST(test_look_at_matches_double);
     RUN_TEST(test_look_at_up_near_the_view_direction);
+    RUN_TEST(test_look_at_refuses_up_within_two_to_minus_16_of_the_view);
     RUN_TEST(test_projection_accuracy_target_random_meshes);
     RUN_TEST(test_project_rejects_w_at_or_behind_near);
+    RUN_TEST(test_project_clamps_a_vertex_just_beyond_the_guard_band);
+    RUN_TEST(test_clip_limit_and_smallest_inv_w);
     RUN_TEST(test_project_packs_channels_rounded_and_clamped);
     RUN_TEST(test_project_and_clip_refuse_a_hand_filled_xform_out_of_range);
+    RUN_TEST(test_project_xform_refused_one_unit_past_each_range);
+    RUN_TEST(test_viewport_origin_and_far_plane_limits);
     RUN_TEST(test_prepare_and_clip_report_overflow);
     RUN_TEST(test_clip_applies_planes_a_cut_point_is_outside);
     RUN_TEST(test_emit_culls_by_screen_winding);
     RUN_TEST(test_emit_triangle_through_eye_plane_stays_in_guard_band);
     RUN_TEST(test_emit_argument_and_index_errors);
+    RUN_TEST(test_emit_refuses_texgen_enums_out_of_range);
+    RUN_TEST(test_emit_zero_normal_is_lit_by_ambient_only);
     RUN_TEST(test_host_meshes_wind_counter_clockwise_toward_normals);
     RUN_TEST(test_cube_mesh_shows_at_most_three_faces);
     RUN_TEST(test_mesh_draw_clipped_wall_covers_each_pixel_once);
