@@ -208,6 +208,41 @@ static void test_clip_triangle_in_near_or_far_plane_is_inside(void)
     assert_passes_untouched(&xf, in, "in the far plane");
 }
 
+/* q32 G w as the clipper forms it for w >= 0: G w rounded to the nearest
+ * q32 unit (ties up), exactly (G q16 < 2^24, w < 2^52). */
+static int64_t guard_w_q32(const fxl_xform_t *xf, int64_t w)
+{
+    const int64_t g = xf->guard_q16;
+    return (w >> 16) * g + (((w & 0xFFFF) * g + 32768) >> 16);
+}
+
+/* A triangle lying in a guard-band plane (every vertex at x = G w, x = -G
+ * w, y = G w or y = -G w, at depths 2 and 3) is inside too: distance 0,
+ * as for the near and far planes. Counted as outside, all three vertices
+ * would be "outside one plane" and the triangle culled. */
+static void test_clip_triangle_in_a_guard_plane_is_inside(void)
+{
+    fxl_xform_t xf = make_xform(1, 0);
+    fxl_clipvert_t in[3];
+    char what[40];
+    int pl, k;
+    for (pl = 0; pl < 4; pl++) {
+        flat_triangle(in, (int64_t)2 << 32, (int64_t)1 << 32);
+        in[1].w = (int64_t)3 << 32;
+        for (k = 0; k < 3; k++) {
+            const int64_t gw = guard_w_q32(&xf, in[k].w);
+            if (pl < 2) {
+                in[k].x = pl == 0 ? gw : -gw;
+            } else {
+                in[k].y = pl == 2 ? gw : -gw;
+                in[k].x = k == 2 ? (int64_t)1 << 32 : 0;
+            }
+        }
+        snprintf(what, sizeof what, "in guard plane %d", pl);
+        assert_passes_untouched(&xf, in, what);
+    }
+}
+
 static void test_clip_triangle_behind_eye_is_removed(void)
 {
     fxl_xform_t xf = make_xform(0.1, 0);
@@ -242,6 +277,102 @@ static void test_clip_one_vertex_behind_near_gives_quad_on_plane(void)
     TEST_ASSERT_EQUAL_INT32(150 * 256, out[2].r);
     TEST_ASSERT_EQUAL_INT64((int64_t)(-0.5 * Q32), out[3].x);
     TEST_ASSERT_EQUAL_INT32(16384, out[3].u);
+}
+
+/* pipeline.h: each cut is interpolated from the edge's end nearer the
+ * plane, the inside one on a tie. Vertex 2 (w = -1) is as far behind
+ * near = 1 as vertices 0 and 1 (w = 3) are in front, so both cuts are
+ * ties, t = 1/2 from the inside end: a + (b - a) / 2 rounded to nearest,
+ * ties away from zero (fxl__mul_shr). With attributes one unit apart
+ * (u 0 -> 1, v 0 -> -1, r 0 -> 1, x 0 -> 1 q32 on edge 2-0) the exact
+ * midpoint is a tie too, and the inside end decides it: u = round(0 +
+ * 0.5) = 1, v = -1, r = 1, x = 1 (from the outside end: 1 + round(-0.5)
+ * = 0). */
+static void test_clip_cut_on_a_tie_is_interpolated_from_the_inside_end(void)
+{
+    fxl_xform_t xf = make_xform(1, 0);
+    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+    uint32_t n, k;
+    memset(in, 0, sizeof in);
+    in[0].w = in[1].w = (int64_t)3 << 32;
+    in[1].x = (int64_t)2 << 32;
+    in[2].w = -((int64_t)1 << 32);
+    in[2].x = 1;
+    in[2].u = 1;
+    in[2].v = -1;
+    in[2].r = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+    TEST_ASSERT_EQUAL_UINT32(4, n);   /* v0, v1, cut(1-2), cut(2-0) */
+    for (k = 2; k < 4; k++) {
+        TEST_ASSERT_EQUAL_INT64(xf.near_q32, out[k].w);
+        TEST_ASSERT_EQUAL_INT32(1, out[k].u);
+        TEST_ASSERT_EQUAL_INT32(-1, out[k].v);
+        TEST_ASSERT_EQUAL_INT32(1, out[k].r);
+    }
+    /* cut(1-2): 2^33 + round(-(2^33 - 1) / 2) = 2^33 - 2^32 */
+    TEST_ASSERT_EQUAL_INT64((int64_t)1 << 32, out[2].x);
+    TEST_ASSERT_EQUAL_INT64(1, out[3].x);
+}
+
+/* A near-plane cut of an edge 2^12 times longer than near takes the exact
+ * cut rounded to nearest, ties up (clip.c, near_cut). Vertex 0 (x = 2^44
+ * + 1 q32) is as far in front of near = 1 as vertex 1 (x = -2^44) is
+ * behind it, so the cut is at their mean, x = 0.5 q32 units: 1. */
+static void test_clip_near_cut_of_a_long_edge_rounds_a_tie_up(void)
+{
+    fxl_xform_t xf = make_xform(1, 0);
+    fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+    uint32_t n;
+    memset(in, 0, sizeof in);
+    in[0].x = ((int64_t)1 << 44) + 1;   /* inside the guard band: G w = 51.2 (2^40 + 2^32) */
+    in[0].w = xf.near_q32 + ((int64_t)1 << 40);
+    in[1].x = -((int64_t)1 << 44);
+    in[1].w = xf.near_q32 - ((int64_t)1 << 40);
+    in[2].y = (int64_t)1 << 32;
+    in[2].w = (int64_t)2 << 32;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+    TEST_ASSERT_EQUAL_UINT32(4, n);   /* v0, cut(0-1), cut(1-2), v2 */
+    TEST_ASSERT_EQUAL_INT64(in[0].x, out[0].x);
+    TEST_ASSERT_EQUAL_INT64(xf.near_q32, out[1].w);
+    TEST_ASSERT_EQUAL_INT64(1, out[1].x);
+    TEST_ASSERT_EQUAL_INT64(0, out[1].y);
+}
+
+/* A cut point can land outside a plane that no input vertex is outside:
+ * here an edge lying in the +x guard plane (both ends at x = G w, one in
+ * front of near = 1 and one between the eye and it) is cut by the near
+ * plane, and t's rounding times the edge (~50 near long in x) puts the
+ * cut up to a few hundred q32 units either side of x = G near. The clipper
+ * then clips against +x as well (pipeline.h: Sutherland-Hodgman against
+ * the guard band; clip.c: every plane some vertex of the polygon, cut
+ * points included, is outside), so no vertex it returns is beyond x = G w
+ * as it forms G w: no later plane moves x here (y = 0 throughout, and the
+ * -x plane has no vertex outside). */
+static void test_clip_applies_a_plane_only_a_cut_point_is_outside(void)
+{
+    fxl_xform_t xf = make_xform(1, 0);
+    int i, recut = 0;
+    rng_seed(1515);
+    for (i = 0; i < 1000; i++) {
+        fxl_clipvert_t in[3], out[FXL_CLIP_MAX_VERTS];
+        uint32_t n, k;
+        memset(in, 0, sizeof in);
+        in[0].w = xf.near_q32 + 1 + (int64_t)rng_range(0, 3.0 * Q32);
+        in[1].w = 1 + (int64_t)rng_range(0, (double)(xf.near_q32 - 2));
+        in[2].w = 2 * xf.near_q32;
+        in[0].x = guard_w_q32(&xf, in[0].w);
+        in[1].x = guard_w_q32(&xf, in[1].w);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+        for (k = 0; k < n; k++)
+            if (out[k].x > guard_w_q32(&xf, out[k].w)) {
+                snprintf(msg, sizeof msg, "case %d: vertex %u of %u is %lld q32 units beyond x = G w", i, (unsigned)k,
+                         (unsigned)n, (long long)(out[k].x - guard_w_q32(&xf, out[k].w)));
+                TEST_FAIL_MESSAGE(msg);
+            }
+        recut += n > 4; /* the +x plane cut the near plane's polygon */
+    }
+    printf("clip: %d of 1000 near-plane polygons clipped again by a guard plane no input vertex is outside\n", recut);
+    TEST_ASSERT_GREATER_THAN(0, recut);
 }
 
 static void test_clip_random_triangles_match_double_reference(void)
@@ -677,7 +808,7 @@ static void test_clip_rounding_surplus_vertices_are_dropped_not_refused(void)
             in[k].w = c[i].xyw[3 * k + 2];
         }
         st = fxl_clip_triangle(&xf, in, out, &n);
-        if (st != FXL_OK || n < 3) {
+        if (st != FXL_OK || n < 3 || n > FXL_CLIP_MAX_VERTS) {
             snprintf(msg, sizeof msg, "case %u: status %d, %u vertices", (unsigned)i, (int)st, (unsigned)n);
             TEST_FAIL_MESSAGE(msg);
         }
@@ -820,6 +951,17 @@ static void test_clip_arguments(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_clip_triangle(&xf, in, out, NULL));
     in[1].x = FXL_CLIP_LIMIT_Q32;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_clip_triangle(&xf, in, out, &n));
+    /* every vertex is checked, each coordinate at either sign's limit */
+    in[1].x = 0;
+    in[2].w = -FXL_CLIP_LIMIT_Q32;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_clip_triangle(&xf, in, out, &n));
+    in[2].w = 0;
+    in[0].y = FXL_CLIP_LIMIT_Q32;
+    TEST_ASSERT_EQUAL_INT(FXL_ERR_RANGE, fxl_clip_triangle(&xf, in, out, &n));
+    in[0].y = FXL_CLIP_LIMIT_Q32 - 1;   /* below the limit: all behind near, culled */
+    n = 7;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_clip_triangle(&xf, in, out, &n));
+    TEST_ASSERT_EQUAL_UINT32(0, n);
 }
 
 int main(void)
@@ -828,8 +970,12 @@ int main(void)
     RUN_TEST(test_clip_inside_triangle_is_unchanged);
     RUN_TEST(test_clip_vertex_on_guard_plane_is_inside);
     RUN_TEST(test_clip_triangle_in_near_or_far_plane_is_inside);
+    RUN_TEST(test_clip_triangle_in_a_guard_plane_is_inside);
     RUN_TEST(test_clip_triangle_behind_eye_is_removed);
     RUN_TEST(test_clip_one_vertex_behind_near_gives_quad_on_plane);
+    RUN_TEST(test_clip_cut_on_a_tie_is_interpolated_from_the_inside_end);
+    RUN_TEST(test_clip_near_cut_of_a_long_edge_rounds_a_tie_up);
+    RUN_TEST(test_clip_applies_a_plane_only_a_cut_point_is_outside);
     RUN_TEST(test_clip_random_triangles_match_double_reference);
     RUN_TEST(test_clip_near_cut_keeps_precision_for_tiny_t);
     RUN_TEST(test_clip_near_cut_of_long_edges_is_exact);
