@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "unity.h"
 #include "test_rng.h"
@@ -313,6 +314,130 @@ static void test_cylinder_pole_is_within_rounding_of_the_axis(void)
     }
 }
 
+/* The cylinder's pole rule, r <= 2^-14 (|h| + 1), decided to a quarter of
+ * a q16 unit far up the axis too (positions scaled up before the square
+ * root). At h = 3071 units the limit is 3072 / 16384 = 0.1875 units =
+ * 12288 q16; a vertex at (a, b) = (12288, 100) q16 is 12288.41 q16 from
+ * the axis, just outside: it keeps its own theta, atan2(100, 12288) =
+ * 84.88 LSB, not the others' mean (0.35 turns). r floored to whole q16
+ * units there (12288) would make it a pole. */
+static void test_cylinder_pole_limit_far_up_the_axis(void)
+{
+    const int32_t h = 3 * (1 << 26) - (1 << 16);   /* 3071 units */
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    double want;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    tg.axis = FXL_AXIS_Y;   /* a = z, b = x */
+    p[0].x = 100;
+    p[0].y = h;
+    p[0].z = 12288;
+    p[1] = around_y(0.30, q16d(h));
+    p[2] = around_y(0.40, q16d(h));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    want = atan2(100.0, 12288.0) / TWO_PI * 65536;
+    snprintf(msg, sizeof msg, "u %ld, want %.3f (its own theta)", (long)t[0].u, want);
+    TEST_ASSERT_TRUE_MESSAGE(fabs(t[0].u - want) <= 0.5 + ldexp(1, -10), msg);
+    TEST_ASSERT_EQUAL_INT32(h, t[0].v);
+}
+
+/* The sphere's pole rule, r <= 2^-10 |h| (docs/pipeline.md; within 2^-10
+ * rad of the axis), at its edge: at h = 1024 units a vertex 1 unit from
+ * the axis is a pole (the mean theta of the others, 0.35 turns), one 1.5
+ * units away is not (its own theta, 0.25 turns: a = 0, b > 0). */
+static void test_sphere_pole_limit_is_two_to_minus_10(void)
+{
+    static const struct { int32_t r; int pole; } c[] = {{65536, 1}, {98304, 0}};
+    fxl_texgen_t tg;
+    size_t i;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_SPHERICAL;
+    tg.axis = FXL_AXIS_Y;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        fxl_vec3_t p[3];
+        fxl_texcoord_t t[3];
+        p[0].x = c[i].r;
+        p[0].y = 1024 << 16;
+        p[0].z = 0;
+        p[1] = around_y(0.30, 0.9);
+        p[2] = around_y(0.40, 0.9);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        snprintf(msg, sizeof msg, "r %ld at h 1024 units: u %ld (%s)", (long)c[i].r, (long)t[0].u,
+                 c[i].pole ? "a pole" : "its own theta");
+        TEST_ASSERT_TRUE_MESSAGE(c[i].pole ? labs((long)t[0].u - (long)dq16(0.35)) <= 1 : t[0].u == 16384, msg);
+    }
+}
+
+/* Seam ties: with u = 0, 3/8, 5/8 turns (exact from atan2: the points are
+ * on the axes and diagonals) the gap across the period (3/8) equals the
+ * widest inner one (0 -> 3/8). Either cut spans 5/8; texgen.c takes the
+ * one across the period first, which leaves the u's as atan2 gives them,
+ * in [0, 1]. */
+static void test_seam_tie_leaves_the_u_in_place(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CYLINDRICAL;
+    tg.axis = FXL_AXIS_Y;   /* a = z, b = x */
+    p[0] = vec(0, 0, 1);           /* theta 0 */
+    p[1] = vec(0.7, 0, -0.7);      /* 3/8 */
+    p[2] = vec(-0.7, 0, -0.7);     /* 5/8 */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(0, t[0].u);
+    TEST_ASSERT_EQUAL_INT32(24576, t[1].u);
+    TEST_ASSERT_EQUAL_INT32(40960, t[2].u);
+}
+
+/* A triangle wholly at the pole (every vertex within 2^-10 rad of the
+ * axis) has no theta at all: it gets one u at every corner, 0 (as for the
+ * triangle on the axis in test_texgen_rejects_bad_arguments), not the
+ * vertices' own thetas, here 1/4, 1/2 and 3/4 turn apart on a triangle one
+ * q16 unit across. */
+static void test_triangle_wholly_at_the_pole_gets_one_u(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    int k;
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_SPHERICAL;
+    tg.axis = FXL_AXIS_Y;   /* a = z, b = x */
+    p[0].x = 1;  p[0].y = FXL_Q16_ONE; p[0].z = 0;    /* theta 1/4 */
+    p[1].x = 0;  p[1].y = FXL_Q16_ONE; p[1].z = -1;   /* 1/2 */
+    p[2].x = -1; p[2].y = FXL_Q16_ONE; p[2].z = 0;    /* 3/4 */
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    for (k = 0; k < 3; k++)
+        TEST_ASSERT_EQUAL_INT32(0, t[k].u);
+}
+
+/* Cube map, a vertex on its face's plane (major coordinate 0, here x = 0
+ * on face +X, chosen by the triangle's sum): texgen.c takes |major| as one
+ * q16 unit there (a vertex behind the face plane clamps the same way), so
+ * sc = -z = 2^-16 and tc = -y = -2^-16 give s = (1 + 1) / 2 = 1, t = 0:
+ * the tile's edge, u = round(65536 / 3) = 21845, v = 0. The others, on
+ * the x axis, map to the tile's centre: u = round(32768 / 3) = 10923, v =
+ * 16384. */
+static void test_cube_vertex_on_the_face_plane_maps_to_the_tile_edge(void)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    fxl_texgen_defaults(&tg);
+    tg.mode = FXL_TEXGEN_CUBE;
+    p[0].x = 0; p[0].y = 1; p[0].z = -1;
+    p[1] = vec(3, 0, 0);
+    p[2] = p[1];
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    TEST_ASSERT_EQUAL_INT32(21845, t[0].u);
+    TEST_ASSERT_EQUAL_INT32(0, t[0].v);
+    TEST_ASSERT_EQUAL_INT32(10923, t[1].u);
+    TEST_ASSERT_EQUAL_INT32(16384, t[1].v);
+}
+
 static void test_cube_faces_and_atlas_layout(void)
 {
     /* face centres: (major axis direction, face index) */
@@ -442,8 +567,13 @@ int main(void)
     RUN_TEST(test_pole_takes_mean_theta_of_other_vertices);
     RUN_TEST(test_tall_cylinder_keeps_its_theta);
     RUN_TEST(test_cylinder_pole_is_within_rounding_of_the_axis);
+    RUN_TEST(test_cylinder_pole_limit_far_up_the_axis);
+    RUN_TEST(test_sphere_pole_limit_is_two_to_minus_10);
+    RUN_TEST(test_seam_tie_leaves_the_u_in_place);
+    RUN_TEST(test_triangle_wholly_at_the_pole_gets_one_u);
     RUN_TEST(test_cube_faces_and_atlas_layout);
     RUN_TEST(test_cube_major_axis_ties_take_the_first_axis);
+    RUN_TEST(test_cube_vertex_on_the_face_plane_maps_to_the_tile_edge);
     RUN_TEST(test_texgen_rejects_bad_arguments);
     return UNITY_END();
 }
