@@ -1257,7 +1257,8 @@ static void test_emit_refuses_texgen_enums_out_of_range(void)
 
 /* A normal that view * model maps to zero has no direction: the vertex is
  * lit by the ambient term alone (pipeline.c, eye_normal), which is the
- * light's formula (pipeline.h) with n = 0: I = 64 / 255, and white gives
+ * light's formula (pipeline.h) with n = 0. With fxl_pipeline_init's light
+ * (+z, ambient 64, diffuse 191) I = 64 / 255, and white gives
  * round(31 * 64 / 255) = 8 (7.78), round(63 * 64 / 255) = 16 (15.81), 8:
  * 0x4208. A unit normal toward the light gives min(1, (64 + 191) / 255) = 1:
  * white. */
@@ -1277,10 +1278,14 @@ static void test_emit_zero_normal_is_lit_by_ambient_only(void)
     p.cull = FXL_CULL_NONE;
     p.lighting = 1;
     p.material = 0xFFFFu;
-    p.light.dir.x = 0; p.light.dir.y = 0; p.light.dir.z = FXL_Q16_ONE;
+    /* the default light (pipeline.h, fxl_pipeline_init); one unit of 255
+     * moves no RGB565 channel here, so it is checked as stored too */
+    TEST_ASSERT_EQUAL_INT32(0, p.light.dir.x);
+    TEST_ASSERT_EQUAL_INT32(0, p.light.dir.y);
+    TEST_ASSERT_EQUAL_INT32(FXL_Q16_ONE, p.light.dir.z);
     for (k = 0; k < 3; k++) {
-        p.light.ambient[k] = 64;
-        p.light.diffuse[k] = 191;
+        TEST_ASSERT_EQUAL_UINT8(64, p.light.ambient[k]);
+        TEST_ASSERT_EQUAL_UINT8(191, p.light.diffuse[k]);
     }
     m.normal = zero;
     col.n = 0;

@@ -299,7 +299,10 @@ typedef struct fxl_pipeline {
 
 /* Identity matrices, 60 degree perspective with near 1 and infinite far,
  * viewport (0, 0, width, height), cull CW, no lighting, white material,
- * texgen off, no vertex cache. */
+ * texgen off, no vertex cache. The light (used once `lighting` is set)
+ * shines along +z in eye space, toward the camera, with ambient 64 and
+ * diffuse 191 in every channel: a face toward it is lit fully (255), one
+ * edge-on or facing away at 1/4. */
 fxl_status_t fxl_pipeline_init(fxl_pipeline_t *p, int32_t width, int32_t height);
 /* proj = fxl_mat4_perspective(...) and the clip planes near, far. */
 fxl_status_t fxl_pipeline_set_perspective(fxl_pipeline_t *p, fxl_angle_t fovy, fxl_q16_t aspect,
