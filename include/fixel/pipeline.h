@@ -194,8 +194,12 @@ typedef enum fxl_axis {
  *   row 0: +X -X +Y    row 1: -Y +Z -Z
  * Within a face, s, t in [0, 1] follow the OpenGL cube-map table
  * (+X: s=-z t=-y, -X: s=+z t=-y, +Y: s=+x t=+z, -Y: s=+x t=-z, +Z: s=+x
- * t=-y, -Z: s=-x t=-y, divided by |major| and mapped from [-1,1]); then
- * u = (col + s) / 3, v = (row + t) / 2, with s, t clamped to [0, 1]. */
+ * t=-y, -Z: s=-x t=-y, divided by the vertex's major coordinate and
+ * mapped from [-1,1]); then u = (col + s) / 3, v = (row + t) / 2, with s,
+ * t clamped to [0, 1]. A vertex on or behind its face's plane (major
+ * coordinate <= 0: the face is the triangle's, not the vertex's) divides
+ * by 2^-16 instead: its s and t clamp to the tile's edges (a coordinate
+ * of exactly 0 stays at 1/2). */
 #define FXL_CUBE_POS_X 0
 #define FXL_CUBE_NEG_X 1
 #define FXL_CUBE_POS_Y 2
