@@ -24,12 +24,14 @@
  *   fixel-bench ram
  *       the memory the caller provides per scene (frame, depth, bands,
  *       texture level 0 and whole chain, vertex data).
- *   fixel-bench frontend-run
+ *   fixel-bench frontend-run [--cache N]
  *       the front end alone (fxl_pipeline_emit into a callback that does
  *       nothing) on each mesh x level (transform, + light, + texgen) x vertex
  *       cache (off, on), for callgrind (--toggle-collect=fxl_pipeline_emit):
  *       counters dumped per configuration as "fe/mesh/level/cache". The
- *       set-up is bench/bench_frontend.h, shared with the firmware.
+ *       set-up is bench/bench_frontend.h, shared with the firmware. --cache
+ *       gives the cached runs N entries (1 .. BENCH_FE_CACHE; default all),
+ *       to measure a partial cache (docs/pipeline.md).
  *   fixel-bench frontend [--host-ir FILE] [--m4 FW_OUT] [--m0 FW_OUT] [--csv FILE]
  *       joins those host counts ("mesh level cache Ir" lines) and the
  *       firmwares' "fe" lines (semihosting output, converted with its
@@ -112,6 +114,7 @@ typedef struct options {
     int fw_meshes;
     const char *mip;   /* draw, gen-fw: none|nearest|linear overrides the filter's mip mode */
     const char *tint;  /* draw: RGB565 in hex, MODULATE by that flat colour (FXL_FAST_TINT) */
+    int cache;         /* frontend-run: entries of the "on" vertex cache (0: BENCH_FE_CACHE) */
 } options_t;
 
 /* The filter's mip mode, or the one --mip names (draw, gen-fw) */
@@ -138,7 +141,8 @@ static void usage(FILE *f)
             "  gen-fw OUT.c [--filters point,bilinear,trilinear] [--meshes 1] [--mip none|nearest|linear]\n"
             "      scenes, textures and configurations as C arrays for the firmware in bench/\n"
             "  ram                     caller-provided memory per scene\n"
-            "  frontend-run            the 3D front end alone, for callgrind\n"
+            "  frontend-run [--cache N]  the 3D front end alone, for callgrind; N entries\n"
+            "      in the cached runs (default 1024: every mesh whole)\n"
             "  frontend [--host-ir FILE] [--m4 OUT] [--m0 OUT] [--csv FILE]\n"
             "      front-end instructions per vertex and per corner\n"
             "  count-trace NM_FILE < qemu-trace\n"
@@ -834,9 +838,10 @@ static int gen_fw_meshes(FILE *f)
     return 0;
 }
 
-static int cmd_frontend_run(void)
+static int cmd_frontend_run(const options_t *o)
 {
     static fxl_vcache_entry_t cache[BENCH_FE_CACHE];
+    const uint32_t entries = o->cache > 0 ? (uint32_t)o->cache : BENCH_FE_CACHE;
     size_t mi;
     int lv, c;
     printf("# client requests: %s\n", BENCH_HAVE_CALLGRIND ? "yes" : "no");
@@ -850,7 +855,7 @@ static int cmd_frontend_run(void)
                 uint32_t ntri = 0;
                 char name[96];
                 if (bench_fe_setup(&p, lv, fe_meshes[mi].texgen) != FXL_OK ||
-                    fxl_pipeline_set_vertex_cache(&p, c ? cache : NULL, c ? BENCH_FE_CACHE : 0) != FXL_OK ||
+                    fxl_pipeline_set_vertex_cache(&p, c ? cache : NULL, c ? entries : 0) != FXL_OK ||
                     fxl_pipeline_emit(&p, &m, bench_fe_sink, &ntri, NULL) != FXL_OK) {
                     meshes_free(&m);
                     return 1;
@@ -1220,19 +1225,22 @@ int main(int argc, char **argv)
             dst = &o.mip;
         else if (strcmp(a, "--tint") == 0)
             dst = &o.tint;
-        else if (strcmp(a, "--meshes") == 0 || strcmp(a, "--runs") == 0) {
+        else if (strcmp(a, "--meshes") == 0 || strcmp(a, "--runs") == 0 || strcmp(a, "--cache") == 0) {
             /* atoi took "abc" and "-5" for 0 timing runs without a word */
             char *end;
             long v = strtol(argv[i + 1], &end, 10);
             /* --runs: time_frame keeps at most 15 (it capped more silently) */
-            const long most = a[2] == 'm' ? 1000000 : 15;
-            if (end == argv[i + 1] || *end != '\0' || v < 0 || v > most) {
-                fprintf(stderr, "fixel-bench: %s wants a whole number 0..%ld, got '%s'\n", a, most,
+            const long least = a[2] == 'c' ? 1 : 0;
+            const long most = a[2] == 'm' ? 1000000 : a[2] == 'c' ? (long)BENCH_FE_CACHE : 15;
+            if (end == argv[i + 1] || *end != '\0' || v < least || v > most) {
+                fprintf(stderr, "fixel-bench: %s wants a whole number %ld..%ld, got '%s'\n", a, least, most,
                         argv[i + 1]);
                 return 2;
             }
             if (a[2] == 'm')
                 o.fw_meshes = (int)v;
+            else if (a[2] == 'c')
+                o.cache = (int)v;
             else
                 o.runs = (int)v;
         } else {
@@ -1252,7 +1260,7 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "draw") == 0)
         return cmd_draw(&o);
     if (strcmp(cmd, "frontend-run") == 0)
-        return cmd_frontend_run();
+        return cmd_frontend_run(&o);
     if (strcmp(cmd, "frontend") == 0)
         return cmd_frontend(&o);
     if (strcmp(cmd, "gen-fw") == 0)
