@@ -1224,20 +1224,30 @@ static void test_emit_argument_and_index_errors(void)
     TEST_ASSERT_EQUAL_INT(FXL_ERR_ARG, fxl_pipeline_emit(&p, &m, collect_fn, &col, NULL));
 }
 
+/* The first triangle of the quad (positions only), culling off, on a
+ * default 320 x 240 pipeline. */
+static void one_quad_triangle(fxl_pipeline_t *p, fxl_mesh_t *m)
+{
+    static const uint16_t idx[3] = {0, 1, 2};
+    memset(m, 0, sizeof *m);
+    m->pos = quad_pos;
+    m->vert_count = 4;
+    m->idx = idx;
+    m->tri_count = 1;
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(p, 320, 240));
+    p->cull = FXL_CULL_NONE;
+}
+
 /* pipeline.h: FXL_ERR_ARG for bad enums, texgen's too: a mode one past
  * FXL_TEXGEN_CUBE, and with texgen on an axis, plane or space one past
  * its last value. Each is refused before any triangle is emitted. */
 static void test_emit_refuses_texgen_enums_out_of_range(void)
 {
-    static const uint16_t idx[3] = {0, 1, 2};
     fxl_pipeline_t p;
     fxl_mesh_t m;
     collect_t col;
     int k;
-    memset(&m, 0, sizeof m);
-    m.pos = quad_pos; m.vert_count = 4; m.idx = idx; m.tri_count = 1;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
-    p.cull = FXL_CULL_NONE;
+    one_quad_triangle(&p, &m);
     for (k = 0; k < 5; k++) {
         fxl_texgen_defaults(&p.texgen);
         switch (k) {
@@ -1264,7 +1274,6 @@ static void test_emit_refuses_texgen_enums_out_of_range(void)
  * white. */
 static void test_emit_zero_normal_is_lit_by_ambient_only(void)
 {
-    static const uint16_t idx[3] = {0, 1, 2};
     static const fxl_vec3_t zero[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     static const fxl_vec3_t toward[4] = {{0, 0, FXL_Q16_ONE}, {0, 0, FXL_Q16_ONE}, {0, 0, FXL_Q16_ONE},
                                          {0, 0, FXL_Q16_ONE}};
@@ -1272,10 +1281,7 @@ static void test_emit_zero_normal_is_lit_by_ambient_only(void)
     fxl_mesh_t m;
     collect_t col;
     int k;
-    memset(&m, 0, sizeof m);
-    m.pos = quad_pos; m.vert_count = 4; m.idx = idx; m.tri_count = 1;
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_pipeline_init(&p, 320, 240));
-    p.cull = FXL_CULL_NONE;
+    one_quad_triangle(&p, &m);
     p.lighting = 1;
     p.material = 0xFFFFu;
     /* the default light (pipeline.h, fxl_pipeline_init); one unit of 255

@@ -279,6 +279,24 @@ static void test_tall_cylinder_keeps_its_theta(void)
     printf("tall cylinder: max u error %.3f LSB\n", max_u);
 }
 
+/* u, v of vertex p0 of a triangle whose other two vertices are 1 unit
+ * from the Y axis at h units, 0.30 and 0.40 turns round it (mean 0.35),
+ * under texgen `mode` about Y. */
+static fxl_texcoord_t pole_test_vertex(int mode, fxl_vec3_t p0, double h)
+{
+    fxl_texgen_t tg;
+    fxl_vec3_t p[3];
+    fxl_texcoord_t t[3];
+    fxl_texgen_defaults(&tg);
+    tg.mode = (uint8_t)mode;
+    tg.axis = FXL_AXIS_Y;
+    p[0] = p0;
+    p[1] = around_y(0.30, h);
+    p[2] = around_y(0.40, h);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    return t[0];
+}
+
 /* A cylinder's pole: within 2^-14 (|h| + 1) of the axis, where the q16
  * rounding of an eye-space transform can put a point on it (a cap's
  * centre). It takes the mean theta of the other two (0.35 turns here);
@@ -290,21 +308,15 @@ static void test_cylinder_pole_is_within_rounding_of_the_axis(void)
         {0, -3, 0.5, 1},     {-2, 2, 1000, 1},     {3277, 0, 1000, 1}, /* 0.05: 2^-14 1001 = 0.061 */
         {4588, 0, 1000, 0},  /* 0.07 */            {0, 4588, -1000, 0},
     };
-    fxl_texgen_t tg;
     size_t i;
-    fxl_texgen_defaults(&tg);
-    tg.mode = FXL_TEXGEN_CYLINDRICAL;
-    tg.axis = FXL_AXIS_Y;
     for (i = 0; i < sizeof c / sizeof c[0]; i++) {
-        fxl_vec3_t p[3];
-        fxl_texcoord_t t[3];
+        fxl_vec3_t p0;
+        fxl_texcoord_t t[1];
         double want;
-        p[0].x = c[i].b;   /* axis Y: a = z, b = x */
-        p[0].y = dq16(c[i].h);
-        p[0].z = c[i].a;
-        p[1] = around_y(0.30, c[i].h);
-        p[2] = around_y(0.40, c[i].h);
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        p0.x = c[i].b;   /* axis Y: a = z, b = x */
+        p0.y = dq16(c[i].h);
+        p0.z = c[i].a;
+        t[0] = pole_test_vertex(FXL_TEXGEN_CYLINDRICAL, p0, c[i].h);
         want = c[i].pole ? 0.35 : atan2((double)c[i].b, (double)c[i].a) / TWO_PI;
         if (fabs(wrap_diff(q16d(t[0].u), want)) * 65536 > 1.0) {
             snprintf(msg, sizeof msg, "(a %d, b %d) units at h %g: u %.6f, want %.6f (%s)", (int)c[i].a,
@@ -324,19 +336,13 @@ static void test_cylinder_pole_is_within_rounding_of_the_axis(void)
 static void test_cylinder_pole_limit_far_up_the_axis(void)
 {
     const int32_t h = 3 * (1 << 26) - (1 << 16);   /* 3071 units */
-    fxl_texgen_t tg;
-    fxl_vec3_t p[3];
-    fxl_texcoord_t t[3];
+    fxl_vec3_t p0;
+    fxl_texcoord_t t[1];
     double want;
-    fxl_texgen_defaults(&tg);
-    tg.mode = FXL_TEXGEN_CYLINDRICAL;
-    tg.axis = FXL_AXIS_Y;   /* a = z, b = x */
-    p[0].x = 100;
-    p[0].y = h;
-    p[0].z = 12288;
-    p[1] = around_y(0.30, q16d(h));
-    p[2] = around_y(0.40, q16d(h));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+    p0.x = 100;   /* axis Y: a = z, b = x */
+    p0.y = h;
+    p0.z = 12288;
+    t[0] = pole_test_vertex(FXL_TEXGEN_CYLINDRICAL, p0, q16d(h));
     want = atan2(100.0, 12288.0) / TWO_PI * 65536;
     snprintf(msg, sizeof msg, "u %ld, want %.3f (its own theta)", (long)t[0].u, want);
     TEST_ASSERT_TRUE_MESSAGE(fabs(t[0].u - want) <= 0.5 + ldexp(1, -10), msg);
@@ -350,20 +356,14 @@ static void test_cylinder_pole_limit_far_up_the_axis(void)
 static void test_sphere_pole_limit_is_two_to_minus_10(void)
 {
     static const struct { int32_t r; int pole; } c[] = {{65536, 1}, {98304, 0}};
-    fxl_texgen_t tg;
     size_t i;
-    fxl_texgen_defaults(&tg);
-    tg.mode = FXL_TEXGEN_SPHERICAL;
-    tg.axis = FXL_AXIS_Y;
     for (i = 0; i < sizeof c / sizeof c[0]; i++) {
-        fxl_vec3_t p[3];
-        fxl_texcoord_t t[3];
-        p[0].x = c[i].r;
-        p[0].y = 1024 << 16;
-        p[0].z = 0;
-        p[1] = around_y(0.30, 0.9);
-        p[2] = around_y(0.40, 0.9);
-        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texgen_triangle(&tg, p, t));
+        fxl_vec3_t p0;
+        fxl_texcoord_t t[1];
+        p0.x = c[i].r;
+        p0.y = 1024 << 16;
+        p0.z = 0;
+        t[0] = pole_test_vertex(FXL_TEXGEN_SPHERICAL, p0, 0.9);
         snprintf(msg, sizeof msg, "r %ld at h 1024 units: u %ld (%s)", (long)c[i].r, (long)t[0].u,
                  c[i].pole ? "a pole" : "its own theta");
         TEST_ASSERT_TRUE_MESSAGE(c[i].pole ? labs((long)t[0].u - (long)dq16(0.35)) <= 1 : t[0].u == 16384, msg);
