@@ -704,15 +704,22 @@ void test_init_retried_after_a_refused_delay_keeps_the_swreset_gap(void)
     }
 }
 
-void test_wait_hook_can_abort_a_stuck_transfer(void)
+/* An ST7789 with a two-pixel transfer that never completes within the
+ * test in flight, and a wait hook that gives up. */
+static void start_stuck_transfer(void)
 {
-    uint16_t buf[2] = { 0, 0 };
+    static uint16_t buf[2];
     start_emu("st7789");
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
-    emu.dma_delay = 1000000; /* never completes within this test */
+    emu.dma_delay = 1000000;
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
     panel.hal.wait = failing_wait;
+}
+
+void test_wait_hook_can_abort_a_stuck_transfer(void)
+{
+    start_stuck_transfer();
     TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_wait_idle(&panel));
     panel_emu_flush(&emu);
 }
@@ -747,14 +754,8 @@ void test_set_rotation_waits_for_the_transfer_in_flight(void)
  * panel keeps its rotation and size. */
 void test_set_rotation_gives_up_with_the_wait_hook_and_sends_nothing(void)
 {
-    uint16_t buf[2] = { 0, 0 };
     size_t from;
-    start_emu("st7789");
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_init(&panel, &hal, &fxl_st7789_240x320, 0));
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_set_window(&panel, 0, 0, 2, 1));
-    emu.dma_delay = 1000000; /* never completes within this test */
-    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_panel_write(&panel, buf, sizeof(buf)));
-    panel.hal.wait = failing_wait;
+    start_stuck_transfer();
     from = emu.log_len;
     TEST_ASSERT_EQUAL_INT(FXL_ERR_IO, fxl_panel_set_rotation(&panel, 1));
     TEST_ASSERT_EQUAL_UINT32((uint32_t)from, (uint32_t)emu.log_len);
