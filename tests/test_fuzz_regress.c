@@ -10,7 +10,8 @@
  * random cases covering the error paths) plus hand-made extreme cases. Check
  * 7 (texel values against each mode's error bound) found core defects (the
  * entries that say "Fixed") and places where its reference was narrower
- * than the documented contract (the last three entries). Add
+ * than the documented contract (the three entries before the last); check 8
+ * (depth values against the exact plane) found the last one. Add
  * every future finding here with the bytes printed by fixel-fuzz ("FINDING
  * ... bytes <hex>"). A change to the decoder must keep every input here decoding as before (the level-row
  * vertex layout, for one, skips the layout bytes these inputs use).
@@ -211,7 +212,19 @@ static const replay_t replays[] = {
          "5be80b7fb37e617e3f522be57925a5115d6b4b0da58077734945d7f041e16de1"
          "d3eec6e530db036a046ecdcca7e5fedceac3fd9f83a1551a7bfd78ea51fa3640"
          "a7969115fbfe7c5fc2cb0bba9e8a9986922613eec70894d5a717f1bc9d8e7bd7",
-     FXL_OK, 10}
+     FXL_OK, 10},
+    /* Check 8 (depth values; seed 61 case 21054, found on the core before
+     * the fix): subdiv 32 with depth, inv_w 2^21, 2 and 2^32 - 21. Where a
+     * one-pixel step of the depth plane reached 2^31 it was saturated to an
+     * int32: pixel (240,-373) stored 0x30B7 where inv_w >> 16 is 0x0B0F.
+     * Fixed: depth steps wrap modulo 2^32 (span.c, step_z_pow2). */
+    {"7583170d52121da0e01593c0869b61bbeaacd5e0f36709b36eabaa415d5e1983"
+         "ae52cdfa330b842ce2f84ff3655a8f609293da37ddec4ab427c5d9140f9555c4"
+         "068a5dc89330b57b0fd6b6c271ae510e12010f50613a2303ed9e7a0bdc74f05e"
+         "abcd507c1f14efebe936a14626cf01b98b73b6397320e5f2847516b7583fd294"
+         "6acf3aa06ba114cc8f7837de485d168b1a6f167495de506e21a02dcec49fe553"
+         "30e83218c7e09182c16b758b96ee6ded49f37212e6f56de6fefca2ffa42bed70",
+     FXL_OK, 18}
 };
 
 /* Front-end inputs (fixel-fuzz gives them FZP_BYTES bytes), recorded in

@@ -117,7 +117,7 @@ int main(int argc, char **argv)
 {
     uint64_t cases = 100000, seed = 1, start = 0, i, findings = 0, stop_after = 10;
     uint64_t n_ok = 0, n_err = 0, n_px = 0, n_equal = 0, n_pipe = 0, n_pipe_ok = 0, n_tris = 0, n_placed = 0, n_texel = 0, n_texel_wide = 0;
-    uint64_t n_alone = 0, n_alone_px = 0, n_alone_checked = 0;
+    uint64_t n_alone = 0, n_alone_px = 0, n_alone_checked = 0, n_depth = 0;
     size_t nbytes;
     uint64_t bytes64 = 192;
     const char *replay = NULL;
@@ -230,6 +230,7 @@ int main(int argc, char **argv)
         n_alone += o.alone_tris;
         n_alone_px += o.alone_written;
         n_alone_checked += o.alone_checked;
+        n_depth += o.depth_checked;
         if (!quiet && (i - start + 1) % 1000000u == 0) {
             fprintf(stderr, "fixel-fuzz: %llu cases, %.0f cases/s\n", (unsigned long long)(i - start + 1),
                     (double)(i - start + 1) / (now_s() - t0));
@@ -240,14 +241,15 @@ int main(int argc, char **argv)
         uint64_t done = i - start;
         printf("fixel-fuzz: seed %llu, cases %llu..%llu: %llu run in %.1f s (%.0f cases/s), %llu valid "
                "(%llu with exact coverage equality), %llu rejected with an error status, %llu pixels written "
-               "(%llu held to the texels or colour their mode's bound allows, %llu of them through level indexes); "
+               "(%llu held to the texels or colour their mode's bound allows, %llu of them through level indexes; "
+               "%llu depth values held to the exact plane); "
                "%llu front-end cases (%llu valid, %llu screen triangles, %llu mesh triangles placed against a "
                "double projection; %llu screen triangles drawn alone, %llu pixels written, %llu of them held to "
                "the texels or colour); %llu finding(s)\n",
                (unsigned long long)seed, (unsigned long long)start, (unsigned long long)(start + done),
                (unsigned long long)done, dt, dt > 0 ? (double)done / dt : 0.0, (unsigned long long)n_ok,
                (unsigned long long)n_equal, (unsigned long long)n_err, (unsigned long long)n_px,
-               (unsigned long long)n_texel, (unsigned long long)n_texel_wide,
+               (unsigned long long)n_texel, (unsigned long long)n_texel_wide, (unsigned long long)n_depth,
                (unsigned long long)n_pipe, (unsigned long long)n_pipe_ok, (unsigned long long)n_tris,
                (unsigned long long)n_placed, (unsigned long long)n_alone, (unsigned long long)n_alone_px,
                (unsigned long long)n_alone_checked, (unsigned long long)findings);

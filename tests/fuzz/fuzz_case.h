@@ -66,6 +66,9 @@
  *    covering the footprint. Where the level cannot be known (a
  *    per-triangle LOD from coordinate differences of 2^31 units or more)
  *    every level counts.
+ *  8 depth: with FXL_DEPTH_WRITE every written pixel's depth value is
+ *    within one of the exact inv_w plane's value >> 16 at its centre
+ *    (raster.h: floored, one step off at most), whatever the walk.
  */
 #ifndef FXL_FUZZ_CASE_H
 #define FXL_FUZZ_CASE_H
@@ -950,6 +953,7 @@ typedef struct fz_outcome {
     uint32_t alone_tris;    /* front end, P7: emitted triangles run as raster cases */
     uint32_t alone_written; /* P7: pixels they wrote, drawn alone */
     uint32_t alone_checked; /* P7: of those, held to check 7 */
+    uint32_t depth_checked; /* check 8: depth values held to the exact plane */
 } fz_outcome;
 
 /* The probe (check 5) has no user pointer: file-scope state, set per run. */
@@ -1830,6 +1834,43 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
     return 0;
 }
 
+/* Check 8 (see the top): the depth values written, against the inv_w
+ * plane through the snapped vertices, in doubles (|inv_w| < 2^32 and
+ * pixel distances < 2^17: far inside double precision). */
+static int fz_check_depth(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
+{
+    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);
+    double X[3], Y[3], Z[3], det, zx, zy;
+    int32_t row, col;
+    int i;
+    if (!c->has_depth || !(c->draw.depth & FXL_DEPTH_WRITE))
+        return 0;
+    for (i = 0; i < 3; i++) {
+        X[i] = (double)ref_snap(c->v[i].x) / grid;
+        Y[i] = (double)ref_snap(c->v[i].y) / grid;
+        Z[i] = (double)c->v[i].inv_w;
+    }
+    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    if (det == 0)
+        return 0;
+    zx = ((Z[1] - Z[0]) * (Y[2] - Y[0]) - (Z[2] - Z[0]) * (Y[1] - Y[0])) / det;
+    zy = ((Z[2] - Z[0]) * (X[1] - X[0]) - (Z[1] - Z[0]) * (X[2] - X[0])) / det;
+    for (row = 0; row < c->h; row++)
+        for (col = 0; col < c->w; col++) {
+            const double fx = (double)col + c->origin_x + 0.5, fy = (double)row + c->origin_y + 0.5;
+            const double z = Z[0] + zx * (fx - X[0]) + zy * (fy - Y[0]), want = floor(z / 65536.0);
+            uint16_t px, got;
+            if (!fz_written_pixel(c, s, row, col, &px))
+                continue;
+            got = s->dep_a[FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col];
+            if (fabs((double)got - want) > 1.0)
+                FZ_FAIL("pixel (%d,%d) (frame %.0f,%.0f) stores depth %04X, the exact inv_w %.1f (>> 16: %04X)", col,
+                        row, fx - 0.5, fy - 0.5, got, z, (unsigned)want);
+            out->depth_checked++;
+        }
+    return 0;
+}
+
 /* Check 7 for untextured draws: a flat one writes its colour exactly; a
  * Gouraud one each channel within its interpolation's bound (fz_gouraud). */
 static int fz_check_colors(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
@@ -1981,7 +2022,7 @@ static int fz_run_case(fz_state *s, fz_case *c, fz_outcome *out, char *msg)
         }
 
     /* 7: texel values (before 5b redraws pix_a) */
-    if (fz_check_texels(c, s, out, msg) || fz_check_colors(c, s, out, msg))
+    if (fz_check_texels(c, s, out, msg) || fz_check_colors(c, s, out, msg) || fz_check_depth(c, s, out, msg))
         return 1;
 
     /* 5b: the probe sees every covered pixel once */

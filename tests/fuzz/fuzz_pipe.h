@@ -62,8 +62,8 @@
  *     never brighter than the base colour),
  *     fxl_mat4_transform*, fxl_mat4_mul with aliased operands.
  *  P7 the pixels: each emitted triangle, drawn alone into the case's
- *     target with its draw, passes fz_run_case's checks 1-7 (status, memory,
- *     clip, determinism, exact coverage, stats, texel values). With P4
+ *     target with its draw, passes fz_run_case's checks 1-8 (status, memory,
+ *     clip, determinism, exact coverage, stats, texel values, depth values). With P4
  *     (fxl_mesh_draw writes what fxl_draw_indexed of the emitted triangles
  *     writes, and a pixel's value depends only on its triangle) that holds
  *     every pixel the front end draws to its mode's texel or colour bound.
