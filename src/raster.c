@@ -287,7 +287,7 @@ fxl_status_t fxl__draw_triangle_with(fxl_target_t *target, const fxl_draw_t *dra
  * the smallest y, then x, so a triangle draws the same pixels whichever
  * vertex is given first and in either winding (the rotation keeps the
  * winding; make_plane's gradients do not depend on it). Cost: 82 B of
- * Cortex-M4 -Os core (4 B under 16 KiB left; a pointer walk, as index
+ * Cortex-M4 -Os core (it left 4 B under 16 KiB then; a pointer walk, as index
  * arithmetic took 46 B more), 64 B of fxl__draw_valid's frame, ~50
  * Cortex-M4 instructions a triangle at -O2 (2,000 small triangles +1%). */
 static const fxl_vertex_t *first_vertex(const fxl_vertex_t v[3])
