@@ -3814,7 +3814,12 @@ void test_needle_slivers_interpolate_their_attributes_in_every_mode(void)
  * round_half_up(|N| 2^PF / den)). A tie needs |det| to hold 2^(PF + 1):
  * det = 2048 * 1024 = 2^21 grid units with an odd dY1 gives the depth
  * plane gx = (dz1 * 1024 - dz2) 2^20 / 2^21, a half exactly when dz2 is
- * odd. Checked against the exact quotient for both signs and windings. */
+ * odd. Checked against the exact quotient for both signs and windings.
+ * The second shape, det = 512 * 4096 = 2^21 too, makes gx's numerator
+ * dz1 * 4096 - dz2 with |dz1| near 2^31: |N| 2^PF passes 2^62, so the
+ * quotient takes setup's chunked path (div_frac's long division of the
+ * remainder), whose tie rule must be the same (a mutation run left a
+ * `>` there alive: its ties rounded toward zero, one unit off). */
 static fxl__plane_t probe_zplane;
 static uint32_t probe_depth_plane(const fxl__tri_t *tri, const fxl__seg_t *s)
 {
@@ -3822,9 +3827,13 @@ static uint32_t probe_depth_plane(const fxl__tri_t *tri, const fxl__seg_t *s)
     return (uint32_t)s->n;
 }
 
-static int64_t round_half_away(int64_t num, int64_t den)   /* den > 0, |num| < 2^62 */
+/* round(num 2^PF / den), ties away from zero, for den > 0 below 2^41 and
+ * any num: the whole quotient and the remainder's fraction apart, so
+ * nothing passes 2^62 (num 2^PF itself would, for the second shape) */
+static int64_t round_half_away_pf(int64_t num, int64_t den)
 {
-    const int64_t m = num < 0 ? -num : num, q = (m + den / 2) / den;
+    const int64_t m = num < 0 ? -num : num;
+    const int64_t q = (m / den) * ((int64_t)1 << FXL__PF) + ((m % den) * ((int64_t)1 << FXL__PF) + den / 2) / den;
     return num < 0 ? -q : q;
 }
 
@@ -3832,47 +3841,54 @@ void test_gradient_ties_round_half_away_from_zero(void)
 {
     enum { TW = 160, TH = 120 };
     static uint16_t px[TW * TH], zb[TW * TH];
-    static const int32_t dz[4][2] = {{1001, 3}, {1001, -3}, {-7, 5}, {-7, -5}};
+    /* per shape: X1 - X0, Y1 - Y0, Y2 - Y0 (X2 = X0) and four (dz1, dz2) */
+    static const struct {
+        int32_t dx1, dy1, dy2;
+        int32_t dz[4][2];
+    } shapes[2] = {{2048, 1, 1024, {{1001, 3}, {1001, -3}, {-7, 5}, {-7, -5}}},
+                   {512, 1, 4096, {{0x7FFFFFF1, 3}, {0x7FFFFFF1, -3}, {-0x7FFFFFF1, 5}, {-0x7FFFFFF1, -5}}}};
     const int32_t X0 = 8 << FXL__S, Y0 = 8 << FXL__S;
-    const int32_t X[3] = {X0, X0 + 2048, X0}, Y[3] = {Y0, Y0 + 1, Y0 + 1024};
     fxl_target_t t;
     fxl_draw_t d;
     char msg[160];
-    int k, w;
+    int sh, k, w;
     TEST_NEEDS(FXL_HAVE_DEPTH && FXL_HAVE_GENERIC);
-    for (k = 0; k < 4; k++)
-        for (w = 0; w < 2; w++) {
-            fxl_vertex_t v[3];
-            const uint32_t z0 = 0x40000000u;
-            const uint32_t z[3] = {z0, z0 + (uint32_t)dz[k][0], z0 + (uint32_t)dz[k][1]};
-            int64_t det, nx, ny;
-            int i;
-            memset(v, 0, sizeof v);
-            for (i = 0; i < 3; i++) {
-                const int j = w && i ? 3 - i : i;   /* w: the other winding */
-                v[j].x = X[i] * (1 << (16 - FXL__S));
-                v[j].y = Y[i] * (1 << (16 - FXL__S));
-                v[j].inv_w = z[i];
-                v[j].color = 0xFFFFu;
+    for (sh = 0; sh < 2; sh++)
+        for (k = 0; k < 4; k++)
+            for (w = 0; w < 2; w++) {
+                const int32_t X[3] = {X0, X0 + shapes[sh].dx1, X0}, Y[3] = {Y0, Y0 + shapes[sh].dy1, Y0 + shapes[sh].dy2};
+                const int32_t *dz = shapes[sh].dz[k];
+                fxl_vertex_t v[3];
+                /* room for dz of either sign within uint32 */
+                const uint32_t z0 = sh == 0 ? 0x40000000u : dz[0] < 0 || dz[1] < 0 ? 0x80000000u : 0x100u;
+                const uint32_t z[3] = {z0, z0 + (uint32_t)dz[0], z0 + (uint32_t)dz[1]};
+                int64_t det, nx, ny;
+                int i;
+                memset(v, 0, sizeof v);
+                for (i = 0; i < 3; i++) {
+                    const int j = w && i ? 3 - i : i;   /* w: the other winding */
+                    v[j].x = X[i] * (1 << (16 - FXL__S));
+                    v[j].y = Y[i] * (1 << (16 - FXL__S));
+                    v[j].inv_w = z[i];
+                    v[j].color = 0xFFFFu;
+                }
+                fxl_draw_defaults(&d);
+                d.shade = FXL_SHADE_FLAT;
+                d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, TW, TH, TW, drawable_rgb565()));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
+                fxl_target_clear_depth(&t);
+                memset(&probe_zplane, 0, sizeof probe_zplane);
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_depth_plane));
+                /* the plane's reference vertex is v[0] = (X0, Y0) in both windings */
+                det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
+                nx = ((int64_t)z[1] - z[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)z[2] - z[0]) * ((int64_t)Y[1] - Y[0]);
+                ny = ((int64_t)z[2] - z[0]) * ((int64_t)X[1] - X[0]) - ((int64_t)z[1] - z[0]) * ((int64_t)X[2] - X[0]);
+                snprintf(msg, sizeof msg, "shape %d dz (%ld, %ld) winding %d: gx %lld, want %lld", sh, (long)dz[0],
+                         (long)dz[1], w, (long long)probe_zplane.gx, (long long)round_half_away_pf(nx, det));
+                TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gx == round_half_away_pf(nx, det), msg);
+                TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gy == round_half_away_pf(ny, det), msg);
             }
-            fxl_draw_defaults(&d);
-            d.shade = FXL_SHADE_FLAT;
-            d.depth = FXL_DEPTH_TEST | FXL_DEPTH_WRITE;
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, px, TW, TH, TW, drawable_rgb565()));
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zb));
-            fxl_target_clear_depth(&t);
-            memset(&probe_zplane, 0, sizeof probe_zplane);
-            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl__draw_triangle_with(&t, &d, v, NULL, probe_depth_plane));
-            /* the plane's reference vertex is v[0] = (X0, Y0) in both windings */
-            det = ((int64_t)X[1] - X[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)X[2] - X[0]) * ((int64_t)Y[1] - Y[0]);
-            nx = ((int64_t)z[1] - z[0]) * ((int64_t)Y[2] - Y[0]) - ((int64_t)z[2] - z[0]) * ((int64_t)Y[1] - Y[0]);
-            ny = ((int64_t)z[2] - z[0]) * ((int64_t)X[1] - X[0]) - ((int64_t)z[1] - z[0]) * ((int64_t)X[2] - X[0]);
-            snprintf(msg, sizeof msg, "dz (%ld, %ld) winding %d: gx %lld, want %lld", (long)dz[k][0],
-                     (long)dz[k][1], w, (long long)probe_zplane.gx,
-                     (long long)round_half_away(nx * ((int64_t)1 << FXL__PF), det));
-            TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gx == round_half_away(nx * ((int64_t)1 << FXL__PF), det), msg);
-            TEST_ASSERT_TRUE_MESSAGE(probe_zplane.gy == round_half_away(ny * ((int64_t)1 << FXL__PF), det), msg);
-        }
 }
 
 /* The needle threshold (setup.c, gradient): a triangle without uv_wide
