@@ -3049,6 +3049,115 @@ void test_stats_count_generic_draws(void)
     check_walk(FXL_PIXFMT_RGB565, 0, FXL_FILTER_POINT, FXL_WRAP_CLAMP, 0, 0);
 }
 
+/* fxl_stats_t.divisions in the fixed-length modes: the correction points
+ * of each clipped span [cl, cr) of a span [xl, xr), counted once each.
+ * Segments of N = 2^k pixels (affine: FXL_PERSP_MAX) start at x0 = xl +
+ * N floor((cl - xl) / N), the first that reaches the clip, and the last
+ * one ends on the span's last pixel xr - 1: 1 + ceil((cr - x0) / N)
+ * points. A last segment of one pixel (it starts on xr - 1, and the span
+ * reaches cr = xr) ends where it starts: the specialised walks count that
+ * point once, the generic walk twice (raster.h: in exact mode, where every
+ * last segment is one pixel, "one more per span"). Exact mode's own
+ * specialised walks (runs) are left out. The spans come from the same
+ * triangle drawn unclipped; half the triangles have a top edge of one
+ * depth (the walk along rows of constant q). A mutation run left the
+ * counts unguarded: the generic walk counting from xl (the segments left
+ * of the clip too), the lean walk counting floor + 1 segments and the
+ * constant-q row walk counting the one-pixel end twice all survived. */
+static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_rect_t *c, int k, int generic)
+{
+    const int32_t N = (int32_t)1 << k;
+    uint32_t n = 0;
+    int32_t x, y;
+    for (y = c->y0; y < c->y1; y++) {
+        int32_t xl = -1, xr = -1, cl, cr, x0;
+        for (x = 0; x < w; x++)
+            if (full[y * w + x] != 0xDEAD) {
+                if (xl < 0)
+                    xl = x;
+                xr = x + 1;
+            }
+        cl = xl > c->x0 ? xl : c->x0;
+        cr = xr < c->x1 ? xr : c->x1;
+        if (xl < 0 || cl >= cr)
+            continue;   /* no span, or none left by the clip: no walk */
+        x0 = xl + ((cl - xl) >> k << k);
+        n += 1u + (uint32_t)((cr - x0 + N - 1) >> k);
+        if (!generic && cr == xr && ((xr - 1 - x0) & (N - 1)) == 0)
+            n--;
+    }
+    return n;
+}
+
+void test_divisions_count_each_correction_point_once(void)
+{
+    enum { TW = 200, TH = 150, NT = 400 };
+    static uint16_t texels[64 * 64], full[TW * TH], buf[TW * TH], zbuf[TW * TH];
+    static const int16_t persp[7] = {FXL_PERSP_AFFINE, FXL_PERSP_EXACT, 2, 4, 16, 32, 256};
+    static const int log2_len[7] = {8, 0, 1, 2, 4, 5, 8};
+    fxl_texture_t tex, keyed;
+    fxl_target_t t;
+    char msg[200];
+    int n, checked = 0;
+    TEST_NEEDS(FXL_HAVE_GENERIC);   /* the spans come from a keyed draw */
+    fill_unkeyed(texels, 64 * 64);
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+    keyed_twin_texture(&tex, &keyed);
+    lcg_state = 6061u;
+    for (n = 0; n < NT; n++) {
+        const int pm = n % 7, depth = (n / 7) & 1;
+        fxl_rect_t c = {0, 0, TW, TH};
+        fxl_vertex_t v[3];
+        fxl_draw_t d, dg;
+        int i, pass;
+        for (i = 0; i < 3; i++)
+            v[i] = vtx(rnd() % (TW * 100u) / 100.0, rnd() % (TH * 100u) / 100.0, 0.01 + rnd() % 1000 / 1000.0,
+                       rnd() % 5000 / 1000.0, rnd() % 5000 / 1000.0);
+        if (n & 16) {   /* a top or bottom edge of one depth */
+            v[1].y = v[0].y;
+            v[1].inv_w = v[0].inv_w;
+        }
+        if (n % 4 != 3) {   /* a clip rectangle of any size inside the target */
+            c.x0 = (int32_t)(rnd() % (TW / 2));
+            c.y0 = (int32_t)(rnd() % (TH / 2));
+            c.x1 = c.x0 + 1 + (int32_t)(rnd() % (uint32_t)(TW - c.x0));
+            c.y1 = c.y0 + 1 + (int32_t)(rnd() % (uint32_t)(TH - c.y0));
+        }
+        fxl_draw_defaults(&d);
+        d.persp = persp[pm];
+        d.filter = (n / 14) & 1 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, FXL_PIXFMT_RGB565, depth))
+            continue;   /* refusals: test_left_out_features_are_refused */
+        fxl_target_init(&t, full, TW, TH, TW, FXL_PIXFMT_RGB565);
+        fxl_target_clear(&t, 0xDEAD);
+        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &dg, v, NULL));
+        for (pass = 0; pass < 2; pass++) {
+            fxl_stats_t st;
+            uint32_t want;
+            memset(&st, 0, sizeof st);
+            fxl_target_init(&t, buf, TW, TH, TW, FXL_PIXFMT_RGB565);
+            fxl_target_clear(&t, 0xDEAD);
+            if (depth) {
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zbuf));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+            }
+            fxl_target_set_clip(&t, &c);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, pass ? &dg : &d, v, &st));
+            if (st.drawn == 0 || (!st.generic && d.persp == FXL_PERSP_EXACT))
+                continue;
+            want = expected_divisions(full, TW, &c, log2_len[pm], st.generic != 0);
+            snprintf(msg, sizeof msg, "triangle %d persp %d depth %d clip (%d,%d)-(%d,%d), %s walk: %u divisions, want %u",
+                     n, d.persp, depth, (int)c.x0, (int)c.y0, (int)c.x1, (int)c.y1,
+                     st.generic ? "generic" : "specialised", (unsigned)st.divisions, (unsigned)want);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, st.divisions, msg);
+            checked++;
+        }
+    }
+    snprintf(msg, sizeof msg, "%d draws' divisions checked", checked);
+    TEST_MESSAGE(msg);
+    TEST_ASSERT_TRUE_MESSAGE(checked > NT / 2, msg);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 void test_draw_api_errors(void)
@@ -4040,6 +4149,7 @@ int main(void)
     RUN_TEST(test_row_const_walk_declined_spans_match_generic);
     RUN_TEST(test_level_row_walk_ends_whole_segments_before_the_last_pixel);
     RUN_TEST(test_stats_count_generic_draws);
+    RUN_TEST(test_divisions_count_each_correction_point_once);
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);
