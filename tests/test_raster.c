@@ -2165,6 +2165,62 @@ void test_wide_texture_ranges_step_from_64_bit_coordinates(void)
     TEST_ASSERT_TRUE_MESSAGE(e <= 0.25, msg);
 }
 
+/* raster.h: "a triangle with a clamp or border vertex coordinate 32767
+ * texels (of level 0) or more from 0 is divided at every pixel whatever
+ * `persp` says". At exactly 32767 texels (2^31 - 2^16 q16 texels, setup.c's
+ * rebase limit) a subdivided draw must then make exact mode's divisions;
+ * a mutation run left `>=` -> `>` there alive (the limit itself went
+ * unguarded). One q16 unit of the level-0 texel below, the same draw keeps
+ * its 16-pixel segments (fewer divisions), so the counts tell the two
+ * apart. Both signs, both clamp-type wraps, u and v. */
+void test_clamp_coordinate_32767_texels_out_divides_every_pixel(void)
+{
+    static uint16_t texels[64 * 64], buf[W * H];   /* what the texels hold does not matter */
+    const int32_t lim = (int32_t)(0x7FFF0000u >> 6);   /* 32767 texels of 64, normalised q16 */
+    fxl_texture_t tex;
+    fxl_target_t t;
+    char msg[160];
+    int wrap, sign, axis, below, checked = 0;
+    for (wrap = FXL_WRAP_CLAMP; wrap <= FXL_WRAP_BORDER; wrap++)
+        for (sign = -1; sign <= 1; sign += 2)
+            for (axis = 0; axis < 2; axis++)
+                for (below = 0; below < 2; below++) {
+                    const int32_t far = sign * (lim - below);
+                    fxl_vertex_t v[3] = {vtx(2.3, 1.7, 1.0, 0.25, 0.25), vtx(61.6, 9.2, 0.5, 0.25, 0.25),
+                                         vtx(7.4, 45.1, 0.25, 0.25, 0.25)};
+                    fxl_stats_t st[2];
+                    fxl_draw_t d;
+                    int m;
+                    if (axis)
+                        v[1].v = far;
+                    else
+                        v[1].u = far;
+                    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+                    tex.wrap_u = tex.wrap_v = (uint8_t)wrap;
+                    fxl_draw_defaults(&d);
+                    d.texture = &tex;
+                    d.depth = 0;
+                    if (left_out_feature(&d, &tex, FXL_PIXFMT_RGB565, 0) != NULL)
+                        continue;   /* refusals: test_left_out_features_are_refused */
+                    for (m = 0; m < 2; m++) {
+                        d.persp = m ? FXL_PERSP_EXACT : 16;
+                        memset(&st[m], 0, sizeof st[m]);
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_init(&t, buf, W, H, W, FXL_PIXFMT_RGB565));
+                        TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &d, v, &st[m]));
+                    }
+                    snprintf(msg, sizeof msg, "wrap %d %c = %ld (%s 32767 texels): %u divisions subdivided, %u exact",
+                             wrap, axis ? 'v' : 'u', (long)far, below ? "1 unit inside" : "at", (unsigned)st[0].divisions,
+                             (unsigned)st[1].divisions);
+                    TEST_ASSERT_TRUE_MESSAGE(st[1].pixels > 500, msg);
+                    if (below)
+                        TEST_ASSERT_TRUE_MESSAGE(st[0].divisions < st[1].divisions, msg);
+                    else
+                        TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[1].divisions, st[0].divisions, msg);
+                    checked++;
+                }
+    test_needs_draw(checked ? NULL : "FXL_HAVE_GENERIC (clamp and border wraps)");
+}
+
 /* fxl__quad_steps against the parabola it stands for: u_i (stepping
  * u += du, du += dd) within len^2/8 + 2 len + 1 q16 units of
  *   i d / len + C (i / len) (1 - i / len),  C = d len (g0 + g1) / 2 / 2^28,
@@ -4136,6 +4192,7 @@ int main(void)
     RUN_TEST(test_auto_on_the_largest_texture_keeps_its_budget);
     RUN_TEST(test_auto_short_mip_segments_take_runs_within_budget);
     RUN_TEST(test_wide_texture_ranges_step_from_64_bit_coordinates);
+    RUN_TEST(test_clamp_coordinate_32767_texels_out_divides_every_pixel);
     RUN_TEST(test_needle_slivers_interpolate_their_attributes_in_every_mode);
     RUN_TEST(test_needles_flag_gradients_beyond_what_a_pixel_holds);
     RUN_TEST(test_gradient_ties_round_half_away_from_zero);
