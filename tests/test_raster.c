@@ -2975,6 +2975,61 @@ void test_row_const_walk_declined_spans_match_generic(void)
         TEST_ASSERT_EQUAL_INT(80, drawn);
 }
 
+/* The walk along rows of constant q steps z too: q's plane is flat along
+ * x, z's need not be, where vertices of inv_w 2^31 or more are halved
+ * into q (inv_w 2k and 2k + 1 give one q, so a top edge of one q has z
+ * rising a unit). A first segment that starts left of the clip must
+ * advance z by its steps to the first pixel drawn, as the generic walk
+ * does; without it (a mutation run left that step out alive) a span's last
+ * two pixels, one segment clipped to the second, stored the first one's
+ * depth where inv_w crosses a multiple of 2^16 between them. Found by a
+ * search over such triangles (inv_w within a few units of m 2^16, the clip
+ * at a row's last pixel where the generic walk's stored depth changes
+ * there; 1,070 of 20,000 random ones qualified, every one of them drew
+ * the wrong depth with the step left out). Every variant with depth this
+ * build has must draw them as the generic walk does. */
+void test_row_const_walk_clipped_first_segment_steps_depth(void)
+{
+    static const struct {
+        int persp;
+        fxl_rect_t clip;
+        fxl_vertex_t v[3];
+    } cases[] = {
+        {8, {59, 35, 160, 36}, {{5953970, 2646571, 2751201276u, 28913, 25912, 0}, {4689863, 2646571, 2751201277u, 64278, 4854, 0},
+                               {1839718, 1993980, 2751201284u, 15232, 29612, 0}}},
+        {4, {75, 71, 160, 72}, {{5055776, 4458170, 2275999744u, 11212, 19730, 0}, {5247276, 4458170, 2275999745u, 12587, 19512, 0},
+                               {2654102, 6801260, 2275999740u, 9666, 6842, 0}}},
+        {2, {23, 69, 160, 70}, {{1194822, 3168449, 3389784062u, 2444, 46155, 0}, {823649, 3168449, 3389784063u, 21522, 41012, 0},
+                               {2417779, 7691328, 3389784068u, 54651, 47899, 0}}},
+    };
+    enum { FW = 160, FH = 120 };   /* the frame they were found in */
+    static uint16_t texels[64 * 64], fast[FW * FH], gen[FW * FH], zfast[FW * FH], zgen[FW * FH];
+    char msg[160];
+    size_t c;
+    int i, cfg, drawn = 0;
+    for (i = 0; i < 64 * 64; i++)
+        texels[i] = (uint16_t)(i * 2654435761u >> 16);
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        for (cfg = 0; cfg < 4; cfg++) {
+            const int bil = cfg & 1, swap = cfg >> 1;
+            const fxl_pixfmt_t fmt = swap ? FXL_PIXFMT_RGB565_SWAP : FXL_PIXFMT_RGB565;
+            fxl_texture_t tex;
+            fxl_draw_t d;
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
+            fxl_draw_defaults(&d);
+            d.texture = &tex;
+            d.persp = (int16_t)cases[c].persp;
+            d.filter = bil ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+            if (left_out_feature(&d, &tex, fmt, 1) != NULL)
+                continue;   /* refusals: test_left_out_features_are_refused */
+            snprintf(msg, sizeof msg, "case %d bilinear %d swap %d", (int)c, bil, swap);
+            TEST_ASSERT_TRUE(draw_fast_and_generic(&d, NULL, cases[c].v, FW, FH, fmt, 1, &cases[c].clip, fast, zfast,
+                                                   gen, zgen, msg) > 0);
+            drawn++;
+        }
+    test_needs_draw(drawn ? NULL : "FXL_HAVE_DEPTH (textured draws with depth)");
+}
+
 /* The one-texel-row walk (FXL_T_LROW) runs whole segments only up to the
  * span's last pixel, which ends the last segment (span_fast.h: the bound
  * min(cr, xr - 1)), as the generic walk does. Ending a run on the
@@ -4204,6 +4259,7 @@ int main(void)
     RUN_TEST(test_fast_and_generic_walks_agree);
     RUN_TEST(test_row_const_walk_matches_generic);
     RUN_TEST(test_row_const_walk_declined_spans_match_generic);
+    RUN_TEST(test_row_const_walk_clipped_first_segment_steps_depth);
     RUN_TEST(test_level_row_walk_ends_whole_segments_before_the_last_pixel);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_divisions_count_each_correction_point_once);
