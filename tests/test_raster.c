@@ -3006,7 +3006,7 @@ void test_row_const_walk_clipped_first_segment_steps_depth(void)
     static uint16_t texels[64 * 64], fast[FW * FH], gen[FW * FH], zfast[FW * FH], zgen[FW * FH];
     char msg[160];
     size_t c;
-    int i, cfg, drawn = 0;
+    int i, cfg, covered, drawn = 0;
     for (i = 0; i < 64 * 64; i++)
         texels[i] = (uint16_t)(i * 2654435761u >> 16);
     for (c = 0; c < sizeof cases / sizeof cases[0]; c++)
@@ -3023,8 +3023,12 @@ void test_row_const_walk_clipped_first_segment_steps_depth(void)
             if (left_out_feature(&d, &tex, fmt, 1) != NULL)
                 continue;   /* refusals: test_left_out_features_are_refused */
             snprintf(msg, sizeof msg, "case %d bilinear %d swap %d", (int)c, bil, swap);
-            TEST_ASSERT_TRUE(draw_fast_and_generic(&d, NULL, cases[c].v, FW, FH, fmt, 1, &cases[c].clip, fast, zfast,
-                                                   gen, zgen, msg) > 0);
+            covered = draw_fast_and_generic(&d, NULL, cases[c].v, FW, FH, fmt, 1, &cases[c].clip, fast, zfast, gen,
+                                            zgen, msg);
+            /* found on the 1/16 px grid: on another one the clipped row may
+             * hold no pixel (the comparison holds all the same) */
+            snprintf(msg, sizeof msg, "case %d draws nothing", (int)c);
+            TEST_ASSERT_TRUE_MESSAGE(covered > 0 || !FXL_TEST_DEFAULT_GRID, msg);
             drawn++;
         }
     test_needs_draw(drawn ? NULL : "FXL_HAVE_DEPTH (textured draws with depth)");
@@ -3209,7 +3213,7 @@ void test_divisions_count_each_correction_point_once(void)
     fxl_texture_t tex, keyed;
     fxl_target_t t;
     char msg[200];
-    int n, checked = 0;
+    int n, drawable = 0, checked = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);   /* the spans come from a keyed draw */
     fill_unkeyed(texels, 64 * 64);
     TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, texels, 64, 64, FXL_TEXFMT_RGB565, 1));
@@ -3239,6 +3243,7 @@ void test_divisions_count_each_correction_point_once(void)
         d.filter = (n / 14) & 1 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
         if (!keyed_twin_draws(&d, &dg, &tex, &keyed, FXL_PIXFMT_RGB565, depth))
             continue;   /* refusals: test_left_out_features_are_refused */
+        drawable++;
         fxl_target_init(&t, full, TW, TH, TW, FXL_PIXFMT_RGB565);
         fxl_target_clear(&t, 0xDEAD);
         TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, &dg, v, NULL));
@@ -3264,9 +3269,11 @@ void test_divisions_count_each_correction_point_once(void)
             checked++;
         }
     }
-    snprintf(msg, sizeof msg, "%d draws' divisions checked", checked);
+    /* two draws a triangle; some miss the clip, and exact mode's
+     * specialised draws are not counted: still most */
+    snprintf(msg, sizeof msg, "%d draws' divisions checked, of %d triangles this build draws", checked, drawable);
     TEST_MESSAGE(msg);
-    TEST_ASSERT_TRUE_MESSAGE(checked > NT / 2, msg);
+    TEST_ASSERT_TRUE_MESSAGE(drawable > 0 && checked > drawable, msg);
 }
 
 /* ---- errors ------------------------------------------------------------------ */
