@@ -1465,11 +1465,12 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
 
 /* q (the vertices' inv_w, linear in screen space) as a plane in pixels:
  * its value at vertex 0, its gradient, and the least vertex q, which the
- * core clamps to; ok 0 for a zero-area triangle or an affine draw (q
- * constant there: no such term). Once per case. */
+ * core clamps to; plane 0 for a zero-area triangle (no plane), ok 0 for
+ * that or an affine draw (q constant there: no LOD term; the depth plane,
+ * check 8, is the same in every mode). Once per case. */
 typedef struct fz_qplane {
     double x0, y0, q0, qx, qy, qmin;
-    int ok;
+    int plane, ok;
 } fz_qplane;
 
 static void fz_qplane_init(const fz_case *c, fz_qplane *p)
@@ -1483,8 +1484,9 @@ static void fz_qplane_init(const fz_case *c, fz_qplane *p)
         q[i] = (double)c->v[i].inv_w;
     }
     det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-    p->ok = det != 0 && c->draw.persp != FXL_PERSP_AFFINE;
-    if (!p->ok)
+    p->plane = det != 0;
+    p->ok = p->plane && c->draw.persp != FXL_PERSP_AFFINE;
+    if (!p->plane)
         return;
     p->x0 = X[0];
     p->y0 = Y[0];
@@ -1835,37 +1837,28 @@ static int fz_check_texels(const fz_case *c, const fz_state *s, fz_outcome *out,
 }
 
 /* Check 8 (see the top): the depth values written, against the inv_w
- * plane through the snapped vertices, in doubles (|inv_w| < 2^32 and
- * pixel distances < 2^17: far inside double precision). */
+ * plane through the snapped vertices (fz_qplane; |inv_w| < 2^32 and pixel
+ * distances < 2^17: far inside double precision). */
 static int fz_check_depth(const fz_case *c, const fz_state *s, fz_outcome *out, char *msg)
 {
-    const double grid = ldexp(1.0, FXL_SUBPIXEL_BITS);
-    double X[3], Y[3], Z[3], det, zx, zy;
+    fz_qplane z;
     int32_t row, col;
-    int i;
     if (!c->has_depth || !(c->draw.depth & FXL_DEPTH_WRITE))
         return 0;
-    for (i = 0; i < 3; i++) {
-        X[i] = (double)ref_snap(c->v[i].x) / grid;
-        Y[i] = (double)ref_snap(c->v[i].y) / grid;
-        Z[i] = (double)c->v[i].inv_w;
-    }
-    det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-    if (det == 0)
+    fz_qplane_init(c, &z);
+    if (!z.plane)
         return 0;
-    zx = ((Z[1] - Z[0]) * (Y[2] - Y[0]) - (Z[2] - Z[0]) * (Y[1] - Y[0])) / det;
-    zy = ((Z[2] - Z[0]) * (X[1] - X[0]) - (Z[1] - Z[0]) * (X[2] - X[0])) / det;
     for (row = 0; row < c->h; row++)
         for (col = 0; col < c->w; col++) {
             const double fx = (double)col + c->origin_x + 0.5, fy = (double)row + c->origin_y + 0.5;
-            const double z = Z[0] + zx * (fx - X[0]) + zy * (fy - Y[0]), want = floor(z / 65536.0);
+            const double q = z.q0 + z.qx * (fx - z.x0) + z.qy * (fy - z.y0), want = floor(q / 65536.0);
             uint16_t px, got;
             if (!fz_written_pixel(c, s, row, col, &px))
                 continue;
             got = s->dep_a[FZ_CANARY + (size_t)row * (size_t)c->stride + (size_t)col];
             if (fabs((double)got - want) > 1.0)
                 FZ_FAIL("pixel (%d,%d) (frame %.0f,%.0f) stores depth %04X, the exact inv_w %.1f (>> 16: %04X)", col,
-                        row, fx - 0.5, fy - 0.5, got, z, (unsigned)want);
+                        row, fx - 0.5, fy - 0.5, got, q, (unsigned)want);
             out->depth_checked++;
         }
     return 0;
