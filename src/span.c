@@ -3082,17 +3082,26 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             n = xr - x;
             div = n - 1;   /* the last segment ends on the last pixel */
         }
-        /* div >= 0 pixels on: a 64 x 32 multiply, modular, or for a full
-         * segment of 2^k gpxN, the same value (on the Cortex-M0+ each
-         * product is a call to __aeabi_lmul) */
-        if (FXL__GW_SWAP && full && ki == k) {
-            for (i = 0; i < np; i++)
-                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpxN[i]);
-        } else {
-            for (i = 0; i < np; i++)
-                pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
+        /* A last segment of one pixel (div 0) ends where it starts: the
+         * planes do not move and its end is p0, so it takes no second
+         * division (every span of exact mode had one). p1 is then left as
+         * it was, which no value reads: every step over div = 0 is 0
+         * (step_of, step_i32, fxl__quad_steps' len 0), the segment starts
+         * from p0, and the walk ends with it (x + n = xr >= cr). Tested as
+         * full || div so that full segments take no test of their own. */
+        if (full || div > 0) {
+            /* div pixels on: a 64 x 32 multiply, modular, or for a full
+             * segment of 2^k gpxN, the same value (on the Cortex-M0+ each
+             * product is a call to __aeabi_lmul) */
+            if (FXL__GW_SWAP && full && ki == k) {
+                for (i = 0; i < np; i++)
+                    pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpxN[i]);
+            } else {
+                for (i = 0; i < np; i++)
+                    pv[i] = (int64_t)((uint64_t)pv[i] + (uint64_t)tri->gpx[i] * (uint32_t)div);
+            }
+            GW_CORRECT(p1);
         }
-        GW_CORRECT(p1);
 #define STEP(d) (full ? step_pow2((d), ki) : step_of((d), div))
 
         a = x > cl ? x : cl;

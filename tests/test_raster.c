@@ -3170,16 +3170,16 @@ void test_stats_count_generic_draws(void)
  * N floor((cl - xl) / N), the first that reaches the clip, and the last
  * one ends on the span's last pixel xr - 1: 1 + ceil((cr - x0) / N)
  * points. A last segment of one pixel (it starts on xr - 1, and the span
- * reaches cr = xr) ends where it starts: the specialised walks count that
- * point once, the generic walk twice (raster.h: in exact mode, where every
- * last segment is one pixel, "one more per span"). Exact mode's own
+ * reaches cr = xr) ends where it starts: every walk counts that point once
+ * (the generic walk divided there twice until it took the segment's start
+ * as its end; in exact mode every span's last segment is one pixel). Exact mode's own
  * specialised walks (runs) are left out. The spans come from the same
  * triangle drawn unclipped; half the triangles have a top edge of one
  * depth (the walk along rows of constant q). A mutation run left the
  * counts unguarded: the generic walk counting from xl (the segments left
  * of the clip too), the lean walk counting floor + 1 segments and the
  * constant-q row walk counting the one-pixel end twice all survived. */
-static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_rect_t *c, int k, int generic)
+static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_rect_t *c, int k)
 {
     const int32_t N = (int32_t)1 << k;
     uint32_t n = 0;
@@ -3198,7 +3198,7 @@ static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_re
             continue;   /* no span, or none left by the clip: no walk */
         x0 = xl + ((cl - xl) >> k << k);
         n += 1u + (uint32_t)((cr - x0 + N - 1) >> k);
-        if (!generic && cr == xr && ((xr - 1 - x0) & (N - 1)) == 0)
+        if (cr == xr && ((xr - 1 - x0) & (N - 1)) == 0)
             n--;
     }
     return n;
@@ -3261,7 +3261,7 @@ void test_divisions_count_each_correction_point_once(void)
             TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, pass ? &dg : &d, v, &st));
             if (st.drawn == 0 || (!st.generic && d.persp == FXL_PERSP_EXACT))
                 continue;
-            want = expected_divisions(full, TW, &c, log2_len[pm], st.generic != 0);
+            want = expected_divisions(full, TW, &c, log2_len[pm]);
             snprintf(msg, sizeof msg, "triangle %d persp %d depth %d clip (%d,%d)-(%d,%d), %s walk: %u divisions, want %u",
                      n, d.persp, depth, (int)c.x0, (int)c.y0, (int)c.x1, (int)c.y1,
                      st.generic ? "generic" : "specialised", (unsigned)st.divisions, (unsigned)want);

@@ -170,10 +170,9 @@ typedef struct fxl_stats {
     uint32_t divisions;           /* correction points: the span starts and
                                    * segment ends where u, v are computed exactly
                                    * (an affine draw counts its span ends too; a
-                                   * correction that reuses the row's 1/q counts).
-                                   * The generic walk, every draw of an -Os
-                                   * build, counts one more per span in exact
-                                   * mode: it corrects at the last pixel again */
+                                   * correction that reuses the row's 1/q counts;
+                                   * a last segment of one pixel ends on its
+                                   * start, one point) */
     uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
                                    * with no specialised code (other texel formats and
                                    * wraps, key, modulate, Gouraud; those config.h's
