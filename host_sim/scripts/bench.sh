@@ -132,6 +132,7 @@ fi
 # ---- Cortex-M firmware --------------------------------------------------------------
 m4_counts=""
 m0_counts=""
+m4_os_counts=""
 footprint="$out/footprint.txt"
 # shellcheck source=host_sim/scripts/bare_metal.sh
 . "$scripts/bare_metal.sh"
@@ -149,12 +150,18 @@ if have arm-none-eabi-gcc; then
     make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-O2 OUT="$root/$m4w/icount" DATA="$root/$m4w/data_all.c" >&2
     make -s -j 2 -C bench fw CPU=cortex-m0plus OPT=-O2 OUT="$root/$m0w/icount" DATA="$root/$m0w/data_point.c" >&2
     make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-O2 OUT="$root/$m4w/trace" DATA="$root/$m4w/data_trace.c" >&2
+    # A size build (every draw through the generic walk), as flash-bound
+    # products build the core: its own column, m4_os_ipp.
+    make -s -j 2 -C bench fw CPU=cortex-m4 OPT=-Os OUT="$root/$m4w/icount-os" DATA="$root/$m4w/data_all.c" >&2
     if have qemu-system-arm; then
         say "qemu mps2-an386, -icount shift=0: M4 (all configurations) and M0+ code (point)"
         qemu_run "$m4w/icount/bench.elf" "$m4w/icount/fw.txt" -icount shift=0
         qemu_run "$m0w/icount/bench.elf" "$m0w/icount/fw.txt" -icount shift=0
         python3 "$scripts/m4_count.py" icount "$m4w/icount/fw.txt" >"$m4w/counts.txt"
         python3 "$scripts/m4_count.py" icount "$m0w/icount/fw.txt" >"$m0w/counts.txt"
+        say "qemu mps2-an386, -icount shift=0: M4 -Os (all configurations)"
+        qemu_run "$m4w/icount-os/bench.elf" "$m4w/icount-os/fw.txt" -icount shift=0
+        python3 "$scripts/m4_count.py" icount "$m4w/icount-os/fw.txt" >"$m4w/counts_os.txt"
         if [ "$trace" = 1 ]; then
             say "exact trace count: floor subdiv16 point/bilinear on M4"
             arm-none-eabi-nm "$m4w/trace/libfixel.a" >"$m4w/trace/lib.nm"
@@ -175,6 +182,7 @@ if have arm-none-eabi-gcc; then
         fi
         m4_counts="$m4w/counts.txt"
         m0_counts="$m0w/counts.txt"
+        m4_os_counts="$m4w/counts_os.txt"
     else
         say "qemu-system-arm not found (apt-get install qemu-system-arm): no Cortex-M counts"
     fi
@@ -355,6 +363,7 @@ args=(accuracy --runs "$runs" --csv "$out/results.csv" --plot-dir "$hostw")
 [ -n "$m4_counts" ] && args+=(--m4 "$m4_counts")
 [ -n "$m0_counts" ] && args+=(--m0 "$m0_counts")
 [ -n "$rv_counts" ] && args+=(--rv32 "$rv_counts")
+[ -n "$m4_os_counts" ] && args+=(--m4-os "$m4_os_counts")
 "$bench" "${args[@]}" >"$hostw/summary.txt"
 
 if have gnuplot; then

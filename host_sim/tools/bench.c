@@ -2,7 +2,7 @@
  *
  *   fixel-bench accuracy [--scene S] [--method M] [--filter F] [--runs N]
  *                        [--host-ir FILE] [--m4 FILE] [--m0 FILE] [--rv32 FILE]
- *                        [--csv FILE] [--plot-dir DIR]
+ *                        [--m4-os FILE] [--csv FILE] [--plot-dir DIR]
  *       every scene x method x filter: coverage, texel-coordinate error,
  *       image error (all against the reference renderer), host Mpixels/s;
  *       joins the instruction counts gathered by bench.sh and writes the CSV
@@ -109,7 +109,7 @@ static const filter_t filters[] = {{"point", FXL_FILTER_POINT, FXL_MIP_NONE},
 typedef struct options {
     const char *scene, *method, *filter;
     int runs;
-    const char *host_ir, *m4, *m0, *rv32, *csv, *plot_dir;
+    const char *host_ir, *m4, *m0, *rv32, *m4_os, *csv, *plot_dir;
     const char *fw_filters;
     int fw_meshes;
     const char *mip;   /* draw, gen-fw: none|nearest|linear overrides the filter's mip mode */
@@ -131,7 +131,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: fixel-bench COMMAND [options]   (make bench runs them all: host_sim/scripts/bench.sh)\n"
             "  accuracy [--scene S] [--method M] [--filter F] [--runs N] [--host-ir FILE]\n"
-            "           [--m4 FILE] [--m0 FILE] [--rv32 FILE] [--csv FILE] [--plot-dir DIR]\n"
+            "           [--m4 FILE] [--m0 FILE] [--rv32 FILE] [--m4-os FILE] [--csv FILE] [--plot-dir DIR]\n"
             "      every scene x method x filter against the reference: coverage, texel\n"
             "      error, PSNR, host Mpixels/s; joins instruction counts; writes the CSV\n"
             "  draw [--scene S] [--method M] [--filter F] [--mip none|nearest|linear] [--tint RGB565HEX]\n"
@@ -388,7 +388,7 @@ typedef struct row {
     uint64_t covered;
     metrics_coverage cov;
     metrics_summary err;
-    double wrong_share, psnr, max_diff, bound, mpix, host_ipp, m4_ipp, m0_ipp, rv32_ipp;
+    double wrong_share, psnr, max_diff, bound, mpix, host_ipp, m4_ipp, m0_ipp, rv32_ipp, m4_os_ipp;
     char m4_src[8];
 } row_t;
 
@@ -578,12 +578,12 @@ static int write_outputs(const options_t *o)
     }
     fprintf(csv, "scene,method,filter,seg_len,covered_px,cov_mismatch,drawn_twice,holes,"
                  "err_max,err_mean,err_p99,wrong_texel_share,psnr_db,max_chan_diff,bound_max,"
-                 "host_mpix_s,host_ipp,m4_ipp,m4_count,m0_ipp,rv32_ipp\n");
+                 "host_mpix_s,host_ipp,m4_ipp,m4_count,m0_ipp,rv32_ipp,m4_os_ipp\n");
     for (si = 0; si < NSCENES; si++)
         for (mi = 0; mi < NMETHODS; mi++)
             for (fi = 0; fi < NFILTERS; fi++) {
                 const row_t *r = &rows[si][mi][fi];
-                char mp[32], hi[32], m4[32], m0[32], rv[32];
+                char mp[32], hi[32], m4[32], m0[32], rv[32], m4s[32];
                 uint32_t twice;
                 if (!r->valid)
                     continue;
@@ -595,11 +595,12 @@ static int write_outputs(const options_t *o)
                 fmt_num(m4, sizeof m4, r->m4_ipp, "%.2f");
                 fmt_num(m0, sizeof m0, r->m0_ipp, "%.2f");
                 fmt_num(rv, sizeof rv, r->rv32_ipp, "%.2f");
-                fprintf(csv, "%s,%s,%s,%d,%llu,%u,%u,%u,%.6f,%.6f,%.6f,%.6f,%.2f,%.2f,%.6f,%s,%s,%s,%s,%s,%s\n",
+                fmt_num(m4s, sizeof m4s, r->m4_os_ipp, "%.2f");
+                fprintf(csv, "%s,%s,%s,%d,%llu,%u,%u,%u,%.6f,%.6f,%.6f,%.6f,%.2f,%.2f,%.6f,%s,%s,%s,%s,%s,%s,%s\n",
                         scenes[si], methods[mi].name, filters[fi].name, methods[mi].seg_len,
                         (unsigned long long)r->covered, r->cov.mismatches, twice, r->cov.holes, r->err.max,
                         r->err.mean, r->err.p99, r->wrong_share, r->psnr, r->max_diff, r->bound, mp, hi, m4,
-                        r->m4_src, m0, rv);
+                        r->m4_src, m0, rv, m4s);
             }
     if (o->csv && close_out(csv, o->csv) != 0)
         return 1;
@@ -676,33 +677,35 @@ static int write_outputs(const options_t *o)
     }
 
     /* Summary table */
-    printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %9s %8s\n", "scene", "method", "filter", "host_i/px", "M4_i/px",
-           "M0_i/px", "RV32_i/px", "err_max", "err_p99", "PSNR");
+    printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %9s %9s %8s\n", "scene", "method", "filter", "host_i/px", "M4_i/px",
+           "M0_i/px", "RV32_i/px", "M4-Os_i/px", "err_max", "err_p99", "PSNR");
     for (si = 0; si < NSCENES; si++)
         for (mi = 0; mi < NMETHODS; mi++)
             for (fi = 0; fi < NFILTERS; fi++) {
                 const row_t *r = &rows[si][mi][fi];
-                char hi[32], m4[32], m0[32], rv[32];
+                char hi[32], m4[32], m0[32], rv[32], m4s[32];
                 if (!r->valid)
                     continue;
                 fmt_num(hi, sizeof hi, r->host_ipp, "%.1f");
                 fmt_num(m4, sizeof m4, r->m4_ipp, "%.1f");
                 fmt_num(m0, sizeof m0, r->m0_ipp, "%.1f");
                 fmt_num(rv, sizeof rv, r->rv32_ipp, "%.1f");
-                printf("%-13s %-9s %-9s %9s %8s %8s %9s %9.4f %9.4f %8.2f\n", scenes[si], methods[mi].name,
-                       filters[fi].name, hi, m4, m0, rv, r->err.max, r->err.p99, r->psnr);
+                fmt_num(m4s, sizeof m4s, r->m4_os_ipp, "%.1f");
+                printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %9.4f %9.4f %8.2f\n", scenes[si], methods[mi].name,
+                       filters[fi].name, hi, m4, m0, rv, m4s, r->err.max, r->err.p99, r->psnr);
             }
     return 0;
 }
 
 static int cmd_accuracy(const options_t *o)
 {
-    static counts_t hc, m4c, m0c, rvc;
+    static counts_t hc, m4c, m0c, rvc, m4sc;
     size_t si, mi, fi;
     (void)read_counts(o->host_ir, &hc);
     (void)read_counts(o->m4, &m4c);
     (void)read_counts(o->m0, &m0c);
     (void)read_counts(o->rv32, &rvc);
+    (void)read_counts(o->m4_os, &m4sc);
     for (si = 0; si < NSCENES; si++) {
         if (!selected(o->scene, scenes[si]))
             continue;
@@ -719,6 +722,7 @@ static int cmd_accuracy(const options_t *o)
                 r->m4_ipp = m4c.key[si][mi][fi] ? m4c.val[si][mi][fi] / px : NAN;
                 r->m0_ipp = m0c.key[si][mi][fi] ? m0c.val[si][mi][fi] / px : NAN;
                 r->rv32_ipp = rvc.key[si][mi][fi] ? rvc.val[si][mi][fi] / px : NAN;
+                r->m4_os_ipp = m4sc.key[si][mi][fi] ? m4sc.val[si][mi][fi] / px : NAN;
                 snprintf(r->m4_src, sizeof r->m4_src, "%s", m4c.src[si][mi][fi]);
             }
     return write_outputs(o);
@@ -1215,6 +1219,8 @@ int main(int argc, char **argv)
             dst = &o.m0;
         else if (strcmp(a, "--rv32") == 0)
             dst = &o.rv32;
+        else if (strcmp(a, "--m4-os") == 0)
+            dst = &o.m4_os;
         else if (strcmp(a, "--csv") == 0)
             dst = &o.csv;
         else if (strcmp(a, "--plot-dir") == 0)
