@@ -3085,7 +3085,7 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
         /* A last segment of one pixel (div 0) ends where it starts: the
          * planes do not move and its end is p0, so it takes no second
          * division (every span of exact mode had one). p1 is then left as
-         * it was, which no value reads: every step over div = 0 is 0
+         * it was, on which no value depends: every step over div = 0 is 0
          * (step_of, step_i32, fxl__quad_steps' len 0), the segment starts
          * from p0, and the walk ends with it (x + n = xr >= cr). Tested as
          * full || div so that full segments take no test of their own. */

@@ -3170,9 +3170,11 @@ void test_stats_count_generic_draws(void)
  * N floor((cl - xl) / N), the first that reaches the clip, and the last
  * one ends on the span's last pixel xr - 1: 1 + ceil((cr - x0) / N)
  * points. A last segment of one pixel (it starts on xr - 1, and the span
- * reaches cr = xr) ends where it starts: every walk counts that point once
- * (the generic walk divided there twice until it took the segment's start
- * as its end; in exact mode every span's last segment is one pixel). Exact mode's own
+ * reaches cr = xr) ends where it starts: every walk these one-level draws
+ * take counts that point once (the generic walk divided there twice until
+ * it took the segment's start as its end; in exact mode every span's last
+ * segment is one pixel; the batch walk of mipmapped draws, not drawn here,
+ * still divides there and counts it, raster.h). Exact mode's own
  * specialised walks (runs) are left out. The spans come from the same
  * triangle drawn unclipped; half the triangles have a top edge of one
  * depth (the walk along rows of constant q). A mutation run left the

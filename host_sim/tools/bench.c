@@ -677,7 +677,7 @@ static int write_outputs(const options_t *o)
     }
 
     /* Summary table */
-    printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %9s %9s %8s\n", "scene", "method", "filter", "host_i/px", "M4_i/px",
+    printf("%-13s %-9s %-9s %9s %8s %8s %9s %10s %9s %9s %8s\n", "scene", "method", "filter", "host_i/px", "M4_i/px",
            "M0_i/px", "RV32_i/px", "M4-Os_i/px", "err_max", "err_p99", "PSNR");
     for (si = 0; si < NSCENES; si++)
         for (mi = 0; mi < NMETHODS; mi++)
@@ -691,7 +691,7 @@ static int write_outputs(const options_t *o)
                 fmt_num(m0, sizeof m0, r->m0_ipp, "%.1f");
                 fmt_num(rv, sizeof rv, r->rv32_ipp, "%.1f");
                 fmt_num(m4s, sizeof m4s, r->m4_os_ipp, "%.1f");
-                printf("%-13s %-9s %-9s %9s %8s %8s %9s %9s %9.4f %9.4f %8.2f\n", scenes[si], methods[mi].name,
+                printf("%-13s %-9s %-9s %9s %8s %8s %9s %10s %9.4f %9.4f %8.2f\n", scenes[si], methods[mi].name,
                        filters[fi].name, hi, m4, m0, rv, m4s, r->err.max, r->err.p99, r->psnr);
             }
     return 0;

@@ -172,7 +172,9 @@ typedef struct fxl_stats {
                                    * (an affine draw counts its span ends too; a
                                    * correction that reuses the row's 1/q counts;
                                    * a last segment of one pixel ends on its
-                                   * start, one point) */
+                                   * start: one point, except in the batch walk
+                                   * of mipmapped draws in speed builds, which
+                                   * divides there again and counts it) */
     uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
                                    * with no specialised code (other texel formats and
                                    * wraps, key, modulate, Gouraud; those config.h's
