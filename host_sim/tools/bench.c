@@ -697,6 +697,12 @@ static int write_outputs(const options_t *o)
     return 0;
 }
 
+/* A configuration's count per covered pixel, NAN where the file had none. */
+static double per_pixel(const counts_t *c, size_t si, size_t mi, size_t fi, double px)
+{
+    return c->key[si][mi][fi] ? c->val[si][mi][fi] / px : NAN;
+}
+
 static int cmd_accuracy(const options_t *o)
 {
     static counts_t hc, m4c, m0c, rvc, m4sc;
@@ -718,11 +724,11 @@ static int cmd_accuracy(const options_t *o)
             for (fi = 0; fi < NFILTERS; fi++) {
                 row_t *r = &rows[si][mi][fi];
                 double px = r->covered ? (double)r->covered : NAN;
-                r->host_ipp = hc.key[si][mi][fi] ? hc.val[si][mi][fi] / px : NAN;
-                r->m4_ipp = m4c.key[si][mi][fi] ? m4c.val[si][mi][fi] / px : NAN;
-                r->m0_ipp = m0c.key[si][mi][fi] ? m0c.val[si][mi][fi] / px : NAN;
-                r->rv32_ipp = rvc.key[si][mi][fi] ? rvc.val[si][mi][fi] / px : NAN;
-                r->m4_os_ipp = m4sc.key[si][mi][fi] ? m4sc.val[si][mi][fi] / px : NAN;
+                r->host_ipp = per_pixel(&hc, si, mi, fi, px);
+                r->m4_ipp = per_pixel(&m4c, si, mi, fi, px);
+                r->m0_ipp = per_pixel(&m0c, si, mi, fi, px);
+                r->rv32_ipp = per_pixel(&rvc, si, mi, fi, px);
+                r->m4_os_ipp = per_pixel(&m4sc, si, mi, fi, px);
                 snprintf(r->m4_src, sizeof r->m4_src, "%s", m4c.src[si][mi][fi]);
             }
     return write_outputs(o);

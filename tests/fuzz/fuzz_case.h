@@ -1467,7 +1467,8 @@ static int64_t fz_span_first(const fz_case *c, int64_t fx, int64_t fy)
  * its value at vertex 0, its gradient, and the least vertex q, which the
  * core clamps to; plane 0 for a zero-area triangle (no plane), ok 0 for
  * that or an affine draw (q constant there: no LOD term; the depth plane,
- * check 8, is the same in every mode). Once per case. */
+ * check 8, is the same in every mode). Set up once per case by each check
+ * that reads it (three vertices: cheap beside the renders). */
 typedef struct fz_qplane {
     double x0, y0, q0, qx, qy, qmin;
     int plane, ok;
