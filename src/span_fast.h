@@ -242,6 +242,12 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
         } else {
             /* the last segment ends on the last pixel of the span */
             const uint64_t div = (uint64_t)(int64_t)(xr - xe - 1);
+#if FXL_HAVE_AUTO
+            /* a one-pixel end as ki 0, for the walk's count (phase 2
+             * draws it the same: xr - x > 1 << 0 is false there too) */
+            if (autoseg && div == 0u)
+                ck[cnt] = 0;
+#endif
             xe = xr;
             w->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
             w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;
@@ -272,7 +278,9 @@ static FXL__NOINLINE int32_t FXL_T_BATCH_AUTO(const fxl__tri_t *tri, int32_t t_r
                                               int32_t xr, int32_t cr, fxl__walk_t *w, uint32_t *cu, uint32_t *cv,
                                               uint32_t *cz, int32_t *clod, uint8_t *ck)
 {
-    return FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, 1, 0, 0, clod, ck);
+    const int32_t cnt = FXL_T_BATCH(tri, 1, t_row, xe_io, xl, xr, cr, w, cu, cv, cz, 1, 0, 0, clod, ck);
+    ck[FXL__BATCH] = ck[cnt - 1];   /* cnt >= 1 */
+    return cnt;
 }
 #endif
 

@@ -3174,7 +3174,8 @@ void test_stats_count_generic_draws(void)
  * take counts that point once (the generic walk divided there twice until
  * it took the segment's start as its end; in exact mode every span's last
  * segment is one pixel; the batch walk of mipmapped draws, not drawn here,
- * still divides there and counts it, raster.h). In exact mode a clip's
+ * still divides there twice and counts it once, raster.h, which
+ * test_divisions_match_between_walks holds it to). In exact mode a clip's
  * right edge cr < xr ends the span the same way: its last pixel's
  * segment needs no end past cr, so exact mode counts one point a drawn
  * pixel in every walk (the generic walk divided at cr too until it did
@@ -3183,7 +3184,8 @@ void test_stats_count_generic_draws(void)
  * along rows of constant q). A mutation run left the counts unguarded:
  * the generic walk counting from xl (the segments left of the clip too),
  * the lean walk counting floor + 1 segments and the constant-q row walk
- * counting the one-pixel end twice all survived. */
+ * counting the one-pixel end twice all survived. AUTO and mip levels:
+ * the next test. */
 static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_rect_t *c, int k)
 {
     const int32_t N = (int32_t)1 << k;
@@ -3279,6 +3281,86 @@ void test_divisions_count_each_correction_point_once(void)
     snprintf(msg, sizeof msg, "%d draws' divisions checked, of %d triangles this build draws", checked, drawable);
     TEST_MESSAGE(msg);
     TEST_ASSERT_TRUE_MESSAGE(drawable > 0 && checked > drawable, msg);
+}
+
+/* Every walk counts the same points (raster.h), so each draw's count is
+ * held to the generic walk's (its keyed twin): AUTO, whose lengths depend
+ * on the triangle; the batch walk of mipmapped draws (speed builds), which
+ * divides at a one-pixel end twice; the fixed modes with mip levels.
+ * Depth ratios up to 2^30 and up to 8 periods make segments of every
+ * length, one pixel too, and the clip rectangles put them at its right
+ * edge, where the generic walk divided once more than exact mode's runs
+ * until it took such a one-pixel segment as a last one, and the batch walk
+ * counted its one-pixel ends twice. Without specialised walks (-Os) both
+ * draws are generic and the test holds trivially. */
+void test_divisions_match_between_walks(void)
+{
+    enum { TW = 200, TH = 150, NT = 900 };
+    static uint16_t chain[64 * 64 * 2], buf[TW * TH], zbuf[TW * TH];
+    static const int16_t persp[5] = {FXL_PERSP_AUTO, FXL_PERSP_EXACT, 16, FXL_PERSP_AFFINE, 2};
+    fxl_texture_t tex, keyed;
+    fxl_target_t t;
+    char msg[200];
+    int n, drawable = 0, compared = 0, specialised = 0;
+    TEST_NEEDS(FXL_HAVE_GENERIC);
+    fill_unkeyed(chain, 64 * 64);
+#if FXL_HAVE_MIPMAP
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_mip_build(chain, (uint32_t)sizeof chain, 64, 64, FXL_TEXFMT_RGB565, 7, NULL,
+                                                FXL_MIP_SPACE_STORED));
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, chain, 64, 64, FXL_TEXFMT_RGB565, 7));
+#else
+    TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_texture_init(&tex, chain, 64, 64, FXL_TEXFMT_RGB565, 1));
+#endif
+    keyed_twin_texture(&tex, &keyed);
+    lcg_state = 7919u;
+    for (n = 0; n < NT; n++) {
+        const int depth = n & 1;
+        fxl_rect_t c;
+        fxl_vertex_t v[3];
+        fxl_draw_t d, dg;
+        fxl_stats_t st[2];
+        int i, pass;
+        for (i = 0; i < 3; i++) {
+            v[i] = vtx(rnd() % (TW * 100u) / 100.0, rnd() % (TH * 100u) / 100.0, 1.0, rnd() % 16000 / 1000.0 - 8.0,
+                       rnd() % 16000 / 1000.0 - 8.0);
+            v[i].inv_w = 1u + rnd() % (1u << (7u + rnd() % 24u));
+        }
+        c.x0 = (int32_t)(rnd() % (TW / 2));
+        c.y0 = (int32_t)(rnd() % (TH / 2));
+        c.x1 = c.x0 + 1 + (int32_t)(rnd() % (uint32_t)(TW - c.x0));
+        c.y1 = c.y0 + 1 + (int32_t)(rnd() % (uint32_t)(TH - c.y0));
+        fxl_draw_defaults(&d);
+        d.persp = persp[(n / 2) % 5];
+        d.filter = (n / 10) & 1 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        d.mip = (uint8_t)((n / 20) % 3);   /* none, nearest, linear */
+        if (!keyed_twin_draws(&d, &dg, &tex, &keyed, FXL_PIXFMT_RGB565, depth))
+            continue;   /* refusals: test_left_out_features_are_refused */
+        drawable++;
+        for (pass = 0; pass < 2; pass++) {
+            memset(&st[pass], 0, sizeof st[pass]);
+            fxl_target_init(&t, buf, TW, TH, TW, FXL_PIXFMT_RGB565);
+            if (depth) {
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_set_depth(&t, zbuf));
+                TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_target_clear_depth(&t));
+            }
+            fxl_target_set_clip(&t, &c);
+            TEST_ASSERT_EQUAL_INT(FXL_OK, fxl_draw_triangle(&t, pass ? &dg : &d, v, &st[pass]));
+        }
+        if (st[0].spans == 0)
+            continue;
+        snprintf(msg, sizeof msg, "triangle %d persp %d mip %d depth %d clip (%d,%d)-(%d,%d): %u, generic walk %u", n,
+                 d.persp, d.mip, depth, (int)c.x0, (int)c.y0, (int)c.x1, (int)c.y1, (unsigned)st[0].divisions,
+                 (unsigned)st[1].divisions);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[0].spans, st[1].spans, msg);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[0].divisions, st[1].divisions, msg);
+        compared++;
+        specialised += !st[0].generic;
+    }
+    snprintf(msg, sizeof msg, "%d draws compared, %d of them specialised, of %d this build draws", compared,
+             specialised, drawable);
+    TEST_MESSAGE(msg);
+    /* most triangles reach the clip rectangle */
+    TEST_ASSERT_TRUE_MESSAGE(drawable > 0 && compared > drawable / 2, msg);
 }
 
 /* ---- errors ------------------------------------------------------------------ */
@@ -4265,6 +4347,7 @@ int main(void)
     RUN_TEST(test_level_row_walk_ends_whole_segments_before_the_last_pixel);
     RUN_TEST(test_stats_count_generic_draws);
     RUN_TEST(test_divisions_count_each_correction_point_once);
+    RUN_TEST(test_divisions_match_between_walks);
     RUN_TEST(test_draw_api_errors);
     RUN_TEST(test_indexed_draw_matches_single_draws);
     RUN_TEST(test_depth_ties_keep_the_first_draw_in_every_walk);

@@ -171,10 +171,12 @@ typedef struct fxl_stats {
                                    * segment ends where u, v are computed exactly
                                    * (an affine draw counts its span ends too; a
                                    * correction that reuses the row's 1/q counts;
-                                   * a last segment of one pixel ends on its
-                                   * start: one point, except in the batch walk
-                                   * of mipmapped draws in speed builds, which
-                                   * divides there again and counts it) */
+                                   * a one-pixel segment that ends the span, or
+                                   * its clipped part, is one point: exact mode
+                                   * counts one a pixel). The same count in every
+                                   * build and walk (the batch walk of mipmapped
+                                   * draws in speed builds divides at a one-pixel
+                                   * end twice, and counts it once) */
     uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
                                    * with no specialised code (other texel formats and
                                    * wraps, key, modulate, Gouraud; those config.h's
