@@ -3046,6 +3046,19 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
         pv[i] = fxl__rr_plane(tri, tri->pl[i], x, Yc - tri->Y0);
     for (; i < NPLANES; i++)
         pv[i] = 0;
+    /* A one-pixel segment whose pixel is the last one drawn (exact mode's
+     * at a clip's right edge cr < xr, or AUTO's) needs no end either: its
+     * end, past cr, would only give the step no pixel takes. It is made a
+     * last segment (div 0, steps 0), as exact mode's runs (FXL_T_RUN) end
+     * it: one division a clipped span less, and the same count in every
+     * build. Speed builds end such a span at cr, here and in AUTO's
+     * choice below (a test a segment cost the -O2 lit frame's Gouraud
+     * walk 1.8%); size builds test each segment (below: the other way is
+     * 38 B more, past the 16 KiB the every-feature Cortex-M4 core keeps). */
+#if FXL__FAST_SPANS
+    if (k == 0 && !GW_AUTO_ROWS && cr < xr)
+        xr = cr;
+#endif
     point_zero(p0);
     point_zero(p1);
     GW_CORRECT(p0);
@@ -3066,6 +3079,10 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             ki = fxl__auto_next_tri(tri, t_row, x, xl, xr, pv[PQ]);
             quad = ki >= FXL__AUTO_QUAD;
             ki = FXL__AUTO_LOG2(ki);
+#if FXL__FAST_SPANS
+            if (ki == 0 && x + 1 >= cr)
+                xr = cr;   /* a one-pixel segment drawn last: as exact mode's, above */
+#endif
         } else {
             quad = !mod && tri->auto_seg == 2;   /* one quadratic length */
         }
@@ -3082,14 +3099,10 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
             n = xr - x;
             div = n - 1;   /* the last segment ends on the last pixel */
         }
-        /* A one-pixel segment whose pixel is the last one drawn (exact
-         * mode's, or AUTO's, at a clip's right edge cr < xr) needs no end
-         * either: its end, past cr, would only give the step no pixel
-         * takes. Treated as a last segment (div 0, steps 0), as exact
-         * mode's runs (FXL_T_RUN) treat it: one division a clipped span
-         * less, and the same count in every build. */
+#if !FXL__FAST_SPANS
         if (x + 1 >= cr && n == 1)
             full = div = 0;   /* in this order: 36 B less at -Os than n == 1 first */
+#endif
         /* A last segment of one pixel (div 0) ends where it starts: the
          * planes do not move and its end is p0, so it takes no second
          * division (every span of exact mode had one). p1 is then left as

@@ -242,12 +242,6 @@ static FXL__UNSWITCH int32_t FXL_T_BATCH(const fxl__tri_t *tri, const int autose
         } else {
             /* the last segment ends on the last pixel of the span */
             const uint64_t div = (uint64_t)(int64_t)(xr - xe - 1);
-#if FXL_HAVE_AUTO
-            /* a one-pixel end as ki 0, for the walk's count (phase 2
-             * draws it the same: xr - x > 1 << 0 is false there too) */
-            if (autoseg && div == 0u)
-                ck[cnt] = 0;
-#endif
             xe = xr;
             w->sq += (uint64_t)tri->gpx[FXL__PQ] * div;
             w->su += (uint64_t)tri->gpx[FXL__PA + FXL__AU] * div;

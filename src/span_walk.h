@@ -61,8 +61,8 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
      * segment i, cu[i + 1] ends it */
     uint32_t cu[FXL__BATCH + 1], cv[FXL__BATCH + 1];
 #if FXL_HAVE_AUTO
-    /* each segment's log2 length (AUTO per segment; 0 for a one-pixel
-     * end); ck[FXL__BATCH] the latest batch's last */
+    /* each segment's log2 length (AUTO per segment); ck[FXL__BATCH] the
+     * latest batch's last */
     uint8_t ck[FXL__BATCH + 1];
 #endif
 #if FXL_T_DEPTH && FXL_T_WZ
@@ -191,6 +191,13 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 #endif
             } else {
                 const uint32_t div = (uint32_t)(xr - x - 1);
+                /* Phase 1 divided at a one-pixel end twice: one point
+                 * (raster.h). Counted here, in memory, once a span: a
+                 * count held in a register through the walk cost
+                 * Cortex-M4 trilinear rows up to 1.3%, and one worked out
+                 * after the walk up to 2.6% of a firmware frame. */
+                if (div == 0u && tri->stats)
+                    tri->stats->divisions--;
                 n = xr - x;
                 du = step_div_u32(cu[i + 1] - u, div);
                 dv = step_div_u32(cv[i + 1] - v, div);
@@ -309,23 +316,18 @@ static FXL__NOINLINE void FXL_T_WALK(const fxl__tri_t *tri, int32_t row, int32_t
 #undef FXL_T_CZ
 #undef FXL_T_CLOD
     if (tri->stats) {
-        /* Phase 1 divided at a one-pixel end twice: one point (raster.h),
-         * as is a one-pixel segment that ends a span clipped at cr < xr.
-         * Found from the span here rather than counted in the walk: a
-         * count in the segment loop cost Cortex-M4 trilinear up to 1.3%. */
-        int one_pixel_end;
+        uint32_t points = segments + 1u;
+        /* a one-pixel segment that ends a span clipped at cr < xr is one
+         * point too (raster.h): there the last segment is full, 2^ki */
+        if (cr < xr) {
 #if FXL_HAVE_AUTO
-        if (autoseg)
-            one_pixel_end = ck[FXL__BATCH] == 0;
-        else
+            const int ki_last = autoseg ? ck[FXL__BATCH] : k;
+#else
+            const int ki_last = k;
 #endif
-        {
-            /* the first segment's start modulo 2^k (the LOD grid moves it
-             * by a multiple of 16, and there k <= 4) */
-            const int32_t x0 = xl + ((cl - xl) >> k << k);
-            one_pixel_end = (cr == xr || k == 0) && ((cr - 1 - x0) & (((int32_t)1 << k) - 1)) == 0;
+            points -= ki_last == 0;
         }
-        tri->stats->divisions += segments + 1u - (uint32_t)one_pixel_end;
+        tri->stats->divisions += points;
         tri->stats->pixels += written;
         tri->stats->spans++;
     }
