@@ -3108,8 +3108,9 @@ static FXL__ONE_BODY void generic_walk(const fxl__tri_t *tri, fxl__seg_fn fn, in
          * division (every span of exact mode had one). p1 is then left as
          * it was, on which no value depends: every step over div = 0 is 0
          * (step_of, step_i32, fxl__quad_steps' len 0), the segment starts
-         * from p0, and the walk ends with it (x + n = xr >= cr). Tested as
-         * full || div so that full segments take no test of their own. */
+         * from p0, and the walk ends with it (x + n >= cr: xr, or cr for a
+         * one-pixel segment made last above). Tested as full || div so
+         * that a full segment takes no second test. */
         if (full || div > 0) {
             /* div pixels on: a 64 x 32 multiply, modular, or for a full
              * segment of 2^k gpxN, the same value (on the Cortex-M0+ each

@@ -3184,8 +3184,9 @@ void test_stats_count_generic_draws(void)
  * along rows of constant q). A mutation run left the counts unguarded:
  * the generic walk counting from xl (the segments left of the clip too),
  * the lean walk counting floor + 1 segments and the constant-q row walk
- * counting the one-pixel end twice all survived. AUTO and mip levels:
- * the next test. */
+ * counting the one-pixel end twice all survived. A third of the triangles
+ * are lit (Gouraud MODULATE), which speed builds draw with the generic
+ * walk's own copy (draw_span_mod). AUTO and mip levels: the next test. */
 static uint32_t expected_divisions(const uint16_t *full, int32_t w, const fxl_rect_t *c, int k)
 {
     const int32_t N = (int32_t)1 << k;
@@ -3248,6 +3249,12 @@ void test_divisions_count_each_correction_point_once(void)
         fxl_draw_defaults(&d);
         d.persp = persp[pm];
         d.filter = (n / 14) & 1 ? FXL_FILTER_BILINEAR : FXL_FILTER_POINT;
+        if (n % 3 == 2) {   /* lit: speed builds draw it with the walk's Gouraud copy */
+            d.shade = FXL_SHADE_GOURAUD;
+            d.texenv = FXL_TEXENV_MODULATE;
+            for (i = 0; i < 3; i++)
+                v[i].color = (uint16_t)(0x3A5Bu * (uint32_t)(i + 1) + (uint32_t)n);
+        }
         if (!keyed_twin_draws(&d, &dg, &tex, &keyed, FXL_PIXFMT_RGB565, depth))
             continue;   /* refusals: test_left_out_features_are_refused */
         drawable++;
@@ -3293,6 +3300,8 @@ void test_divisions_count_each_correction_point_once(void)
  * until it took such a one-pixel segment as a last one, and the batch walk
  * counted its one-pixel ends twice. Without specialised walks (-Os) both
  * draws are generic and the test holds trivially. */
+/* the sum of the draws' counts below in a speed build of every feature */
+#define FXL_TEST_DIVISIONS_TOTAL 178850u
 void test_divisions_match_between_walks(void)
 {
     enum { TW = 200, TH = 150, NT = 900 };
@@ -3302,6 +3311,7 @@ void test_divisions_match_between_walks(void)
     fxl_target_t t;
     char msg[200];
     int n, drawable = 0, compared = 0, specialised = 0;
+    uint32_t total = 0;
     TEST_NEEDS(FXL_HAVE_GENERIC);
     fill_unkeyed(chain, 64 * 64);
 #if FXL_HAVE_MIPMAP
@@ -3353,6 +3363,8 @@ void test_divisions_match_between_walks(void)
                  (unsigned)st[1].divisions);
         TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[0].spans, st[1].spans, msg);
         TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[0].divisions, st[1].divisions, msg);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(st[1].drawn, st[1].generic, msg);   /* the twin is generic */
+        total += st[0].divisions;
         compared++;
         specialised += !st[0].generic;
     }
@@ -3361,6 +3373,11 @@ void test_divisions_match_between_walks(void)
     TEST_MESSAGE(msg);
     /* most triangles reach the clip rectangle */
     TEST_ASSERT_TRUE_MESSAGE(drawable > 0 && compared > drawable / 2, msg);
+    /* Where every draw is made (every feature, the 1/16 px grid) the
+     * counts' sum is the speed build's: a size build compares the generic
+     * walk with itself, and this holds its AUTO draws to that build. */
+    if (drawable == NT && FXL_TEST_DEFAULT_GRID)
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(FXL_TEST_DIVISIONS_TOTAL, total, msg);
 }
 
 /* ---- errors ------------------------------------------------------------------ */

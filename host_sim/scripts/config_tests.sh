@@ -21,10 +21,7 @@
 # which are the 1/16 px grid's, report IGNORE there; test_features.h).
 # Two keep every feature with a size build's division (small-div, and
 # small-div-hw with FXL_SMALL_DIV64_HW): the same images from other
-# arithmetic. size-walks draws with the size builds' walks
-# (FXL__FAST_SPANS 0: every draw by the generic walk in its -Os forms),
-# which no other host build runs: the same images and counts. tint adds
-# the opt-in tinted walks (FXL_FAST_TINT).
+# arithmetic. tint adds the opt-in tinted walks (FXL_FAST_TINT).
 #
 # Usage: config_tests.sh [name...]   (default: all). Environment: JOBS
 # (default 2), FXL_CONFIG_TESTS_DIR (default build-config-tests).
@@ -68,10 +65,6 @@ config_defines() {
     small-div-hw) # the same with FXL_SMALL_DIV64_HW: 32-bit divisors by
         # fxl__udiv64_by32, gradients with one division
         echo FXL_SMALL_DIV64=1 FXL__DIV32_HW=1 FXL_SMALL_DIV64_HW=1 ;;
-    size-walks) # every feature, the size builds' walks (-Os: the generic
-        # walk for every draw, its -Os forms, one pixel loop for both
-        # target formats) in a host -O2 build: the same pixels and counts
-        echo FXL__FAST_SPANS=0 ;;
     tint) # every feature, with the tinted copies of the specialised walks
         # (flat MODULATE draws drawn by them, against the generic loop)
         echo FXL_FAST_TINT=1 ;;
@@ -80,7 +73,7 @@ config_defines() {
 }
 
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14 sub1 sub6 small-div small-div-hw size-walks tint)
+[ ${#names[@]} -gt 0 ] || names=(min min-depth min-native min-panel no-bilinear no-mipmap no-depth subset tex14 sub1 sub6 small-div small-div-hw tint)
 status=0
 mkdir -p "$out"
 for name in "${names[@]}"; do

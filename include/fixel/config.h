@@ -88,8 +88,8 @@
 /* Specialised code per kind of draw (RGB565 repeat-wrapped textures, REPLACE,
  * and flat MODULATE with FXL_FAST_TINT; the rest always takes the generic walk). Each combination of target format,
  * depth and filter has its own pixel loop, and in speed-optimised builds its
- * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 266 KB for all
- * (docs/bench/footprint.txt: 272,406 B linked; 109,808 B with
+ * own span walks: ~5-13 KB of Cortex-M4 code at -O2 each, 267 KB for all
+ * (docs/bench/footprint.txt: 273,736 B linked; 109,952 B with
  * FXL_FAST_NATIVE 0 and FXL_FAST_NO_DEPTH 0); at -Os a pixel loop of
  * ~0.2 KB a filter and depth, shared by both formats (bilinear: one loop
  * with depth and without). A product that drives one panel format, or

@@ -174,9 +174,11 @@ typedef struct fxl_stats {
                                    * a one-pixel segment that ends the span, or
                                    * its clipped part, is one point: exact mode
                                    * counts one a pixel). The same count in every
-                                   * build and walk (the batch walk of mipmapped
+                                   * build and walk; it counts points, not the
+                                   * divisions made: the batch walk of mipmapped
                                    * draws in speed builds divides at a one-pixel
-                                   * end twice, and counts it once) */
+                                   * end twice and past a clipped one once more,
+                                   * and counts one point for each) */
     uint32_t generic;             /* of drawn: by the generic span walk, the kinds of draw
                                    * with no specialised code (other texel formats and
                                    * wraps, key, modulate, Gouraud; those config.h's
