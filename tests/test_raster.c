@@ -3299,8 +3299,8 @@ void test_divisions_count_each_correction_point_once(void)
  * edge, where the generic walk divided once more than exact mode's runs
  * until it took such a one-pixel segment as a last one, and the batch walk
  * counted its one-pixel ends twice. Without specialised walks (-Os) both
- * draws are generic and the test holds trivially. */
-/* the sum of the draws' counts below in a speed build of every feature */
+ * draws are generic; there the sum of the counts, held to the speed
+ * build's (FXL_TEST_DIVISIONS_TOTAL), is what checks them. */
 #define FXL_TEST_DIVISIONS_TOTAL 180670u
 void test_divisions_match_between_walks(void)
 {
